@@ -49,8 +49,15 @@ void fill_minimisers(inscribed_result<T>& r, const resonant_constants<T>& c, con
   T rmin = best->radius_sq;
   T tie = rmin * (1 + ldexp(T(1), -int(3 * real_bits<T>() / 4)));
   std::vector<std::pair<T, const critical_point<T, L>*>> mins;
-  for (const auto& p : pts)
-    if (p.radius_sq <= tie) mins.push_back({lobe_theta(c, p.frame, a, p.u), &p});
+  bool have_next = false;
+  for (const auto& p : pts) {
+    if (p.radius_sq <= tie) {
+      mins.push_back({lobe_theta(c, p.frame, a, p.u), &p});
+    } else if (!have_next || p.radius_sq < r.next_radius_sq) {
+      r.next_radius_sq = p.radius_sq;
+      have_next = true;
+    }
+  }
   std::sort(mins.begin(), mins.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
   r.r_res = sqrt(rmin);
   r.h_min = rmin / 2;
@@ -74,7 +81,6 @@ inscribed_result<T> inscribed_global(const resonant_pair<I>& p, const T& v, cons
   const L tau = L(std::int64_t(p.tau())), a = L(std::int64_t(p.order())), b = L(std::int64_t(p.delta()));
   const L den = 2 * tau;
   auto c = resonant_constants_of<T>(p, v);
-  auto tol = default_root_tolerance<T>(T(1));
 
   std::vector<detail::critical_point<T, L>> pts;
   pts.reserve(std::size_t(4 * tau));
@@ -92,10 +98,11 @@ inscribed_result<T> inscribed_global(const resonant_pair<I>& p, const T& v, cons
         T w = fr.mu - c.x * u;
         return kind == 0 ? T(cos(u) * sin(w) - c.x * sin(u) * cos(w)) : T(c.x * sin(u) * sin(w) + cos(u) * cos(w));
       };
-      auto root = root_bracketed(f, ulo, uhi, f(ulo), f(uhi), tol,
+      auto root = root_bracketed(f, ulo, uhi, f(ulo), f(uhi), default_root_tolerance<T>(lobe_root_floor(fr)),
                                  kind == 0 ? "global search (q' = 0)" : "global search (z' = 0)");
       evals += root.evaluations + 2;
-      T rsq = lobe_eval(c, fr, root.root).radius_sq();
+      auto val = lobe_eval(c, fr, root.root);
+      T rsq = kind == 0 ? T(val.q * val.q) : val.radius_sq();  // |q| alone at q' roots (resonant.hpp)
       pts.push_back({frame, root.root, rsq});
     }
   }

@@ -12,3 +12,6 @@
 #include "degenerate.hpp"     // delta = 2 mod 4: r_res = 0 by integer arithmetic
 #include "global_search.hpp"  // reference method: all critical points
 #include "lattice.hpp"        // O(log tau) method for any pair
+#include "cross_check.hpp"      // lattice vs global search
+#include "decimal.hpp"          // exact decimal output, Ziv rounding test
+#include "pair_analysis.hpp"    // everything reported about one pair

@@ -76,8 +76,10 @@ scout_root<S> lattice_solve(const resonant_constants<S>& c, const lobe_frame<L>&
     S w = fr.mu - c.x * u;
     return S(cos(u) * sin(w) - c.x * sin(u) * cos(w));
   };
-  auto root = root_bracketed(fn, ulo, uhi, fn(ulo), fn(uhi), default_root_tolerance<S>(S(1)), "lattice (q' = 0)");
-  return {root.root, lobe_eval(c, fr, root.root).radius_sq(), root.evaluations + 2};
+  auto root = root_bracketed(fn, ulo, uhi, fn(ulo), fn(uhi), default_root_tolerance<S>(lobe_root_floor(fr)),
+                             "lattice (q' = 0)");
+  S q = lobe_eval(c, fr, root.root).q;  // |q| alone at a q' root (resonant.hpp)
+  return {root.root, q * q, root.evaluations + 2};
 }
 
 template <class L> struct lattice_candidate_site {
@@ -133,8 +135,8 @@ polished<T> lattice_polish(const resonant_pair<I>& p, const T& v, const lobe_fra
   auto newton_step = [&](const resonant_constants<T>& c, const T& mu, T& rsq) {
     auto e = lobe_qdot_newton(c, mu, u);
     ++evals;
-    T q = c.v * c.s1mx2 * e.su * e.sw, qd = c.v * e.f;
-    rsq = q * q + qd * qd;
+    T q = c.v * c.s1mx2 * e.su * e.sw;  // |q| alone at a q' root (resonant.hpp)
+    rsq = q * q;
     T step = e.f / e.df;
     u -= step;
     return step;
@@ -154,12 +156,13 @@ polished<T> lattice_polish(const resonant_pair<I>& p, const T& v, const lobe_fra
     set_working_precision(u);
   }
   auto c = resonant_constants_of<T>(p, v);
-  const T mu = lobe_frame_real_of(c, f, a).mu;
+  const auto fr = lobe_frame_real_of(c, f, a);
+  const T mu = fr.mu, floor = lobe_root_floor(fr);
   const T half_eps = ldexp(T(1), -int(real_bits<T>() / 2) + 4);
   for (int it = 0; it < 8; ++it) {
     T rsq;
     T step = newton_step(c, mu, rsq);
-    T scale = fabs(u) > 1 ? fabs(u) : T(1);
+    T scale = fabs(u) > floor ? fabs(u) : floor;
     if (fabs(step) <= half_eps * scale) return {u, rsq, evals};
   }
   throw compute_error("lattice: Newton polish of q' = 0 did not converge in " + real_type_name<T>());

@@ -90,6 +90,21 @@ template <class T> lobe_values<T> lobe_eval(const resonant_constants<T>& c, cons
   return {amp * su * sw, sv * (cu * sw - c.x * su * cw), amp * su * cw, sv * (c.x * su * sw + cu * cw)};
 }
 
+// Scale below which a root u of q' or z' in this frame is located absolutely, not relatively:
+// |mu|/1024, at most 1/1024. The q' roots that matter sit at |u| ~ |mu|/x or larger (e.g.
+// |u| ~ 1e-9 for (10^9, 1)), so they keep full relative accuracy; mu = 0 only for degenerate
+// pairs, which never reach a root solver.
+template <class T> T lobe_root_floor(const lobe_frame_real<T>& f) {
+  using std::fabs;
+  T m = fabs(f.mu);
+  if (m > 1) m = 1;
+  return m / 1024;
+}
+
+// At a root of q' (q' = dq/dt = 0), q is stationary in u, so R = q^2 there is insensitive to
+// the error of the root, whereas q'^2 is not: for (10^9, 1) a root error of one ulp makes
+// q'^2 exceed q^2. The radius at a q' root is therefore taken as |q| alone.
+
 // q'(u)/(s v) and its u-derivative, sharing the four trig values (for Newton polishing).
 template <class T> struct qdot_with_derivative {
   T f, df;

@@ -39,6 +39,9 @@ template <class T> struct inscribed_result {
   lobe_point<T> first;             // the first minimiser in local coordinates (not for degenerate pairs)
   std::size_t critical_points = 0;  // critical points of R examined
   std::uintmax_t evaluations = 0;   // evaluations of q' or z' by the root solvers
+  // Global search only: the smallest R = q^2 + q'^2 among critical points that are not global
+  // minimisers (the gap to the minimum shows how clearly the minimum is separated); 0 otherwise.
+  T next_radius_sq = 0;
 };
 
 }  // namespace gyrores

@@ -31,7 +31,8 @@ template <class T> struct root_tolerance {
   }
 };
 
-// Default tolerance for T at its current precision: 4 ulp relative, floor `scale`.
+// Default tolerance for T at its current precision: 4 ulp relative, floored at `scale`
+// (roots of size below `scale` are located to 4 ulp of `scale`, absolutely).
 template <class T> root_tolerance<T> default_root_tolerance(const T& scale) {
   return {4 * real_epsilon<T>(), scale};
 }
