@@ -1,0 +1,170 @@
+// The CLI as a user meets it: exit statuses, one-line errors with nothing on stdout, the JSON
+// schema, and digits (checked against values computed here with the library at higher
+// precision, and against the paper's (6,5) r_min = 5.075e-2).
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+#include <gyrores/gyrores.hpp>
+
+#ifndef GYRORES_CLI_PATH
+#define GYRORES_CLI_PATH ""
+#endif
+
+namespace {
+
+struct run_result {
+  int status;
+  std::string out, err;
+};
+
+run_result run(const std::string& args) {
+  std::string errfile = "/tmp/gyrores_test_cli_stderr_" + std::to_string(::getpid());
+  std::string cmd = std::string(GYRORES_CLI_PATH) + " " + args + " 2>" + errfile;
+  FILE* p = ::popen(cmd.c_str(), "r");
+  REQUIRE(p != nullptr);
+  std::string out;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int st = ::pclose(p);
+  std::string err;
+  if (FILE* f = std::fopen(errfile.c_str(), "r")) {
+    while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) err.append(buf.data(), n);
+    std::fclose(f);
+  }
+  std::remove(errfile.c_str());
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out, err};
+}
+
+int count_lines(const std::string& s) {
+  int c = 0;
+  for (char ch : s) c += ch == '\n';
+  return c;
+}
+
+// Significant digits in "d.ddd...e+XX".
+int mantissa_digits(const std::string& s) {
+  int c = 0;
+  for (char ch : s) {
+    if (ch == 'e') break;
+    if (ch >= '0' && ch <= '9') ++c;
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("pair --json has the documented schema", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  auto r = run("pair 6 5 --json --digits 30");
+  REQUIRE(r.status == 0);
+  REQUIRE(r.err.empty());
+  auto j = nlohmann::json::parse(r.out);
+  for (const char* k : {"tau", "sigma", "delta", "delta_mod4", "v2_delta", "degenerate", "order", "beat_ratio", "n",
+                        "omega1", "omega2", "rho0", "qdot0", "r_res", "h_min", "h_z_max", "theta_first", "t_first",
+                        "minimisers", "t_min_paper", "method", "digits"})
+    CHECK(j.contains(k));
+  CHECK(j["tau"].is_number_integer());
+  CHECK(j["tau"] == 6);
+  CHECK(j["sigma"] == 5);
+  CHECK(j["delta"] == 1);
+  CHECK(j["delta_mod4"] == 1);
+  CHECK(j["v2_delta"] == 0);
+  CHECK(j["order"] == 11);
+  CHECK(j["degenerate"] == false);
+  CHECK(j["digits"] == 30);
+  CHECK(j["method"] == "lattice");
+  for (const char* k : {"n", "r_res", "theta_first", "t_first", "t_min_paper", "h_min"}) {
+    REQUIRE(j[k].is_string());
+    CHECK(mantissa_digits(j[k].get<std::string>()) == 30);
+  }
+  REQUIRE(j["minimisers"].size() == 2);
+  // The paper prints r_min = 5.075e-2 for (6,5) (Section V, case B): right to 4 digits.
+  CHECK(j["r_res"].get<std::string>().substr(0, 6) == "5.0745");
+}
+
+TEST_CASE("pair digits are all correct (against the library at 60 digits)", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  using namespace gyrores;
+  for (auto [tau, sigma, digits] : {std::tuple{6, 5, 30}, {9, 4, 17}, {5, 1, 11}, {1000, 1, 40}, {101, 100, 25}}) {
+    auto r = run("pair " + std::to_string(tau) + " " + std::to_string(sigma) + " --json --digits " +
+                 std::to_string(digits));
+    INFO("pair " << tau << " " << sigma << " digits " << digits);
+    REQUIRE(r.status == 0);
+    auto j = nlohmann::json::parse(r.out);
+    scoped_digits d(digits + 30);
+    auto ref = inscribed_global<mpfr_real>(resonant_pair<std::int64_t>(tau, sigma), mpfr_real(1));
+    CHECK(j["r_res"] == format_scientific(ref.r_res, unsigned(digits)));
+    CHECK(j["theta_first"] == format_scientific(ref.theta_first, unsigned(digits)));
+    CHECK(j["t_first"] == format_scientific(ref.t_first, unsigned(digits)));
+    REQUIRE(j["minimisers"].size() == ref.minimisers.size());
+    for (std::size_t i = 0; i < ref.minimisers.size(); ++i)
+      CHECK(j["minimisers"][i] == format_scientific(ref.minimisers[i], unsigned(digits)));
+  }
+}
+
+TEST_CASE("huge pairs print exact integers and a lattice result", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  auto r = run("pair 1000000000000000000000000000001 1000000000000000000000000000000 --json --digits 40");
+  REQUIRE(r.status == 0);
+  // Integers beyond 64 bits stay JSON numbers.
+  CHECK(r.out.find("\"tau\": 1000000000000000000000000000001,") != std::string::npos);
+  CHECK(r.out.find("\"order\": 2000000000000000000000000000001,") != std::string::npos);
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j["method"] == "lattice");
+  CHECK(mantissa_digits(j["r_res"].get<std::string>()) == 40);
+}
+
+TEST_CASE("degenerate pairs: r_res is exactly zero, first zero at pi/2", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  auto r = run("pair 11 9 --json");
+  REQUIRE(r.status == 0);
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j["degenerate"] == true);
+  CHECK(j["method"] == "degenerate-exact");
+  CHECK(j["r_res"] == "0.0000000000000000e+00");
+  CHECK(j["theta_first"] == "1.5707963267948966e+00");
+  // t_first = sqrt(99) pi/2 = (delta/2) pi/n.
+  CHECK(j["t_first"] == "1.5629226114141468e+01");
+}
+
+TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  struct row {
+    const char* args;
+    int status;
+    const char* needle;
+  };
+  for (auto [args, status, needle] : {
+           row{"pair 6 4", 2, "reduced pair (3, 2)"},
+           row{"pair 5 6", 2, "tau must exceed sigma"},
+           row{"pair 5 5", 2, "tau must exceed sigma"},
+           row{"pair 6 0", 2, "sigma must be >= 1"},
+           row{"pair 6 -1", 2, ""},
+           row{"pair 6.5 5", 2, "integer"},
+           row{"pair x 5", 2, "integer"},
+           row{"pair 6", 2, "SIGMA"},
+           row{"pair 6 5 --digits 0", 2, "--digits"},
+           row{"pair 6 5 --digits 10001", 2, "--digits"},
+           row{"pair 6 5 --digits abc", 2, ""},
+           row{"pair 6 5 --qdot0 0", 2, "--qdot0"},
+           row{"pair 6 5 --qdot0 -2", 2, "--qdot0"},
+           row{"pair 6 5 --qdot0 abc", 2, "--qdot0"},
+           row{"pair 6 5 --bogus", 2, "--bogus"},
+           row{"pair 6 5 --method magic", 2, "--method"},
+           row{"frobnicate", 2, ""},
+           row{"pair 200001 2 --method global", 3, "global search is limited"},
+       }) {
+    INFO(args);
+    auto r = run(args);
+    CHECK(r.status == status);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find(needle) != std::string::npos);
+  }
+}
