@@ -133,9 +133,7 @@ std::string run_pair(const pair_args& args) {
   return os.str();
 }
 
-}  // namespace
-
-command_runner register_pair(CLI::App& app) {
+command_runner install_pair(CLI::App& app) {
   auto args = std::make_shared<pair_args>();
   auto* sub = app.add_subcommand("pair", "Inscribed radius, minimisers and first-hit time of a resonant pair");
   sub->add_option("TAU", args->tau, "tau (integer > sigma; any size)")->required();
@@ -146,5 +144,9 @@ command_runner register_pair(CLI::App& app) {
   sub->add_flag("--json", args->json, "one JSON object on stdout");
   return [args] { return run_pair(*args); };
 }
+
+const command_registration registration{"pair", install_pair};
+
+}  // namespace
 
 }  // namespace gyrores::cli

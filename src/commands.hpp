@@ -1,14 +1,32 @@
-// Subcommands of the gyrores CLI. Each registers its options on the app and returns the
-// function that runs it; a run returns the text for stdout (printed only on success).
+// Subcommands of the gyrores CLI. Each src/cmd_<name>.cpp registers itself through a static
+// command_registration object: it adds its options to the app and returns the function that
+// runs it. A run returns the text for stdout, printed only on success (so a failing command
+// writes nothing to stdout).
 #pragma once
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace gyrores::cli {
 
 using command_runner = std::function<std::string()>;
+using command_installer = std::function<command_runner(CLI::App&)>;
 
-command_runner register_pair(CLI::App& app);
+struct command_entry {
+  std::string name;  // must equal the subcommand name the installer creates
+  command_installer install;
+};
+
+inline std::vector<command_entry>& command_registry() {
+  static std::vector<command_entry> r;
+  return r;
+}
+
+struct command_registration {
+  command_registration(std::string name, command_installer install) {
+    command_registry().push_back({std::move(name), std::move(install)});
+  }
+};
 
 }  // namespace gyrores::cli

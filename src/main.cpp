@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   CLI::App app{"gyrores: certified analysis of energy exchange in gyroscopically coupled oscillators"};
   app.require_subcommand(1);
   std::map<std::string, command_runner> runners;
-  runners["pair"] = register_pair(app);
+  for (auto& entry : command_registry()) runners[entry.name] = entry.install(app);
 
   try {
     app.parse(argc, argv);
