@@ -31,7 +31,11 @@
 //    error = 2 |e| x^2/a and ratio = error/bound = 2 |e|/pi^3 keep full relative accuracy for
 //    pairs of any size (error and bound may underflow to 0 in double for a > ~1e100; the ratio
 //    does not). As x -> 0, e -> tan^3 u/(3 (1 + sec^2 u)), so |theta_c - theta_asy| ~ C(s) x^2/a
-//    with C(s) = 2 |tan u|^3/(3 (1 + sec^2 u)) <= 0.05 for |s| <= pi/2 (MATH.md §3, "C(s)").
+//    with C(s) = 2 |tan u|^3/(3 (1 + sec^2 u)) (MATH.md §3, "C(s)"). Since |m| <= b, |s| <= pi/2
+//    and C(s) <= C(pi/2) = 0.1549, i.e. ratio -> at most 0.0049967 (reached as b = 1, a -> oo).
+//    Observed (all coprime pairs with x < 1/2 and a <= 200 in tests/test_asymptotic.cpp, and a
+//    one-off sweep to a <= 1500): the ratio never exceeds that limit (max 0.0049967, at
+//    (100, 99) and (750, 749) respectively), so P7 holds, with a margin of ~200.
 //    u_c from psi and u_asy + d are compared (compute_error if they disagree).
 //
 // Applicability: the lobe equation has exactly one root in |u| < pi/2 when x < 1/2 (2b < a).
@@ -72,7 +76,7 @@ template <class T> struct asymptotic_lobe {
                          // = (-1)^k v cos u cos w (tan w - w), w = x (s - u_asy): no cancellation
   T u_c;                 // exact lobe root: x tan u = tan(mu - x u), |u| < pi/2
   T theta_c;             // 2 (k pi + u_c)/a, the root of q' = 0 in this lobe
-  T r_c;                 // sqrt(q^2 + q'^2) at theta_c (the lobe's candidate for r_res)
+  T r_c;                 // sqrt(q^2 + q'^2) = |q| at theta_c (the lobe's candidate for r_res)
   T error;               // |theta_c - theta_asy| = 2 |u_c - u_asy|/a, formed without cancellation
   T bound;               // pi^3 x^2/a (paper eq. errorBound)
   T ratio;               // error/bound = 2 |u_c - u_asy|/(pi^3 x^2); P7 claims ratio <= 1
@@ -132,14 +136,24 @@ template <class T> T tan_minus_id_over_cube(const T& w) {
   return sum / cos(w);
 }
 
-// Root of psi(u) = u - atan(tan(mu - x u)/x) on [-pi/2, pi/2] (the lobe equation).
-template <class T> T asy_lobe_root(const T& x, const T& mu, const T& pi) {
+// Tolerance for roots u of size >= ~|s|/4: relative 4 ulp, floored at min(1, |s|/8), so that a
+// tiny root (|s| ~ pi/(2b) tiny when b is huge) is still found to full relative accuracy.
+template <class T> root_tolerance<T> asy_u_tolerance(const T& s) {
+  using std::fabs;
+  T fl = fabs(s) / 8;
+  if (fl > 1) fl = 1;
+  return {4 * real_epsilon<T>(), fl};
+}
+
+// Root of psi(u) = u - atan(tan(mu - x u)/x) on [-pi/2, pi/2] (the lobe equation); s = mu/x
+// only sets the tolerance floor (the root is ~ s/2 when s is small).
+template <class T> T asy_lobe_root(const T& x, const T& mu, const T& s, const T& pi) {
   using std::atan;
   using std::tan;
   if (mu == 0) return T(0);  // exact: psi is odd when mu = 0
   auto psi = [&](const T& u) { return T(u - atan(tan(mu - x * u) / x)); };
   T h = pi / 2, lo = -h;
-  return root_bracketed(psi, lo, h, psi(lo), psi(h), default_root_tolerance<T>(T(1)),
+  return root_bracketed(psi, lo, h, psi(lo), psi(h), asy_u_tolerance(s),
                         "asymptotic: lobe root of x tan u = tan(mu - x u)", asy_budget<T>())
       .root;
 }
@@ -236,14 +250,15 @@ bool asy_holds_global_min(const inscribed_result<T>& lr, const big_int& A, const
 
 // The root u of u + tan u = s in (-pi/2, pi/2), for any real s, in T.
 // Solved as u - atan(s - u) = 0 on [-pi/2, pi/2] with root_bracketed (TOMS 748; the sign change
-// holds for every s, and the derivative lies in (1, 2]). Accuracy: |u - u_exact| <= ~4 ulp(1).
+// holds for every s, and the derivative lies in (1, 2]). Accuracy: a few ulp relative to
+// max(|u|, min(1, |s|/8)), i.e. full relative accuracy also for tiny s.
 // Throws compute_error if the solver fails (it never returns an unverified number).
 template <class T> T u_plus_tan_u_root(const T& s) {
   using std::atan;
   if (s == 0) return T(0);  // exact: the root is odd in s
   auto phi = [&](const T& u) { return T(u - atan(s - u)); };
   T h = real_pi<T>() / 2, lo = -h;
-  return root_bracketed(phi, lo, h, phi(lo), phi(h), default_root_tolerance<T>(T(1)), "asymptotic: u + tan u = s",
+  return root_bracketed(phi, lo, h, phi(lo), phi(h), detail::asy_u_tolerance(s), "asymptotic: u + tan u = s",
                         detail::asy_budget<T>())
       .root;
 }
@@ -309,7 +324,6 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
   using std::fabs;
   using std::ldexp;
   using std::sin;
-  using std::sqrt;
   using std::tan;
   using L = wide_int<I>;
   detail::check_amplitude(v);
@@ -363,9 +377,11 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
       const T w = x * (lo.s - lo.u_asy);
       lo.qdot_asy = T(frr.sign) * v * cos(lo.u_asy) * cos(w) * w * w * w * detail::tan_minus_id_over_cube(w);
     }
-    lo.u_c = detail::asy_lobe_root(x, lo.mu, pi);
+    lo.u_c = detail::asy_lobe_root(x, lo.mu, lo.s, pi);
     lo.theta_c = detail::asy_theta(k, a, lo.u_c, pi);
-    lo.r_c = sqrt(lobe_eval(c, frr, lo.u_c).radius_sq());
+    // R = q^2 at the root of q'; |q| keeps full relative accuracy where q' (which vanishes only up
+    // to the root's rounding) would not (tiny s: q ~ x u^2 while the q' residual is ~ eps x u).
+    lo.r_c = fabs(lobe_eval(c, frr, lo.u_c).q);
     const T e = detail::asy_error_scaled(x, lo.s, lo.u_asy, pi);
     const T x2 = x * x;
     // Cross-check: the two routes to u_c (psi root; u_asy + e x^2) must agree to rounding.
