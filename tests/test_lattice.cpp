@@ -1,0 +1,170 @@
+// The lattice method (lattice.hpp) against the global search (global_search.hpp), which assumes
+// nothing about where the minimum sits, and the structure the lattice method relies on
+// (MATH.md §3, *observed*): checked here on every coprime pair up to order 300 in double, up to
+// order 60 at 30 digits, and on random pairs up to order 3000 (fixed, printed seed; count scaled
+// by GYRORES_TEST_MULTIPLIER).
+#include <catch2/catch.hpp>
+
+#include <iostream>
+#include <numeric>
+#include <sstream>
+#include <random>
+
+#include "gyrores/cross_check.hpp"
+#include "gyrores/enumerate.hpp"
+#include "gyrores/global_search.hpp"
+#include "gyrores/lattice.hpp"
+#include "test_support.hpp"
+
+using gyrores::mpfr_real;
+using gyrores::resonant_pair;
+using gyrores::scoped_digits;
+using pair64 = resonant_pair<std::int64_t>;
+
+namespace {
+
+// Lattice vs global search on one pair: same number of minimisers, r_res and every minimiser
+// within a relative `tol`. Returns false (after recording the failure) on a mismatch, so that a
+// sweep stops at the first failing pair with its values printed. `global_count` receives the
+// number of minimisers found by the global search.
+template <class T> bool agree(const pair64& p, const T& tol, std::size_t* global_count = nullptr) {
+  auto lat = gyrores::inscribed_lattice<T>(p, T(1));
+  auto glo = gyrores::inscribed_global<T>(p, T(1));
+  if (global_count) *global_count = glo.minimisers.size();
+  bool ok = lat.minimisers.size() == glo.minimisers.size() && lat.degenerate == glo.degenerate &&
+            gyrores::test::rel_error(lat.r_res, glo.r_res) <= tol;
+  for (std::size_t k = 0; ok && k < lat.minimisers.size(); ++k)
+    ok = gyrores::test::rel_error(lat.minimisers[k], glo.minimisers[k]) <= tol;
+  ok = ok && gyrores::test::rel_error(lat.theta_first, glo.theta_first) <= tol &&
+       gyrores::test::rel_error(lat.t_first, glo.t_first) <= tol;
+  if (!ok) {
+    std::ostringstream os;
+    os.precision(std::numeric_limits<double>::max_digits10 + 15);
+    os << "pair " << p.str() << " in " << gyrores::real_type_name<T>() << ": lattice r_res " << lat.r_res << " ("
+       << lat.minimisers.size() << " minimisers), global r_res " << glo.r_res << " (" << glo.minimisers.size()
+       << " minimisers)";
+    for (std::size_t k = 0; k < std::max(lat.minimisers.size(), glo.minimisers.size()); ++k) {
+      os << "\n  minimiser " << k << ": lattice ";
+      if (k < lat.minimisers.size()) os << lat.minimisers[k]; else os << "-";
+      os << ", global ";
+      if (k < glo.minimisers.size()) os << glo.minimisers[k]; else os << "-";
+    }
+    FAIL_CHECK(os.str());
+  }
+  return ok;
+}
+
+}  // namespace
+
+// One sweep checks both the agreement and the observed structure claim (MATH.md §3): the
+// global search, which assumes nothing, finds exactly 2 minimisers for delta odd and 4 for
+// delta = 0 mod 4 (degenerate pairs: the 2 zeros pi/2, 3 pi/2).
+TEST_CASE("lattice = global search on every coprime pair up to order 300 (double, relative 1e-12); "
+          "minimiser count 2 for delta odd, 4 for delta = 0 mod 4",
+          "[lattice]") {
+  std::size_t pairs = 0, failures = 0, count_failures = 0, odd = 0, four = 0;
+  for (pair64 p : gyrores::coprime_pairs(3, 300)) {
+    ++pairs;
+    std::size_t n = 0;
+    if (!agree<double>(p, 1e-12, &n) && ++failures >= 10) break;
+    const std::size_t expect = p.degenerate() ? 2 : (p.delta_mod4() % 2 == 1 ? 2 : 4);
+    if (!p.degenerate()) (expect == 2 ? odd : four) += 1;
+    if (n != expect) {
+      FAIL_CHECK("pair " << p.str() << " (delta mod 4 = " << p.delta_mod4() << "): " << n
+                         << " global minimisers, expected " << expect);
+      if (++count_failures >= 10) break;
+    }
+  }
+  INFO(pairs << " pairs; " << odd << " with delta odd, " << four << " with delta = 0 mod 4");
+  CHECK(failures == 0);
+  CHECK(count_failures == 0);
+  CHECK(pairs > 13000);  // sum over a <= 300 of phi(a)/2
+  CHECK(odd > 0);
+  CHECK(four > 0);
+}
+
+TEST_CASE("lattice = global search on every coprime pair up to order 60 at 30 digits (relative 1e-28)", "[lattice]") {
+  scoped_digits d(30);
+  std::size_t pairs = 0, failures = 0;
+  const mpfr_real tol("1e-28");
+  for (pair64 p : gyrores::coprime_pairs(3, 60)) {
+    ++pairs;
+    if (!agree<mpfr_real>(p, tol) && ++failures >= 10) break;
+  }
+  INFO(pairs << " pairs");
+  CHECK(failures == 0);
+}
+
+TEST_CASE("lattice = global search on random pairs up to order 3000 (double, fixed seed)", "[lattice][random]") {
+  const std::uint64_t seed = 20240611;
+  const int count = 300 * gyrores::test::multiplier();
+  std::cout << "test_lattice random pairs: seed " << seed << ", " << count << " pairs\n";
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::int64_t> order(3, 3000);
+  std::uniform_int_distribution<int> edge(0, 19);
+  int done = 0, failures = 0, tries = 0;
+  while (done < count && tries < 100 * count) {
+    ++tries;
+    std::int64_t a = order(rng), s;
+    switch (edge(rng)) {  // inject edge cases with probability 1/20 each
+      case 0: s = (a - 1) / 2; break;  // delta = 1 or 2 (ties, degenerate)
+      case 1: s = 1; break;            // far apart, x -> 1
+      default: s = std::uniform_int_distribution<std::int64_t>(1, (a - 1) / 2)(rng);
+    }
+    if (s < 1 || 2 * s >= a || std::gcd(a, s) != 1) continue;
+    pair64 p(a - s, s);
+    INFO("seed " << seed << ", draw " << tries);
+    if (!agree<double>(p, 1e-12) && ++failures >= 10) break;
+    ++done;
+  }
+  CHECK(failures == 0);
+  CHECK(done == count);
+}
+
+TEST_CASE("lattice_options{window_always = true} agrees with the default path up to order 200", "[lattice]") {
+  gyrores::lattice_options win;
+  win.window_always = true;
+  std::size_t failures = 0;
+  for (pair64 p : gyrores::coprime_pairs(3, 200)) {
+    auto d = gyrores::inscribed_lattice<double>(p, 1.0);
+    auto w = gyrores::inscribed_lattice<double>(p, 1.0, win);
+    bool ok = d.minimisers.size() == w.minimisers.size() && gyrores::test::rel_error(d.r_res, w.r_res) <= 1e-13;
+    for (std::size_t k = 0; ok && k < d.minimisers.size(); ++k)
+      ok = gyrores::test::rel_error(d.minimisers[k], w.minimisers[k]) <= 1e-13;
+    if (!ok) {
+      FAIL_CHECK("pair " << p.str() << ": default r_res " << d.r_res << ", window r_res " << w.r_res);
+      if (++failures >= 10) break;
+    }
+  }
+  CHECK(failures == 0);
+}
+
+TEST_CASE("cross_check_lattice accepts a true result and rejects tampered ones", "[lattice][cross_check]") {
+  for (pair64 p : {pair64(6, 5), pair64(9, 4), pair64(5, 1), pair64(1000, 1), pair64(101, 37)}) {
+    INFO("pair " << p.str());
+    auto lat = gyrores::inscribed_lattice<double>(p, 1.0);
+    CHECK_NOTHROW(gyrores::cross_check_lattice(p, 1.0, lat));
+
+    auto bad_r = lat;
+    bad_r.r_res *= 1 + 1e-6;
+    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, 1.0, bad_r), gyrores::compute_error);
+
+    auto bad_theta = lat;
+    bad_theta.minimisers.front() *= 1 + 1e-6;
+    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, 1.0, bad_theta), gyrores::compute_error);
+
+    auto bad_count = lat;
+    bad_count.minimisers.pop_back();
+    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, 1.0, bad_count), gyrores::compute_error);
+  }
+  {
+    // The same in mpfr_real, whose r_res carries digits the double check cannot see: a relative
+    // 1e-6 error is still rejected.
+    scoped_digits d(40);
+    pair64 p(9, 4);
+    auto lat = gyrores::inscribed_lattice<mpfr_real>(p, mpfr_real(2));
+    CHECK_NOTHROW(gyrores::cross_check_lattice(p, mpfr_real(2), lat));
+    lat.r_res *= 1 + mpfr_real("1e-6");
+    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, mpfr_real(2), lat), gyrores::compute_error);
+  }
+}
