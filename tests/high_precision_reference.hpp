@@ -252,7 +252,15 @@ inline std::vector<scan_candidate> scan_all(std::int64_t tau, std::int64_t sigma
       double lo = pi * double(nlo) / (2 * t), hi = pi * double(nlo + 2) / (2 * t);
       double flo = f(kind, lo), fhi = f(kind, hi);
       double c = 0.5 * (lo + hi);
-      if ((flo < 0) != (fhi < 0)) {
+      if ((flo < 0) == (fhi < 0) && flo != 0 && fhi != 0) {
+        // Impossible in exact arithmetic (|W2| < W1); in double only if the phase error
+        // reached W1 - W2 = b/sqrt(tau sigma), far beyond the orders scanned here.
+        std::ostringstream os;
+        os << "hp reference scan: no sign change for kind " << kind << " at bracket " << i << " of (" << tau << ", "
+           << sigma << ")";
+        throw std::logic_error(os.str());
+      }
+      {
         // Illinois false position to ~1e-7 of the bracket (R is stationary at the root).
         const double tol = 1e-7 * (hi - lo);
         int side = 0;
