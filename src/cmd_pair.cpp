@@ -39,7 +39,35 @@ real_fields pair_fields(const resonant_pair<I>& p, const pair_args& args, solver
   put("t_first", a.inscribed.t_first);
   for (auto& m : a.inscribed.minimisers) f["minimisers"].push_back(real_to_mpfr(m));
   put("t_min_paper", a.t_min_paper);
+  const auto& asy = a.asymptotic;
+  for (std::size_t i = 0; i < asy.lobes.size(); ++i) {
+    const auto& lo = asy.lobes[i];
+    std::string pre = "asy." + std::to_string(i) + ".";
+    for (auto [name, val] : {std::pair{"s", &lo.s}, {"u_asy", &lo.u_asy}, {"theta_asy", &lo.theta_asy},
+                             {"theta_c", &lo.theta_c}, {"error", &lo.error}, {"bound", &lo.bound}, {"ratio", &lo.ratio}})
+      f[pre + name] = {real_to_mpfr(*val)};
+  }
+  if (asy.applicable) {
+    put("r_res_asy", asy.r_res_asy);
+    put("r_res_asy_rel_error", asy.r_res_asy_rel_error);
+  }
   return f;
+}
+
+// The integer and boolean parts of the asymptotic block (precision independent).
+struct asymptotic_exact {
+  bool applicable = false;
+  std::string reason;
+  std::vector<std::tuple<std::string, std::string, bool>> lobes;  // k, m, holds_global_min
+};
+
+template <pair_integer I> asymptotic_exact asymptotic_exact_of(const resonant_pair<I>& p) {
+  auto rep = paper_asymptotics<double>(p, 1.0);
+  asymptotic_exact e;
+  e.applicable = rep.applicable;
+  e.reason = rep.reason;
+  for (auto& lo : rep.lobes) e.lobes.emplace_back(lo.k.str(), lo.m.str(), lo.holds_global_min);
+  return e;
 }
 
 std::string run_pair(const pair_args& args) {
@@ -104,6 +132,40 @@ std::string run_pair(const pair_args& args) {
     one("t_first");
     j["minimisers"] = run.fields.at("minimisers");
     one("t_min_paper");
+    {
+      asymptotic_exact e = needs_mpfr ? asymptotic_exact{} : small ? asymptotic_exact_of(pair_cast<std::int64_t>(p))
+                                                                   : asymptotic_exact_of(p);
+      if (needs_mpfr) {
+        scoped_digits sd(40);
+        auto rep = paper_asymptotics<mpfr_real>(p, mpfr_real(1));
+        e.applicable = rep.applicable;
+        e.reason = rep.reason;
+        for (auto& lo : rep.lobes) e.lobes.emplace_back(lo.k.str(), lo.m.str(), lo.holds_global_min);
+      }
+      json asy;
+      asy["applicable"] = e.applicable;
+      asy["reason"] = e.reason;
+      json lobes = json::array();
+      for (std::size_t i = 0; i < e.lobes.size(); ++i) {
+        json lo;
+        lo["k"] = json_integer(std::get<0>(e.lobes[i]));
+        lo["m"] = json_integer(std::get<1>(e.lobes[i]));
+        std::string pre = "asy." + std::to_string(i) + ".";
+        for (const char* name : {"s", "u_asy", "theta_asy", "theta_c", "error", "bound", "ratio"})
+          lo[name] = run.fields.at(pre + name).at(0);
+        lo["holds_global_min"] = std::get<2>(e.lobes[i]);
+        lobes.push_back(lo);
+      }
+      asy["lobes"] = lobes;
+      j["asymptotic"] = asy;
+      if (e.applicable) {
+        j["r_res_asy"] = run.fields.at("r_res_asy").at(0);
+        j["r_res_asy_rel_error"] = run.fields.at("r_res_asy_rel_error").at(0);
+      } else {
+        j["r_res_asy"] = nullptr;
+        j["r_res_asy_rel_error"] = nullptr;
+      }
+    }
     j["method"] = method;
     j["cross_checked"] = cross_checked;
     j["digits"] = args.digits;
@@ -127,6 +189,15 @@ std::string run_pair(const pair_args& args) {
   std::string mins;
   for (auto& m : run.fields.at("minimisers")) mins += (mins.empty() ? "" : ", ") + m;
   line("minimisers", mins);
+  if (run.fields.count("r_res_asy"))
+    line("r_res_asy", run.fields.at("r_res_asy")[0] + "  (observed closed form v x |sin u* tan u*|; rel. error " +
+                          run.fields.at("r_res_asy_rel_error")[0] + ")");
+  for (std::size_t i = 0; run.fields.count("asy." + std::to_string(i) + ".theta_asy"); ++i) {
+    std::string pre = "asy." + std::to_string(i) + ".";
+    line(i == 0 ? "paper lobe" : "", "theta_asy " + run.fields.at(pre + "theta_asy")[0] + ", theta_c " +
+                                         run.fields.at(pre + "theta_c")[0] + ", |error| " +
+                                         run.fields.at(pre + "error")[0] + " <= bound " + run.fields.at(pre + "bound")[0]);
+  }
   os << "  method " << method << (cross_checked ? " (cross-checked against the global search)" : "")
      << "; " << args.digits << " digits, each verified; working precision " << run.plan.name() << " ("
      << run.plan.bits << " bits)\n";

@@ -14,4 +14,6 @@
 #include "lattice.hpp"        // O(log tau) method for any pair
 #include "cross_check.hpp"      // lattice vs global search
 #include "decimal.hpp"          // exact decimal output, Ziv rounding test
+#include "asymptotic.hpp"       // the paper's theta_asy, error bound, r_res_asy
 #include "pair_analysis.hpp"    // everything reported about one pair
+#include "certificate.hpp"      // interval certificates and their checker

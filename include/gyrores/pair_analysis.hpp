@@ -3,8 +3,10 @@
 // analyse_pair runs the chosen solver (lattice by default; the global search on request),
 // cross-checks a lattice result against the global search up to a given order, and adds the
 // model quantities (n, W1, W2, rho0) and the paper's first-hit proxy T_min ~ pi/|n| (a
-// heuristic, paper §IV; the exact first-hit time is inscribed.t_first).
+// heuristic, paper §IV; the exact first-hit time is inscribed.t_first), and the paper's
+// asymptotics (asymptotic.hpp).
 #pragma once
+#include "asymptotic.hpp"
 #include "cross_check.hpp"
 #include "global_search.hpp"
 #include "lattice.hpp"
@@ -27,6 +29,7 @@ template <class T> struct pair_analysis {
   T t_min_paper;  // pi/|n|: the paper's proxy for the first-hit time (heuristic)
   inscribed_result<T> inscribed;
   bool cross_checked = false;
+  asymptotic_report<T> asymptotic;  // the paper's theta_asy per lobe, and the observed r_res_asy
 };
 
 template <class T, pair_integer I>
@@ -50,6 +53,7 @@ pair_analysis<T> analyse_pair(const resonant_pair<I>& p, const T& v, const analy
       r.cross_checked = true;
     }
   }
+  r.asymptotic = paper_asymptotics<T>(p, v);
   return r;
 }
 
