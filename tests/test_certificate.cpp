@@ -1,0 +1,192 @@
+// Certificates: enclosures contain independent references (tests/high_precision_reference.hpp,
+// naive formulation in MPFR, no lobe-frame code), widths meet the digits, the checker accepts
+// honest certificates at 20, 100 and 1000 digits and rejects tampered ones.
+#include <catch2/catch.hpp>
+
+#include <gyrores/certificate.hpp>
+#include <gyrores/enumerate.hpp>
+
+#include "high_precision_reference.hpp"
+
+using namespace gyrores;
+
+namespace {
+
+mpfi_real claim_interval(const std::pair<std::string, std::string>& c) {
+  return interval_from_decimal(c.first, c.second);
+}
+
+bool claim_contains(const std::pair<std::string, std::string>& c, const mpfr_real& v) {
+  return certainly_subset(interval_point(v), claim_interval(c));
+}
+
+// Move the last printed digit of "d.ddd...e+XX" by `delta` units (inward shifts of one ulp at
+// the printed precision).
+std::string shift_last_digit(const std::string& s, int delta) {
+  auto e = s.find('e');
+  std::string mant = s.substr(0, e), exp = s.substr(e + 1);
+  bool neg = mant[0] == '-';
+  if (neg) mant.erase(0, 1);
+  auto dot = mant.find('.');
+  std::string digits = mant.substr(0, dot) + (dot == std::string::npos ? "" : mant.substr(dot + 1));
+  big_int v(digits);
+  v += neg ? -delta : delta;
+  std::string nd = v.str();
+  long ex = std::stol(exp) + long(nd.size()) - long(digits.size());
+  std::string out = (neg ? "-" : "") + nd.substr(0, 1) + (nd.size() > 1 ? "." + nd.substr(1) : "");
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "e%c%02ld", ex < 0 ? '-' : '+', ex < 0 ? -ex : ex);
+  return out + buf;
+}
+
+void check_against_reference(const certificate& c, const test::hp::hp_result& ref, const std::string& row) {
+  INFO(row);
+  if (c.degenerate) {
+    CHECK(c.r_res.first == "0");
+    CHECK(c.r_res.second == "0");
+  } else {
+    CHECK(claim_contains(c.r_res, ref.r_res));
+  }
+  if (c.global_minimality) {
+    CHECK(claim_contains(c.theta_first, ref.theta_first));
+    CHECK(claim_contains(c.t_first, ref.t_first));
+    // The local-mode reference (huge pairs) cannot separate minimisers 1/a apart; there the
+    // count is the structure's: 2 for delta odd, 4 for delta = 0 mod 4.
+    if (ref.global) CHECK(c.minimiser_count == ref.minimisers.size());
+    else CHECK(c.minimiser_count == (c.degenerate || (c.tau - c.sigma) % 2 == 1 ? 2u : 4u));
+    scoped_digits sd(40);
+    mpfr_real lim = pow(mpfr_real(10), -int(c.digits));
+    for (auto* cl : {&c.theta_first, &c.t_first})
+      CHECK(interval_rel_width(claim_interval(*cl)) <= lim);
+    if (!c.degenerate) CHECK(interval_rel_width(claim_interval(c.r_res)) <= lim);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("certificates contain the reference for every pair up to order 60", "[certificate]") {
+  std::size_t n = 0;
+  for (auto p : coprime_pairs(3, 60)) {
+    resonant_pair<big_int> pb(p.tau(), p.sigma());
+    auto c = certify_pair(pb, 20);
+    REQUIRE(c.global_minimality);
+    auto ref = test::hp::hp_reference(pb.tau(), pb.sigma(), 40);
+    check_against_reference(c, ref, pb.str());
+    auto v = check_certificate(c);
+    INFO(pb.str() << ": " << v.failure);
+    CHECK(v.holds);
+    ++n;
+  }
+  std::int64_t expected = 0;
+  for (std::int64_t a = 3; a <= 60; ++a) expected += coprime_pairs_of_order(a);
+  CHECK(std::int64_t(n) == expected);
+}
+
+TEST_CASE("hard cases: huge pairs, far-apart frequencies, degenerate", "[certificate]") {
+  struct row {
+    const char* tau;
+    const char* sigma;
+    bool expect_global;
+  };
+  for (auto r : {row{"1000001", "1000000", true}, row{"1000000000001", "1000000000000", true},
+                 row{"1000000000000000001", "1000000000000000000", true},
+                 row{"1000000000000000000000000000001", "1000000000000000000000000000000", true},
+                 row{"4611686018427387905", "4611686018427387903", true},  // degenerate, sum 2^63
+                 row{"1000", "1", true}, row{"101", "100", true}, row{"9", "4", true}, row{"5", "1", true},
+                 row{"1000004", "3", false},  // x ~ 1 and order 10^6: cover not available, says so
+                 row{"1000000000", "1", false}}) {
+    resonant_pair<big_int> p{big_int(r.tau), big_int(r.sigma)};
+    std::string name = p.str();
+    INFO(name);
+    auto c = certify_pair(p, 30);
+    CHECK(c.global_minimality == r.expect_global);
+    if (!r.expect_global) {
+      CHECK(c.r_res.first == "0");
+      CHECK(c.theta_first.first.empty());
+      CHECK(c.minimiser_count == 0);
+      CHECK(c.global_minimality_note.find("not proved") == 0);
+    }
+    // Reference: local mode around the library's theta_first (a guess only) for huge pairs.
+    test::hp::hp_result ref;
+    if (p.order() <= big_int(test::hp::hp_scan_max_order)) {
+      ref = test::hp::hp_reference(p.tau(), p.sigma(), 45);
+    } else {
+      scoped_digits sd(60);
+      auto lat = inscribed_lattice<mpfr_real>(p, mpfr_real(1));
+      ref = test::hp::hp_reference(p.tau(), p.sigma(), 45, lat.theta_first);
+    }
+    if (c.global_minimality) {
+      check_against_reference(c, ref, name);
+    } else {
+      // Only r_res <= hi is claimed; it must hold.
+      CHECK(certainly_subset(interval_point(ref.r_res), claim_interval({"0", c.r_res.second})));
+    }
+    auto v = check_certificate(c);
+    INFO(v.failure);
+    CHECK(v.holds);
+  }
+}
+
+TEST_CASE("the checker accepts certificates at 20, 100 and 1000 digits", "[certificate]") {
+  for (unsigned digits : {20u, 100u, 1000u}) {
+    for (auto [t, s] : {std::pair{6, 5}, {9, 4}, {11, 9}}) {
+      resonant_pair<big_int> p{big_int(t), big_int(s)};
+      auto c = certify_pair(p, digits);
+      INFO(p.str() << " at " << digits << " digits, " << c.working_bits << " bits");
+      CHECK(c.global_minimality);
+      CHECK(c.working_bits >= digits * 3);  // at least log2(10) bits per digit
+      auto v = check_certificate(c);
+      INFO(v.failure);
+      CHECK(v.holds);
+    }
+  }
+}
+
+TEST_CASE("the checker rejects tampered certificates", "[certificate]") {
+  for (auto [t, s] : {std::pair{6, 5}, {5, 1}, {11, 9}}) {
+    resonant_pair<big_int> p{big_int(t), big_int(s)};
+    const auto good = certify_pair(p, 25);
+    REQUIRE(check_certificate(good).holds);
+    std::vector<std::pair<std::string, certificate>> bad;
+    auto add = [&](const std::string& what, auto&& mutate) {
+      certificate c = good;
+      mutate(c);
+      bad.push_back({what, c});
+    };
+    if (!good.degenerate) {
+      add("r_res lo up one ulp", [](certificate& c) { c.r_res.first = shift_last_digit(c.r_res.first, 1); });
+      add("r_res hi down one ulp", [](certificate& c) { c.r_res.second = shift_last_digit(c.r_res.second, -1); });
+      add("r_res narrowed to a point", [](certificate& c) { c.r_res.second = c.r_res.first; });
+      add("drop cover", [](certificate& c) {
+        std::erase_if(c.obligations, [](auto& o) { return o.id == "cover"; });
+      });
+      add("drop basin", [](certificate& c) {
+        std::erase_if(c.obligations, [](auto& o) { return o.id == "basin"; });
+      });
+      add("basin too small to hold the root", [](certificate& c) {
+        for (auto& o : c.obligations)
+          if (o.id == "basin") o.data["Y_hi"] = o.data["Y_lo"];
+      });
+      add("minimiser count", [](certificate& c) { c.minimiser_count += 1; });
+    } else {
+      add("drop degenerate", [](certificate& c) { c.obligations.clear(); });
+      add("r_res not zero", [](certificate& c) { c.r_res.second = "1e-30"; });
+      add("degenerate flag", [](certificate& c) { c.degenerate = false; });
+    }
+    add("theta_first lo up one ulp", [](certificate& c) { c.theta_first.first = shift_last_digit(c.theta_first.first, 1); });
+    add("t_first hi down one ulp", [](certificate& c) { c.t_first.second = shift_last_digit(c.t_first.second, -1); });
+    add("changed pair", [](certificate& c) { c.tau += 2; });
+    add("format", [](certificate& c) { c.format = "gyrores-certificate/0"; });
+    add("more digits than proved", [](certificate& c) { c.digits = 60; });
+    for (auto& [what, c] : bad) {
+      INFO(p.str() << ": " << what);
+      check_verdict v;
+      try {
+        v = check_certificate(c);
+      } catch (const usage_error&) {
+        v = {false, "malformed"};
+      }
+      CHECK_FALSE(v.holds);
+    }
+  }
+}
