@@ -1,0 +1,405 @@
+// Sweeps (sweep.hpp, sweep_io.hpp): counts against independent counting, determinism across
+// thread counts, shards + merge = single run, resume after interruption, atomic files.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gyrores/sweep_io.hpp>
+
+using namespace gyrores;
+
+namespace {
+
+// A fresh directory under /tmp, removed (with its files) at scope exit.
+struct temp_dir {
+  std::string path;
+  temp_dir() {
+    char tmpl[] = "/tmp/gyrores_test_sweep_XXXXXX";
+    char* p = ::mkdtemp(tmpl);
+    REQUIRE(p != nullptr);
+    path = p;
+  }
+  ~temp_dir() { std::system(("rm -rf '" + path + "'").c_str()); }
+  std::string operator/(const std::string& name) const { return path + "/" + name; }
+};
+
+bool exists(const std::string& p) { return ::access(p.c_str(), F_OK) == 0; }
+
+std::string read_all(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// The file without its last line (the end line carries the run time).
+std::string without_last_line(const std::string& s) {
+  if (s.empty()) return s;
+  auto cut = s.rfind('\n', s.size() - 2);
+  return cut == std::string::npos ? std::string() : s.substr(0, cut + 1);
+}
+
+sweep_json read_json(const std::string& p) { return sweep_json::parse(read_all(p)); }
+
+sweep_config config(std::int64_t max_order, std::int64_t min_order = 3) {
+  sweep_config c;
+  c.max_order = max_order;
+  c.min_order = min_order;
+  return c;
+}
+
+sweep_engine_options engine(unsigned threads, std::size_t block = 7) {
+  sweep_engine_options e;
+  e.threads = threads;
+  e.block_size = block;
+  return e;
+}
+
+sweep_accumulator run_acc(const sweep_config& c, const sweep_engine_options& e) {
+  sweep_accumulator acc;
+  acc.max_examples = c.max_examples;
+  auto out = sweep_run<double>(c, e, [&](sweep_block& b) { acc.merge(b.summary); });
+  REQUIRE(out.complete);
+  return acc;
+}
+
+std::int64_t phi(std::int64_t n) {
+  std::int64_t r = 0;
+  for (std::int64_t k = 1; k <= n; ++k) r += std::gcd(k, n) == 1;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("sweep: check lists parse; unknown names are usage errors", "[sweep]") {
+  CHECK(sweep_parse_checks("all") == sweep_all_checks);
+  CHECK(sweep_parse_checks("degeneracy,asy-bound") == ((1u << 0) | (1u << 2)));
+  CHECK(sweep_parse_checks("cross-check") == (1u << 4));
+  CHECK_THROWS_AS(sweep_parse_checks("degeneracy,bogus"), usage_error);
+  CHECK_THROWS_AS(sweep_parse_checks(""), usage_error);
+  sweep_config c = config(2);
+  CHECK_THROWS_AS(sweep_validate(c), usage_error);
+  c = config(10, 11);
+  CHECK_THROWS_AS(sweep_validate(c), usage_error);
+  c = config(10);
+  c.shard_index = 4;
+  c.shard_count = 4;
+  CHECK_THROWS_AS(sweep_validate(c), usage_error);
+}
+
+TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]") {
+  const std::int64_t M = 60;
+  std::uint64_t pairs = 0, degenerate = 0, small_x = 0, phi_sum = 0;
+  for (std::int64_t tau = 2; tau < M; ++tau)
+    for (std::int64_t sigma = 1; sigma < tau && tau + sigma <= M; ++sigma) {
+      if (std::gcd(tau, sigma) != 1) continue;
+      ++pairs;
+      if ((tau - sigma) % 4 == 2) ++degenerate;
+      if (2 * (tau - sigma) < tau + sigma) ++small_x;
+    }
+  for (std::int64_t a = 3; a <= M; ++a) phi_sum += std::uint64_t(phi(a) / 2);
+  REQUIRE(pairs == phi_sum);
+  CHECK(sweep_total_pairs(3, M) == pairs);
+  CHECK(sweep_total_pairs(1, M) == pairs);
+
+  auto acc = run_acc(config(M), engine(2));
+  CHECK(acc.pairs == pairs);
+  CHECK(acc.degenerate == degenerate);
+  CHECK(acc.errors.violations == 0);
+  const auto nondeg = pairs - degenerate;
+  CHECK(acc.checks[int(sweep_check::degeneracy)].checked == pairs);
+  CHECK(acc.checks[int(sweep_check::degeneracy)].violations == 0);
+  CHECK(acc.checks[int(sweep_check::structure)].checked == pairs);
+  CHECK(acc.checks[int(sweep_check::structure)].violations == 0);
+  CHECK(acc.checks[int(sweep_check::cross_check)].checked == nondeg);  // every order <= 300
+  CHECK(acc.checks[int(sweep_check::cross_check)].violations == 0);
+  CHECK(acc.checks[int(sweep_check::asy_bound)].checked == small_x);
+  CHECK(acc.checks[int(sweep_check::asy_bound)].violations == 0);
+  CHECK(acc.checks[int(sweep_check::paper_node)].checked == nondeg);
+  CHECK(acc.t_ratios.size() == nondeg);
+
+  // The examples are the first violating pairs in enumeration order (order, then sigma).
+  const auto& ex = acc.checks[int(sweep_check::paper_node)].examples;
+  CHECK(ex.size() == std::min<std::size_t>(5, acc.checks[int(sweep_check::paper_node)].violations));
+  CHECK(std::is_sorted(ex.begin(), ex.end(), sweep_pair_before));
+
+  // P7's worst case at b = 1 and the largest a: (30, 29); ratio -> 0.0049967 (asymptotic.hpp).
+  REQUIRE(acc.asy_ratio_max.set);
+  CHECK(acc.asy_ratio_max.pair == sweep_pair_id{30, 29});
+  CHECK(acc.asy_ratio_max.value < 0.005);
+  CHECK(acc.asy_ratio_max.value > 0.0049);
+  CHECK(acc.sharp_constant.pair == sweep_pair_id{30, 29});
+  CHECK(acc.sharp_constant.value == Approx(acc.asy_ratio_max.value * M_PI * M_PI * M_PI).epsilon(1e-12));
+
+  // Quantiles: exact order statistics of theta_first b/pi, recomputed here from the lattice.
+  std::vector<double> ref;
+  for (auto p : coprime_pairs(3, M))
+    if (!p.degenerate()) ref.push_back(inscribed_lattice<double>(p, 1.0).theta_first * double(p.delta()) / M_PI);
+  std::sort(ref.begin(), ref.end());
+  auto q = acc.quantiles();
+  CHECK(q.count == ref.size());
+  CHECK(q.min == Approx(ref.front()).epsilon(1e-14));
+  CHECK(q.max == Approx(ref.back()).epsilon(1e-14));
+  CHECK(q.median == Approx(ref[(ref.size() - 1) / 2]).epsilon(1e-14));
+}
+
+TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
+  sweep_config c = config(100);
+  // (9,4): the global minimum is near 3 pi/5, not in the lobe of pi/5 (MATH.md P5).
+  auto r94 = sweep_evaluate<double>(resonant_pair<std::int64_t>(9, 4), c);
+  REQUIRE_FALSE(r94.failed);
+  CHECK(r94.status[int(sweep_check::paper_node)] == sweep_status::fail);
+  CHECK(r94.first_at_paper_node == 0);
+  CHECK(r94.minimiser_count == 2);
+  CHECK(r94.t_ratio == Approx(3.0).epsilon(0.1));  // theta_first ~ 3 pi/5, b = 5
+  // (6,5): the paper's lobe (a tie, b = 1) holds the minimum.
+  auto r65 = sweep_evaluate<double>(resonant_pair<std::int64_t>(6, 5), c);
+  CHECK(r65.status[int(sweep_check::paper_node)] == sweep_status::pass);
+  CHECK(r65.status[int(sweep_check::asy_bound)] == sweep_status::pass);
+  CHECK(r65.status[int(sweep_check::cross_check)] == sweep_status::pass);
+  CHECK(r65.asy_error == Approx(1.16e-4).epsilon(0.01));  // printed in the paper (asymptotic.hpp)
+  // (7,5): degenerate (delta = 2); R(pi/2) = 0, no paper-node verdict, ratio not collected.
+  auto r75 = sweep_evaluate<double>(resonant_pair<std::int64_t>(7, 5), c);
+  CHECK(r75.status[int(sweep_check::degeneracy)] == sweep_status::pass);
+  CHECK(r75.status[int(sweep_check::paper_node)] == sweep_status::none);
+  CHECK(r75.status[int(sweep_check::cross_check)] == sweep_status::none);
+  CHECK_FALSE(r75.has_ratio);
+  CHECK(r75.r_res == 0);
+  // delta = 0 mod 4: four minimisers.
+  auto r51 = sweep_evaluate<double>(resonant_pair<std::int64_t>(5, 1), c);
+  CHECK(r51.minimiser_count == 4);
+  CHECK(r51.status[int(sweep_check::structure)] == sweep_status::pass);
+  CHECK_FALSE(r51.has_asy);  // x = 2/3 >= 1/2
+}
+
+TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
+  temp_dir d;
+  const sweep_config c = config(70);
+  sweep_json s1, s2;
+  for (unsigned threads : {1u, 2u}) {
+    sweep_files f;
+    f.rows_path = d / ("rows" + std::to_string(threads) + ".csv");
+    f.summary_path = d / ("sum" + std::to_string(threads) + ".json");
+    auto rep = sweep_to_files<double>(c, f, engine(threads, threads == 1 ? 64 : 5));
+    REQUIRE(rep.complete);
+    CHECK(rep.threads == threads);
+    (threads == 1 ? s1 : s2) = read_json(f.summary_path);
+  }
+  CHECK(without_last_line(read_all(d / "rows1.csv")) == without_last_line(read_all(d / "rows2.csv")));
+  CHECK(sweep_summary_core(s1) == sweep_summary_core(s2));
+  CHECK(s1["run"]["threads"] == 1);
+  CHECK(s2["run"]["threads"] == 2);
+  // The summary file carries the documented keys.
+  for (const char* k : {"pairs", "degenerate", "checks", "asy_ratio_max", "sharp_constant", "t_first_over_proxy", "seconds"})
+    CHECK(s1.contains(k));
+  CHECK(s1["checks"].size() == 5);
+  for (auto& [name, t] : s1["checks"].items()) {
+    CHECK(t.contains("violations"));
+    CHECK(t.contains("examples"));
+  }
+  CHECK(s1["asy_ratio_max"]["value"].is_string());
+  CHECK(s1["asy_ratio_max"]["pair"].size() == 2);
+  for (const char* k : {"min", "median", "max"}) CHECK(s1["t_first_over_proxy"][k].is_string());
+  // Rows: one per pair between the two metadata lines.
+  std::istringstream rows(read_all(d / "rows1.csv"));
+  std::string line;
+  int n = 0;
+  while (std::getline(rows, line)) ++n;
+  CHECK(std::uint64_t(n) == s1["pairs"].get<std::uint64_t>() + 3);
+}
+
+TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard summaries)", "[sweep]") {
+  temp_dir d;
+  const std::int64_t M = 90;
+  sweep_files single;
+  single.summary_path = d / "single.json";
+  auto rep = sweep_to_files<double>(config(M), single, engine(2));
+  REQUIRE(rep.complete);
+  const sweep_json want = sweep_summary_core(read_json(single.summary_path));
+
+  std::vector<std::string> csv, jsonl, summaries;
+  for (int i = 0; i < 4; ++i) {
+    sweep_config c = config(M);
+    c.shard_index = i;
+    c.shard_count = 4;
+    sweep_files f;
+    f.rows_path = d / ("shard" + std::to_string(i) + ".csv");
+    f.summary_path = d / ("shard" + std::to_string(i) + ".json");
+    REQUIRE(sweep_to_files<double>(c, f, engine(2)).complete);
+    sweep_files g;
+    g.rows_path = d / ("shard" + std::to_string(i) + ".jsonl");
+    g.rows_format = sweep_format::jsonl;
+    REQUIRE(sweep_to_files<double>(c, g, engine(1)).complete);
+    csv.push_back(f.rows_path);
+    jsonl.push_back(g.rows_path);
+    summaries.push_back(f.summary_path);
+    CHECK(exists(f.summary_path + ".values"));
+  }
+  CHECK(sweep_summary_core(sweep_merge(csv)) == want);
+  CHECK(sweep_summary_core(sweep_merge(jsonl)) == want);
+  CHECK(sweep_summary_core(sweep_merge(summaries)) == want);
+  CHECK(sweep_summary_core(sweep_merge({csv[2], jsonl[0], summaries[3], csv[1]})) == want);
+  // The merge insists on one complete set of shards.
+  CHECK_THROWS_AS(sweep_merge({csv[0], csv[1], csv[2]}), usage_error);
+  CHECK_THROWS_AS(sweep_merge({csv[0], csv[1], csv[2], jsonl[2]}), usage_error);
+  sweep_files other;
+  other.rows_path = d / "other.csv";
+  sweep_config oc = config(M - 1);
+  oc.shard_index = 3;
+  oc.shard_count = 4;
+  REQUIRE(sweep_to_files<double>(oc, other, engine(1)).complete);
+  CHECK_THROWS_AS(sweep_merge({csv[0], csv[1], csv[2], other.rows_path}), usage_error);
+  // A single complete run merges to itself.
+  sweep_files whole;
+  whole.rows_path = d / "whole.csv";
+  REQUIRE(sweep_to_files<double>(config(M), whole, engine(2)).complete);
+  CHECK(sweep_summary_core(sweep_merge({whole.rows_path})) == want);
+}
+
+TEST_CASE("sweep: resume after a stop or a crash continues to the same result", "[sweep]") {
+  temp_dir d;
+  const sweep_config c = config(80);
+  sweep_files ref;
+  ref.rows_path = d / "ref.csv";
+  ref.summary_path = d / "ref.json";
+  REQUIRE(sweep_to_files<double>(c, ref, engine(2)).complete);
+  const std::string ref_rows = without_last_line(read_all(ref.rows_path));
+  const sweep_json ref_sum = sweep_summary_core(read_json(ref.summary_path));
+
+  SECTION("max_pairs limits, then resume twice") {
+    sweep_files f;
+    f.rows_path = d / "a.csv";
+    f.summary_path = d / "a.json";
+    auto e = engine(2);
+    e.max_pairs = 100;
+    auto r1 = sweep_to_files<double>(c, f, e);
+    CHECK_FALSE(r1.complete);
+    CHECK(r1.done == 100);
+    CHECK_FALSE(exists(f.rows_path));  // only a.csv.part: never a partial a.csv
+    CHECK(exists(f.rows_path + ".part"));
+    CHECK_FALSE(exists(f.summary_path));
+    CHECK(exists(r1.state_path));
+    f.resume = true;
+    e.max_pairs = 333;
+    auto r2 = sweep_to_files<double>(c, f, e);
+    CHECK_FALSE(r2.complete);
+    CHECK(r2.done == 433);
+    e.max_pairs = 0;
+    auto r3 = sweep_to_files<double>(c, f, e);
+    CHECK(r3.complete);
+    CHECK_FALSE(exists(r3.state_path));
+    CHECK(without_last_line(read_all(f.rows_path)) == ref_rows);
+    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_sum);
+  }
+  SECTION("stop flag (as set by SIGINT), summary only, then resume") {
+    sweep_files f;
+    f.summary_path = d / "b.json";
+    std::atomic<bool> stop{false};
+    auto e = engine(2, 16);
+    e.stop = &stop;
+    auto r1 = sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
+      if (p.done >= 200) stop = true;
+    });
+    CHECK_FALSE(r1.complete);
+    CHECK(r1.done >= 200);
+    CHECK(r1.done < ref_sum["pairs"].get<std::uint64_t>());
+    CHECK_FALSE(exists(f.summary_path));
+    stop = false;
+    f.resume = true;
+    auto r2 = sweep_to_files<double>(c, f, e);
+    REQUIRE(r2.complete);
+    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_sum);
+  }
+  SECTION("a crash after checkpoints: rows written past the last checkpoint are dropped") {
+    sweep_files f;
+    f.rows_path = d / "c.jsonl";
+    f.rows_format = sweep_format::jsonl;
+    f.summary_path = d / "c.json";
+    f.checkpoint_seconds = 1e-9;  // a checkpoint after every block
+    auto e = engine(1, 10);
+    int blocks = 0;
+    CHECK_THROWS_AS(sweep_to_files<double>(c, f, e,
+                                           [&](const sweep_progress_info&) {
+                                             if (++blocks == 25) throw compute_error("simulated crash");
+                                           }),
+                    compute_error);
+    CHECK_FALSE(exists(f.rows_path));
+    CHECK_FALSE(exists(f.summary_path));
+    // Append junk, as a crash in the middle of a write would leave.
+    {
+      std::ofstream junk(f.rows_path + ".part", std::ios::app);
+      junk << "{\"tau\": 99, \"sigma\"";
+    }
+    f.resume = true;
+    f.checkpoint_seconds = 300;
+    REQUIRE(sweep_to_files<double>(c, f, e).complete);
+    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_sum);
+    // Same pairs as the CSV reference, in the same order.
+    auto in = sweep_read_rows(f.rows_path);
+    CHECK(in.acc.pairs == ref_sum["pairs"].get<std::uint64_t>());
+  }
+  SECTION("resume refuses a different sweep, and a missing state") {
+    sweep_files f;
+    f.summary_path = d / "e.json";
+    auto e = engine(1);
+    e.max_pairs = 50;
+    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    f.resume = true;
+    CHECK_THROWS_AS(sweep_to_files<double>(config(81), f, e), usage_error);
+    sweep_files g;
+    g.summary_path = d / "nothing.json";
+    g.resume = true;
+    CHECK_THROWS_AS(sweep_to_files<double>(c, g, e), usage_error);
+  }
+}
+
+TEST_CASE("sweep: files are written atomically", "[sweep]") {
+  temp_dir d;
+  const std::string p = d / "f.txt";
+  sweep_write_atomic(p, "one\n");
+  CHECK(read_all(p) == "one\n");
+  sweep_write_atomic(p, "two\n");
+  CHECK(read_all(p) == "two\n");
+  CHECK_FALSE(exists(p + ".part"));
+  // A directory that does not exist: nothing is created, compute_error.
+  CHECK_THROWS_AS(sweep_write_atomic(d / "no/such/dir.txt", "x"), compute_error);
+  CHECK_FALSE(exists(d / "no"));
+  // A sweep whose summary cannot be written leaves no partial summary and no final rows.
+  sweep_files f;
+  f.rows_path = d / "rows.csv";
+  f.summary_path = d / "missing/summary.json";
+  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), compute_error);
+  CHECK_FALSE(exists(f.summary_path));
+  CHECK_FALSE(exists(f.summary_path + ".part"));
+  CHECK_FALSE(exists(f.rows_path));
+}
+
+TEST_CASE("sweep: float128 agrees with double", "[sweep]") {
+  sweep_config c = config(40);
+  c.digits = 25;
+  sweep_accumulator a128;
+  a128.max_examples = c.max_examples;
+  REQUIRE(sweep_run<float128>(c, engine(2), [&](sweep_block& b) { a128.merge(b.summary); }).complete);
+  auto a64 = run_acc(config(40), engine(2));
+  CHECK(a128.pairs == a64.pairs);
+  CHECK(a128.degenerate == a64.degenerate);
+  for (int i = 0; i < sweep_check_count; ++i) {
+    CHECK(a128.checks[i].violations == a64.checks[i].violations);
+    CHECK(a128.checks[i].examples == a64.checks[i].examples);
+  }
+  CHECK(a128.asy_ratio_max.pair == a64.asy_ratio_max.pair);
+  CHECK(a128.asy_ratio_max.value == Approx(a64.asy_ratio_max.value).epsilon(1e-12));
+  CHECK(a128.asy_ratio_max.text.size() >= 25);  // printed at the working precision
+  auto q128 = a128.quantiles(), q64 = a64.quantiles();
+  CHECK(q128.median == Approx(q64.median).epsilon(1e-12));
+}
