@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <string>
 #include <sys/wait.h>
 
@@ -167,4 +169,56 @@ TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli
     CHECK(count_lines(r.err) == 1);
     CHECK(r.err.find(needle) != std::string::npos);
   }
+}
+
+TEST_CASE("certify writes a certificate that check accepts; tampering and corruption are rejected", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  std::string dir = "/tmp/gyrores_test_cli_cert_" + std::to_string(::getpid());
+  REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+  std::string file = dir + "/c.json";
+  auto r = run("certify 6 5 --digits 50 --out " + file);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.empty());
+  // No temporary left beside the file (written atomically).
+  CHECK(run("ls " + dir).out == "c.json\n");
+  auto ok = run("check " + file);
+  CHECK(ok.status == 0);
+  CHECK(ok.out.find("holds") != std::string::npos);
+
+  std::string text;
+  {
+    std::ifstream in(file);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  auto j = nlohmann::json::parse(text);
+  CHECK(j["format"] == "gyrores-certificate/1");
+  CHECK(j["claims"]["r_res"][0].get<std::string>().substr(0, 10) == "5.07458057");
+  auto write = [&](const std::string& name, const std::string& body) {
+    std::ofstream out(dir + "/" + name);
+    out << body;
+    return dir + "/" + name;
+  };
+  // A claim that does not hold: exit 1, naming it.
+  auto t1 = j;
+  t1["claims"]["r_res"][1] = t1["claims"]["r_res"][0];
+  auto bad = run("check " + write("narrow.json", t1.dump()));
+  CHECK(bad.status == 1);
+  CHECK(bad.err.find("r_res") != std::string::npos);
+  auto t2 = j;
+  t2["tau"] = 7;
+  CHECK(run("check " + write("pair.json", t2.dump())).status == 1);
+  auto t3 = j;
+  t3["obligations"].erase(t3["obligations"].begin());
+  CHECK(run("check " + write("drop.json", t3.dump())).status == 1);
+  // Unreadable or malformed: exit 2.
+  CHECK(run("check " + write("trunc.json", text.substr(0, text.size() / 2))).status == 2);
+  CHECK(run("check " + write("garbage.json", "not json")).status == 2);
+  auto t4 = j;
+  t4.erase("claims");
+  CHECK(run("check " + write("noclaims.json", t4.dump())).status == 2);
+  CHECK(run("check " + dir + "/missing.json").status == 2);
+  // Bad input to certify.
+  CHECK(run("certify 6 4").status == 2);
+  CHECK(run("certify 6 5 --digits 0").status == 2);
+  std::system(("rm -rf " + dir).c_str());
 }

@@ -72,4 +72,44 @@ root_result<T> root_bracketed(F&& f, const T& lo, const T& hi, const T& flo, con
   return {mid, r.first, r.second, iters};
 }
 
+// Safeguarded Newton (rtsafe): fdf(u) returns {f, f'}; [lo, hi] brackets a sign change with
+// sign(f(lo)) = sign_lo. Newton steps that leave the bracket are replaced by bisection; the
+// bracket shrinks with every evaluation. Stops after the first step below 2^(-3 bits/4) of the
+// scale (quadratic convergence then leaves an error far below one ulp) and returns the new
+// point together with the last evaluation point (where f was evaluated). Returns false if it
+// has not converged within max_iter (the caller falls back to TOMS 748).
+template <class T> struct newton_result {
+  T root, last_point;
+  std::uintmax_t evaluations;
+};
+template <class T, class FDF>
+bool root_newton_safeguarded(FDF&& fdf, T lo, T hi, int sign_lo, const T& u0, const T& floor, newton_result<T>& out,
+                             int max_iter = 40) {
+  using std::fabs;
+  using std::ldexp;
+  const T tol = ldexp(T(1), -int(3 * real_bits<T>() / 4));
+  T u = u0;
+  if (!(u > lo && u < hi)) u = (lo + hi) / 2;
+  for (int it = 1; it <= max_iter; ++it) {
+    auto [f, df] = fdf(u);
+    if (f == 0) {
+      out = {u, u, std::uintmax_t(it)};
+      return true;
+    }
+    if ((f > 0) == (sign_lo > 0)) lo = u;
+    else hi = u;
+    T next = u - f / df;
+    if (!(next > lo && next < hi)) next = (lo + hi) / 2;  // also catches df = 0 and NaN
+    T step = fabs(next - u);
+    T scale = fabs(next) > floor ? fabs(next) : floor;
+    T prev = u;
+    u = next;
+    if (step <= tol * scale) {
+      out = {u, prev, std::uintmax_t(it)};
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace gyrores
