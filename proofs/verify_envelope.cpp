@@ -1,0 +1,210 @@
+// verify_envelope: paper Prop. convexEnvelope (MATH.md P2), for every pair up to --max-order.
+//
+// Notation (proofs/README.md, P2). In units of rho0 the trajectory is
+//   x(theta) = (sin tau theta, w1 cos tau theta) + (sin sigma theta, w2 cos sigma theta),
+// w1 = sqrt(tau/sigma), w2 = 1/w1. For a direction u(phi) = (cos phi, sin phi) the support
+// function of the filled ellipse E_w is h_w(phi) = sqrt(cos^2 phi + w^2 sin^2 phi), attained at the
+// phase theta_w*(phi) = pi/2 - psi_w(phi), where psi_w is the continuous angle of
+// (cos phi, w sin phi):
+//   psi_w(phi) = phi + atan((w - 1) sin phi cos phi / (cos^2 phi + w sin^2 phi)).
+// <u, x(theta)> = h_1 cos(tau theta - theta_1*) + h_2 cos(sigma theta - theta_2*), so the
+// trajectory reaches the envelope's support line in direction phi iff there is theta with
+// tau theta = theta_1*, sigma theta = theta_2* (mod 2 pi), i.e. (the closed line is
+// {sigma p1 - tau p2 in 2 pi Z}) iff
+//   F(phi) = sigma theta_1* - tau theta_2* = -b pi/2 - sigma psi_1 + tau psi_2  lies in 2 pi Z.
+// F is strictly increasing (F' = sqrt(tau sigma) [1/h_2^2 - 1/h_1^2] >= 0, zero only at
+// sin phi = 0) and F(2 pi) - F(0) = 2 pi b: exactly b touching directions per period (README).
+// Between two, the trajectory stays strictly inside; with d = dist(F(phi), 2 pi Z),
+//   gap(phi) = h_1 + h_2 - max_theta <u, x> >= (2/pi^2) d^2 / (sigma^2/h_1 + tau^2/h_2)   (Jordan),
+//   gap(phi) <= min(h_2 (1 - cos(pi/tau)), h_1 (1 - cos(pi/sigma))).
+//
+// Per pair the program decides:
+//   P2.touch   b touching directions exist: each is bracketed, phi_lo < phi_N < phi_hi, by
+//              F(phi_lo) < 2 pi N < F(phi_hi) in MPFI (or is phi = 0, pi exactly when 4 | b), and the
+//              trajectory point there is consistent with the Prop.'s x_d(phi) (overlapping
+//              enclosures); "exactly b" is the monotonicity lemma, not a computation.
+//   P2.gap     at each of the b directions with F = 2 pi N + pi (half-way between touches) the
+//              Jordan lower bound on the gap is > 0: the trajectory does not reach the envelope.
+//   P2.literal (reported) the Prop.'s "boundary set" is the boundary of the trajectory's convex
+//              hull: refuted whenever P2.gap is proved (the hull misses the envelope there).
+// The log gives per pair: b, the smallest and largest relative gap lower bound
+// (gap/(h_1 + h_2)) over the b half-way directions, and the largest relative upper bound.
+#include <cmath>
+
+#include "verify_common.hpp"
+
+using namespace gyrores;
+using namespace gyrores::proofs;
+
+namespace {
+
+struct env_pair {
+  std::int64_t tau, sigma, b;
+};
+
+template <class T> T psi(const T& w, const T& phi) {
+  using std::atan;
+  using std::cos;
+  using std::sin;
+  T s = sin(phi), c = cos(phi);
+  return phi + atan((w - 1) * s * c / (c * c + w * s * s));
+}
+
+template <class T> T F_of(const env_pair& P, const T& w1, const T& w2, const T& pi, const T& phi) {
+  return -T(double(P.b)) * pi / 2 - T(double(P.sigma)) * psi(w1, phi) + T(double(P.tau)) * psi(w2, phi);
+}
+
+// phi in [lo, hi] with F(phi) = target, F increasing (double bisection).
+double solve_F(const env_pair& P, double target, double lo, double hi) {
+  const double w1 = std::sqrt(double(P.tau) / double(P.sigma)), w2 = 1 / w1;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * (1 + std::fabs(lo)); ++it) {
+    double mid = (lo + hi) / 2;
+    if (F_of<double>(P, w1, w2, M_PI, mid) < target) lo = mid;
+    else hi = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+// Extended Euclid: returns (i, k) with sigma i - tau k = -N.
+std::pair<__int128, __int128> bezout(std::int64_t tau, std::int64_t sigma, std::int64_t N) {
+  __int128 r0 = sigma, r1 = tau, s0 = 1, s1 = 0, t0 = 0, t1 = 1;  // r = s sigma + t tau
+  while (r1 != 0) {
+    __int128 q = r0 / r1;
+    __int128 r = r0 - q * r1; r0 = r1; r1 = r;
+    __int128 s = s0 - q * s1; s0 = s1; s1 = s;
+    __int128 t = t0 - q * t1; t0 = t1; t1 = t;
+  }
+  // s0 sigma + t0 tau = 1  ->  sigma (-N s0) - tau (N t0) = -N
+  return {-__int128(N) * s0, __int128(N) * t0};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return guarded_main("verify_envelope", [&] {
+    auto opt = parse_options(argc, argv);
+    run R("verify_envelope", "paper Prop. convexEnvelope (P2): trajectory vs the Minkowski-sum envelope", opt);
+    auto& c_touch = R.add_claim("P2.touch",
+                                "the trajectory touches the envelope x_d in b = tau - sigma directions (each bracketed; "
+                                "the trajectory point is consistent with x_d there)",
+                                true);
+    auto& c_gap = R.add_claim("P2.gap",
+                              "half-way between consecutive touching directions the trajectory stays strictly inside "
+                              "(Jordan lower bound on the support gap > 0)",
+                              true);
+    auto& c_lit = R.add_claim("P2.literal",
+                              "the Prop.'s x_d is the boundary of the convex hull of the trajectory (paper wording "
+                              "'boundary set')",
+                              false);
+    R.log("# per pair: (tau,sigma) b touches | gap lower bound rel. to h1+h2: min max over the b half-way directions | "
+          "gap upper bound rel. (max) | decisions");
+    scoped_digits sd(digits10_for_bits(128));
+    const mpfi_real pi = real_pi<mpfi_real>(), two_pi = 2 * pi;
+    double worst_lb = 0;
+    std::string worst_pair;
+    for (auto p : coprime_pairs(opt.min_order, opt.max_order)) {
+      R.count_pair();
+      env_pair P{p.tau(), p.sigma(), p.delta()};
+      const std::string name = p.str();
+      const mpfi_real T = mpfi_real(P.tau), S = mpfi_real(P.sigma);
+      const mpfi_real w1 = sqrt(T / S), w2 = sqrt(S / T);
+      auto F = [&](const mpfi_real& phi) { return F_of<mpfi_real>(P, w1, w2, pi, phi); };
+      auto x_traj = [&](const mpfi_real& th) {  // x(theta)/rho0
+        return std::pair{sin(T * th) + sin(S * th), w1 * cos(T * th) + w2 * cos(S * th)};
+      };
+      auto x_env = [&](const mpfi_real& phi) {  // the Prop.'s x_d(phi)/rho0
+        mpfi_real c = cos(phi), s = sin(phi);
+        mpfi_real h1 = sqrt(c * c + w1 * w1 * s * s), h2 = sqrt(c * c + w2 * w2 * s * s);
+        return std::pair{c / h1 + c / h2, w1 * w1 * s / h1 + w2 * w2 * s / h2};
+      };
+      auto overlap = [](const mpfi_real& u, const mpfi_real& v) {
+        return !(interval_upper(u) < interval_lower(v) || interval_upper(v) < interval_lower(u));
+      };
+      // Touching directions: 2 pi N in [F(0), F(2 pi)) = [-b pi/2, -b pi/2 + 2 pi b).
+      // N from ceil(-b/4) to ceil(-b/4) + b - 1 (exact integers).
+      const std::int64_t b = P.b;
+      const std::int64_t n0 = -(b / 4);  // ceil(-b/4) for b >= 0
+      std::int64_t found = 0;
+      bool consistent = true;
+      std::vector<double> touch_phi;
+      for (std::int64_t N = n0; N < n0 + b; ++N) {
+        mpfi_real phiI;
+        double phid;
+        if (b % 4 == 0 && (4 * N == -b)) {  // F(0) = -b pi/2 = 2 pi N exactly
+          phiI = mpfi_real(0);
+          phid = 0;
+        } else if (b % 4 == 0 && (4 * N == b)) {  // F(pi) = b pi/2 = 2 pi N exactly
+          phiI = pi;
+          phid = M_PI;
+        } else {
+          phid = solve_F(P, 2 * M_PI * double(N), 0, 2 * M_PI);
+          double h = 1e-9 * (1 + phid);
+          mpfi_real lo = mpfi_real(phid - h), hi = mpfi_real(phid + h);
+          mpfi_real target = two_pi * mpfi_real(N);
+          if (!(phid - h > 0 && phid + h < 2 * M_PI && certainly_less(F(lo), target) && certainly_less(target, F(hi))))
+            continue;
+          phiI = interval_hull(lo, hi);
+        }
+        ++found;
+        touch_phi.push_back(phid);
+        // The trajectory point at theta = (theta_1* + 2 pi i)/tau, sigma i - tau k = -N.
+        auto [i, k] = bezout(P.tau, P.sigma, N);
+        (void)k;
+        mpfi_real th1 = pi / 2 - psi(w1, phiI);
+        mpfi_real th = (th1 + two_pi * real_from_int<mpfi_real>(to_big(i))) / T;
+        auto xt = x_traj(th);
+        auto xe = x_env(phiI);
+        if (!(overlap(xt.first, xe.first) && overlap(xt.second, xe.second))) consistent = false;
+      }
+      verdict v_touch = found == b ? (consistent ? verdict::proved : verdict::refuted) : verdict::undecided;
+      c_touch.add(v_touch, name, found == b ? "" : "bracketed " + std::to_string(found) + " of " + std::to_string(b));
+
+      // Gaps half-way: F = 2 pi N + pi.
+      verdict v_gap = verdict::proved;
+      mpfr_real lb_min = 10, lb_max = 0, ub_max = 0;
+      for (std::int64_t N = n0 - 1; N < n0 + b; ++N) {
+        double target = 2 * M_PI * double(N) + M_PI;
+        if (target < -double(b) * M_PI / 2 || target >= -double(b) * M_PI / 2 + 2 * M_PI * double(b)) continue;
+        double phid = solve_F(P, target, 0, 2 * M_PI);
+        mpfi_real phi = mpfi_real(phid);
+        mpfi_real Fv = F(phi);
+        // d = dist(F, 2 pi Z) >= pi - |F - (2 pi N + pi)|
+        mpfi_real off = interval_abs(Fv - (two_pi * mpfi_real(N) + pi));
+        mpfi_real d = pi - off;
+        mpfi_real c = cos(phi), s = sin(phi);
+        mpfi_real h1 = sqrt(c * c + w1 * w1 * s * s), h2 = sqrt(c * c + w2 * w2 * s * s);
+        mpfi_real lb = 2 / (pi * pi) * interval_sqr(d) / (S * S / h1 + T * T / h2);
+        mpfi_real rel = lb / (h1 + h2);
+        mpfi_real ub1 = h2 * (1 - cos(pi / T)), ub2 = h1 * (1 - cos(pi / S));
+        mpfi_real ub = (interval_upper(ub1) < interval_upper(ub2) ? ub1 : ub2) / (h1 + h2);
+        verdict v = certainly_positive(d) ? decide_positive(lb) : verdict::undecided;
+        v_gap = verdict_and(v_gap, v);
+        if (interval_lower(rel) < lb_min) lb_min = interval_lower(rel);
+        if (interval_lower(rel) > lb_max) lb_max = interval_lower(rel);
+        if (interval_upper(ub) > ub_max) ub_max = interval_upper(ub);
+      }
+      c_gap.add(v_gap, name);
+      c_lit.add(v_gap == verdict::proved ? verdict::refuted : verdict::undecided, name,
+                v_gap == verdict::proved ? "the hull misses the envelope half-way between touches" : "");
+      if (double(lb_max) > worst_lb) {
+        worst_lb = double(lb_max);
+        worst_pair = name;
+      }
+      if (R.logging()) {
+        std::string t;
+        for (double f : touch_phi) {
+          char buf[32];
+          std::snprintf(buf, sizeof buf, " %.6f", f);
+          t += buf;
+        }
+        R.log(name + " b=" + std::to_string(b) + " touch_phi=" + (b <= 8 ? t : " (" + std::to_string(found) + ")") +
+              " | gap_lb_rel min " + format_scientific(lb_min, 4) + " max " + format_scientific(lb_max, 4) +
+              " | gap_ub_rel max " + format_scientific(ub_max, 4) + " | " + verdict_name(v_touch) + " " +
+              verdict_name(v_gap));
+      }
+    }
+    if (!worst_pair.empty())
+      R.note("largest proved relative gap lower bound: " + std::to_string(worst_lb) + " at " + worst_pair);
+    return R.finish();
+  });
+}
