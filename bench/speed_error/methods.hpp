@@ -1,0 +1,24 @@
+// The methods and peers of the harness (one method_def each; see core.hpp).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core.hpp"
+
+namespace gyrores::bench {
+
+// gyrores itself: theta_asy, r_res_asy, exact, toms748_local, newton_doubling, global,
+// certified, one_eval; and the obvious peer, plain Boost TOMS 748 on the naive formulation.
+std::vector<method_def> library_methods(const run_config& cfg);
+
+// Boost.Odeint time-domain simulation (dopri5 at several tolerances, a symplectic RKN at
+// several step sizes).
+std::vector<method_def> odeint_methods(const run_config& cfg);
+
+// Arb/FLINT: arb_calc_refine_root_newton from the double start, and one Arb evaluation.
+// Empty when the harness was built without Arb (GYRORES_BENCH_HAVE_ARB).
+std::vector<method_def> arb_methods(const run_config& cfg);
+bool arb_available();
+std::string arb_library_version();
+
+}  // namespace gyrores::bench

@@ -1,0 +1,249 @@
+// Peer (d): Arb/FLINT (Debian 12: libflint-arb-dev, Arb 2.23 on FLINT 2.9), optional.
+//
+//  arb_newton: arb_calc_refine_root_newton (Newton in ball arithmetic with precision doubling)
+//    on q'(u) = cos u sin(mu - x u) - x sin u cos(mu - x u) in the first minimiser's lobe frame
+//    (the same local coordinates as gyrores: mu = pi m/(2a), x = b/a), from the double root of
+//    inscribed_lattice<double> as a ball of relative radius 2^-40; convergence region of
+//    relative radius 2^-20, its factor from arb_calc_newton_conv_factor at 64 bits. Timed: the
+//    constants x, mu at full precision, the convergence factor and the refinement: the root
+//    alone (theta_first is formed from it untimed, to score it; r_res is not computed).
+//  arb_one_eval: one call of that function with order 2 (f and f' from two arb_sin_cos): the
+//    Arb counterpart of one_eval, to compare Arb's elementary functions with MPFR's.
+// Precision: the same bits as mpfr_real at that many digits.
+#include "methods.hpp"
+
+#ifdef GYRORES_BENCH_HAVE_ARB
+#include <arb.h>
+#include <arb_calc.h>
+#include <flint/flint.h>
+#include <flint/fmpz.h>
+
+#include <cmath>
+#include <memory>
+
+#include "case_support.hpp"
+#include "gyrores/lattice.hpp"
+#include "reference.hpp"
+#endif
+
+namespace gyrores::bench {
+
+#ifndef GYRORES_BENCH_HAVE_ARB
+
+bool arb_available() { return false; }
+std::string arb_library_version() { return ""; }
+std::vector<method_def> arb_methods(const run_config&) { return {}; }
+
+#else
+
+bool arb_available() { return true; }
+std::string arb_library_version() { return std::string("Arb ") + arb_version + " on FLINT " + FLINT_VERSION; }
+
+namespace {
+
+struct arb_ball {
+  arb_t v;
+  arb_ball() { arb_init(v); }
+  ~arb_ball() { arb_clear(v); }
+  arb_ball(const arb_ball&) = delete;
+  arb_ball& operator=(const arb_ball&) = delete;
+};
+
+struct fmpz_int {
+  fmpz_t v;
+  explicit fmpz_int(const big_int& z) {
+    fmpz_init(v);
+    fmpz_set_mpz(v, z.backend().data());
+  }
+  ~fmpz_int() { fmpz_clear(v); }
+  fmpz_int(const fmpz_int&) = delete;
+  fmpz_int& operator=(const fmpz_int&) = delete;
+};
+
+// The lobe problem: x = b/a, mu = pi m/(2a); evaluations counted.
+struct lobe_problem {
+  arb_ball x, mu;
+  std::uint64_t evaluations = 0;
+  void set(const fmpz_t a, const fmpz_t b, const fmpz_t m, slong prec) {
+    arb_set_fmpz(x.v, b);
+    arb_div_fmpz(x.v, x.v, a, prec);
+    arb_const_pi(mu.v, prec);
+    arb_mul_fmpz(mu.v, mu.v, m, prec);
+    arb_div_fmpz(mu.v, mu.v, a, prec);
+    arb_mul_2exp_si(mu.v, mu.v, -1);
+  }
+};
+
+// out[0] = f, out[1] = f', out[2] = f''/2 (as many as `order`), f = cos u sin w - x sin u cos w,
+// w = mu - x u; f' = -(1 + x^2) sin u sin w - 2x cos u cos w,
+// f'' = -(1 + 3x^2) cos u sin w + x (3 + x^2) sin u cos w.
+int lobe_qdot(arb_ptr out, const arb_t u, void* param, slong order, slong prec) {
+  auto* P = static_cast<lobe_problem*>(param);
+  ++P->evaluations;
+  arb_t w, su, cu, sw, cw, t, s, x2;
+  arb_init(w); arb_init(su); arb_init(cu); arb_init(sw); arb_init(cw); arb_init(t); arb_init(s); arb_init(x2);
+  arb_mul(w, P->x.v, u, prec);
+  arb_sub(w, P->mu.v, w, prec);
+  arb_sin_cos(su, cu, u, prec);
+  arb_sin_cos(sw, cw, w, prec);
+  arb_mul(t, su, cw, prec);  // su cw
+  arb_mul(s, cu, sw, prec);  // cu sw
+  arb_mul(out + 0, P->x.v, t, prec);
+  arb_sub(out + 0, s, out + 0, prec);
+  if (order > 1) {
+    arb_mul(x2, P->x.v, P->x.v, prec);
+    arb_t a1, a2;
+    arb_init(a1); arb_init(a2);
+    arb_mul(a1, su, sw, prec);
+    arb_add_ui(a2, x2, 1, prec);
+    arb_mul(a1, a1, a2, prec);   // (1 + x^2) su sw
+    arb_mul(a2, cu, cw, prec);
+    arb_mul(a2, a2, P->x.v, prec);
+    arb_mul_2exp_si(a2, a2, 1);  // 2x cu cw
+    arb_add(out + 1, a1, a2, prec);
+    arb_neg(out + 1, out + 1);
+    if (order > 2) {
+      arb_mul_ui(a1, x2, 3, prec);
+      arb_add_ui(a1, a1, 1, prec);
+      arb_mul(a1, a1, s, prec);    // (1 + 3x^2) cu sw
+      arb_add_ui(a2, x2, 3, prec);
+      arb_mul(a2, a2, P->x.v, prec);
+      arb_mul(a2, a2, t, prec);    // x (3 + x^2) su cw
+      arb_sub(out + 2, a2, a1, prec);
+      arb_mul_2exp_si(out + 2, out + 2, -1);
+    }
+    arb_clear(a1); arb_clear(a2);
+  }
+  arb_clear(w); arb_clear(su); arb_clear(cu); arb_clear(sw); arb_clear(cw); arb_clear(t); arb_clear(s); arb_clear(x2);
+  return 0;
+}
+
+// Inputs shared by both Arb methods: the first minimiser's frame and its double root.
+struct arb_inputs {
+  big_int a, b, k, j, m;
+  double u0;
+  slong prec;
+};
+
+arb_inputs inputs_of(const bench_pair& bp, const precision& pr) {
+  auto r0 = inscribed_lattice<double>(bp.p, 1.0);
+  scoped_digits d(pr.digits);
+  return {bp.order(), bp.delta(), r0.first.k, r0.first.j, r0.first.m, r0.first.u, slong(real_bits<mpfr_real>())};
+}
+
+struct refine_result {
+  std::shared_ptr<arb_ball> root;
+  int status;
+  std::uint64_t evaluations;
+};
+
+refine_result arb_refine(const arb_inputs& in) {
+  fmpz_int a(in.a), b(in.b), m(in.m);
+  lobe_problem P;
+  P.set(a.v, b.v, m.v, in.prec + 16);
+  // Start ball and convergence region around the double root.
+  int e = 0;
+  std::frexp(in.u0 == 0 ? 1.0 : in.u0, &e);
+  arb_ball start, region;
+  arb_set_d(start.v, in.u0);
+  arb_add_error_2exp_si(start.v, e - 40);
+  arb_set_d(region.v, in.u0);
+  arb_add_error_2exp_si(region.v, e - 20);
+  arf_t conv;
+  arf_init(conv);
+  arb_calc_newton_conv_factor(conv, lobe_qdot, &P, region.v, 64);
+  auto root = std::make_shared<arb_ball>();
+  int status = arb_calc_refine_root_newton(root->v, lobe_qdot, &P, start.v, region.v, conv, 16, in.prec);
+  arf_clear(conv);
+  return {root, status, P.evaluations};
+}
+
+std::string skip_arb(const bench_pair&, const precision& pr) {
+  if (!pr.is_mp())
+    return "Arb is a multiprecision ball library; its fixed-precision counterpart is the double start itself";
+  if (pr.name == "mp30") return "30 digits serve only the certified-vs-uncertified comparison (exact, certified, one_eval)";
+  return "";
+}
+
+}  // namespace
+
+std::vector<method_def> arb_methods(const run_config&) {
+  std::vector<method_def> out;
+  out.push_back(
+      {"arb_newton", "arb",
+       "peer (d): Arb's arb_calc_refine_root_newton on q' in the first minimiser's lobe frame (local coordinates), "
+       "from the double root (ball of relative radius 2^-40), convergence factor at 64 bits; the root alone",
+       skip_arb, [](const bench_pair& bp, const precision& pr, const reference&) {
+         const arb_inputs in = inputs_of(bp, pr);
+         const auto p = bp.p;
+         bench_case c;
+         c.method = "arb_newton";
+         c.precision = pr.name;
+         c.pair = bp.name;
+         c.timed = [in] { benchmark::DoNotOptimize(arb_refine(in)); };
+         const unsigned digits = pr.digits;
+         c.pilot = [in, p, digits] {
+           auto r = arb_refine(in);
+           scoped_digits d(digits);
+           mpfr_real u;
+           arf_get_mpfr(u.backend().data(), arb_midref(r.root->v), MPFR_RNDN);
+           auto cst = resonant_constants_of<mpfr_real>(p, mpfr_real(1));
+           const lobe_frame<big_int> f{in.k, in.j, in.m};
+           outcome o;
+           o.theta = real_text(lobe_theta(cst, f, in.a, u));
+           o.evaluations = r.evaluations;
+           const slong acc = arb_rel_accuracy_bits(r.root->v);
+           if (r.status != ARB_CALC_SUCCESS || acc + 64 < in.prec)
+             o.note = "Arb status " + std::to_string(r.status) + ", enclosure of " + std::to_string(acc) + " bits";
+           return o;
+         };
+         return c;
+       }});
+  out.push_back(
+      {"arb_one_eval", "arb_one_eval",
+       "one Arb evaluation of q' and its derivative (two arb_sin_cos) at the first minimiser: Arb's counterpart "
+       "of one_eval",
+       skip_arb, [](const bench_pair& bp, const precision& pr, const reference&) {
+         const arb_inputs in = inputs_of(bp, pr);
+         struct state {
+           lobe_problem P;
+           arb_ball u;
+           arb_struct out[2];
+           state() {
+             arb_init(out + 0);
+             arb_init(out + 1);
+           }
+           ~state() {
+             arb_clear(out + 0);
+             arb_clear(out + 1);
+           }
+         };
+         auto st = std::make_shared<state>();
+         {
+           fmpz_int a(in.a), b(in.b), m(in.m);
+           st->P.set(a.v, b.v, m.v, in.prec);
+           arb_set_d(st->u.v, in.u0);
+         }
+         bench_case c;
+         c.method = "arb_one_eval";
+         c.precision = pr.name;
+         c.pair = bp.name;
+         const slong prec = in.prec;
+         c.timed = [st, prec] {
+           lobe_qdot(st->out, st->u.v, &st->P, 2, prec);
+           benchmark::DoNotOptimize(st->out);
+         };
+         c.pilot = [st, prec] {
+           lobe_qdot(st->out, st->u.v, &st->P, 2, prec);
+           outcome o;
+           o.evaluations = 1;
+           return o;
+         };
+         return c;
+       }});
+  return out;
+}
+
+#endif
+
+}  // namespace gyrores::bench
