@@ -182,6 +182,34 @@ TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
   CHECK_FALSE(r51.has_asy);  // x = 2/3 >= 1/2
 }
 
+TEST_CASE("sweep: paper-node verdicts agree with the minimiser thetas", "[sweep]") {
+  // Independent of the lobe-frame integers: the lobe of theta is round(a theta/(2 pi)) mod a,
+  // the paper's is round(a/(2b)) (both neighbours when a/(2b) is a half-integer).
+  sweep_config c = config(80);
+  int checked = 0;
+  for (auto p : coprime_pairs(3, 80)) {
+    if (p.degenerate()) continue;
+    const std::int64_t a = p.order(), b = p.delta();
+    auto lr = inscribed_lattice<double>(p, 1.0);
+    auto lobe = [&](double th) {
+      std::int64_t k = std::llround(double(a) * th / (2 * M_PI));
+      return ((k % a) + a) % a;
+    };
+    std::vector<std::int64_t> paper;
+    if ((a % (2 * b)) == b) paper = {(a - b) / (2 * b) % a, ((a - b) / (2 * b) + 1) % a};
+    else paper = {std::llround(double(a) / double(2 * b)) % a};
+    auto in_paper = [&](double th) { return std::find(paper.begin(), paper.end(), lobe(th)) != paper.end(); };
+    bool any = false;
+    for (double th : lr.minimisers) any = any || in_paper(th);
+    auto row = sweep_evaluate<double>(p, c);
+    INFO(p.str());
+    CHECK(row.first_at_paper_node == (in_paper(lr.theta_first) ? 1 : 0));
+    CHECK(row.paper_lobe_min == (any ? 1 : 0));
+    ++checked;
+  }
+  CHECK(checked == 809);  // non-degenerate pairs of order <= 80
+}
+
 TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
   temp_dir d;
   const sweep_config c = config(70);

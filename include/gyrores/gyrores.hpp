@@ -17,3 +17,4 @@
 #include "asymptotic.hpp"       // the paper's theta_asy, error bound, r_res_asy
 #include "pair_analysis.hpp"    // everything reported about one pair
 #include "certificate.hpp"      // interval certificates and their checker
+#include "sweep.hpp"            // sweeps over all pairs up to an order: checks, mergeable summary

@@ -441,7 +441,10 @@ inline std::string sweep_summary_text(const sweep_json& s) {
     os << ", shard " << shard.at(0).get<std::int64_t>() << "/" << shard.at(1).get<std::int64_t>();
   if (run.contains("merged_shards")) os << ", merged from " << run.at("merged_shards").get<std::int64_t>() << " shards";
   os << "; " << run.at("type").get<std::string>();
-  if (run.contains("threads") && !run.at("threads").is_null()) os << ", " << run.at("threads").get<unsigned>() << " threads";
+  if (run.contains("threads") && !run.at("threads").is_null()) {
+    const unsigned t = run.at("threads").get<unsigned>();
+    os << ", " << t << (t == 1 ? " thread" : " threads");
+  }
   os << "\n";
   char buf[128];
   std::snprintf(buf, sizeof buf, "%.2f s (%.0f pairs/s)", sec, sec > 0 ? double(pairs) / sec : 0.0);
@@ -756,6 +759,10 @@ sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files
   sweep_config cfg = cfg_in;
   if (cfg.min_order < 3) cfg.min_order = 3;
   sweep_validate(cfg);
+  // MPFR: the working precision (digits + 8 guard digits) is set once, before any thread starts
+  // and before the run description (which names the precision) is formed.
+  std::optional<scoped_digits> digits_scope;
+  if constexpr (is_variable_precision_v<T>) digits_scope.emplace(cfg.digits + 8);
   const sweep_json run = sweep_run_json<T>(cfg);
   sweep_json run_files = run;
   run_files["rows"] = files.rows_path.empty() ? sweep_json(nullptr)
@@ -883,8 +890,6 @@ sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files
   };
 
   sweep_outcome out;
-  std::optional<scoped_digits> digits_scope;
-  if constexpr (is_variable_precision_v<T>) digits_scope.emplace(cfg.digits + 8);  // once, before any thread
   try {
     out = sweep_run<T>(cfg, eo, on_block, fmt);
   } catch (...) {

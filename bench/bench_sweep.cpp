@@ -1,0 +1,84 @@
+// Sweep throughput: pairs per second of a summary-only sweep in double (sweep.hpp), with
+// Google Benchmark. Counters: pairs_per_s (wall clock) and pairs_per_cpu_s (process CPU time,
+// i.e. what the machine could do if it were idle; the bench machine is shared).
+//
+//   bench_sweep                                   orders <= 2000 (1, 2 threads), cross-check cost
+//   GYRORES_BENCH_SWEEP_FULL=1 bench_sweep --benchmark_filter=full
+//                                                 the speed target: every pair of order <= 10^4
+//                                                 (1.52e7 pairs), all checks, all cores, once
+// The same number comes from the CLI: `gyrores sweep --max-order 10000` prints pairs/s.
+// Arguments of each case: max_order, threads, checks (bit mask, sweep.hpp order), cross-check
+// limit. The work is deterministic (the enumeration), so there is no seed.
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <ctime>
+
+#include <gyrores/sweep.hpp>
+
+namespace {
+
+double process_cpu_seconds() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+void sweep_summary_only(benchmark::State& st) {
+  gyrores::sweep_config c;
+  c.max_order = st.range(0);
+  c.checks = gyrores::sweep_check_set(st.range(2));
+  c.cross_check_max_order = st.range(3);
+  gyrores::sweep_engine_options eo;
+  eo.threads = unsigned(st.range(1));
+  std::uint64_t pairs = 0;
+  double cpu = 0;
+  for (auto _ : st) {
+    gyrores::sweep_accumulator acc;
+    const double c0 = process_cpu_seconds();
+    auto out = gyrores::sweep_run<double>(c, eo, [&](gyrores::sweep_block& b) { acc.merge(b.summary); });
+    auto q = acc.quantiles();
+    cpu += process_cpu_seconds() - c0;
+    benchmark::DoNotOptimize(q.median);
+    pairs += out.done;
+  }
+  st.counters["pairs"] = double(pairs) / double(st.iterations());
+  st.counters["pairs_per_s"] = benchmark::Counter(double(pairs), benchmark::Counter::kIsRate);
+  st.counters["pairs_per_cpu_s"] = double(pairs) / cpu;
+}
+
+constexpr std::int64_t all = gyrores::sweep_all_checks;
+constexpr std::int64_t no_cross = gyrores::sweep_all_checks & ~(1u << int(gyrores::sweep_check::cross_check));
+constexpr std::int64_t cross_only = 1u << int(gyrores::sweep_check::cross_check);
+
+BENCHMARK(sweep_summary_only)
+    ->Name("sweep/M2000/no-cross-check")
+    ->Args({2000, 1, no_cross, 0})
+    ->Args({2000, 2, no_cross, 0})
+    ->ArgNames({"max_order", "threads", "checks", "xcheck"})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(sweep_summary_only)
+    ->Name("sweep/M300/cross-check-only")
+    ->Args({300, 2, cross_only, 300})
+    ->ArgNames({"max_order", "threads", "checks", "xcheck"})
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+// The speed target (1.52e7 pairs, once): only with GYRORES_BENCH_SWEEP_FULL=1.
+const bool full_registered = [] {
+  const char* e = std::getenv("GYRORES_BENCH_SWEEP_FULL");
+  if (e && *e && *e != '0')
+    benchmark::RegisterBenchmark("sweep/full/M10000/all-checks", sweep_summary_only)
+        ->Args({10000, 0, all, gyrores::sweep_cross_check_default_max_order})
+        ->ArgNames({"max_order", "threads", "checks", "xcheck"})
+        ->UseRealTime()
+        ->Iterations(1)
+        ->Unit(benchmark::kSecond);
+  return true;
+}();
+
+}  // namespace
+
+BENCHMARK_MAIN();
