@@ -26,8 +26,10 @@ struct headline {
 };
 
 // "ratio to best": time / the fastest time among rows of the same (pair, precision) whose
-// correct digits are within 1 of the most any row reached there.
-std::map<const measurement*, double> ratios_to_best(const std::vector<measurement>& rows);
+// correct digits are within 1 of the precision's nominal digits (or of the most any row reached
+// there, if fewer).
+std::map<const measurement*, double> ratios_to_best(const std::vector<measurement>& rows,
+                                                   const std::vector<precision>& precisions);
 
 std::vector<headline> compute_headlines(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs);
 
