@@ -9,7 +9,9 @@
 //                                                 the full report (bench/run writes
 //                                                 bench/RESULTS.md, results.csv and the plot)
 // Other options: --methods a,b  --pairs '(6,5),(9,4)'  --precisions double,mp1000 (subsets),
-// --python PATH (default $GYRORES_PYTHON or python3), --mpmath-script PATH, --no-mpmath, --list.
+// --python PATH (default $GYRORES_PYTHON or python3), --mpmath-script PATH, --no-mpmath, --list,
+// --check (exit 1 when a gyrores method fails or falls short of its precision's digits: the
+// ctest smoke test runs --quick --check).
 //
 // How a case is measured (speed_error/core.hpp): a pilot call computes the result, which is
 // scored against the reference (speed_error/reference.hpp); then Google Benchmark times the bare
@@ -56,7 +58,7 @@ using gyrores::big_int;
 namespace {
 
 struct options {
-  bool quick = false, list = false, no_mpmath = false;
+  bool quick = false, list = false, no_mpmath = false, check = false;
   std::string csv, report, plot_dir, python, mpmath_script = GYRORES_BENCH_MPMATH_SCRIPT;
   std::set<std::string> methods, pairs, precisions;
 };
@@ -91,7 +93,8 @@ void usage() {
       "                method,precision,pair,median_ns,correct_digits,evaluations\n"
       "  --report FILE the Markdown report (bench/RESULTS.md)\n"
       "  --plot-dir D  write D/speed_vs_error.gp (run gnuplot there for the SVG and PNG)\n"
-      "  --list        print the cases and skipped combinations, run nothing");
+      "  --list        print the cases and skipped combinations, run nothing\n"
+      "  --check       exit 1 if a gyrores method failed or fell short of its precision's digits");
 }
 
 options parse(int argc, char** argv) {
@@ -109,6 +112,7 @@ options parse(int argc, char** argv) {
     };
     if (a == "--quick") o.quick = true;
     else if (a == "--list") o.list = true;
+    else if (a == "--check") o.check = true;
     else if (a == "--no-mpmath") o.no_mpmath = true;
     else if (a == "--csv") o.csv = next();
     else if (a == "--report") o.report = next();
@@ -431,5 +435,25 @@ int main(int argc, char** argv) {
   }
   std::printf("\ntotal %.1f s (references %.1f s), load average %s -> %s\n", ctx.seconds, ctx.reference_seconds,
               ctx.load_before.c_str(), ctx.load_after.c_str());
+  if (opt.check) {
+    // The library's exact methods must deliver their precision: digits >= nominal - 1.5
+    // (certificates: at least the digits they claim).
+    int bad = 0;
+    const std::set<std::string> exact_methods{"exact", "newton_doubling", "toms748_local", "global", "certified"};
+    for (const auto& m : rows) {
+      if (!exact_methods.count(m.method)) continue;
+      double nominal = 0;
+      for (const auto& pr : precisions)
+        if (pr.name == m.precision) nominal = pr.digits;
+      const double need = m.method == "certified" ? nominal : nominal - 1.5;
+      if (m.failed || !(m.digits() >= need) || !(m.median_ns > 0)) {
+        std::printf("CHECK FAILED: %s %s %s: %s digits (need %.1f)%s\n", m.method.c_str(), m.precision.c_str(),
+                    m.pair.c_str(), format_digits(m.digits()).c_str(), need, m.failed ? (" " + m.note).c_str() : "");
+        ++bad;
+      }
+    }
+    std::printf("check: %d of the library's rows short of their precision\n", bad);
+    return bad ? 1 : 0;
+  }
   return 0;
 }
