@@ -1,5 +1,5 @@
 // gyrores sweep --max-order M [--min-order m] [--check LIST] [--out FILE] [--format csv|jsonl]
-//               [--summary FILE] [--threads N] [--shard I/N] [--resume] [--digits D] ...
+//               [--summary FILE] [--threads N] [--shard I/N] [--resume] [--digits D] [--json] ...
 // Visits every coprime pair with m <= tau + sigma <= M, checks the paper's claims per pair and
 // prints a summary; the engine and the file formats are in include/gyrores/sweep.hpp and
 // sweep_io.hpp (their header comments document rows, summary, resume state and merge).
@@ -53,7 +53,7 @@ struct sweep_args {
   std::int64_t max_order = 0, min_order = 3;
   std::string checks = "all", out, format, summary, shard = "0/1", state;
   unsigned threads = 0;
-  bool resume = false, quiet = false;
+  bool resume = false, quiet = false, json = false;
   int digits = 15;
   std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t examples = 5;
@@ -62,8 +62,12 @@ struct sweep_args {
 };
 
 std::string with_commas(std::uint64_t v) {
-  std::string s = std::to_string(v);
-  for (int i = int(s.size()) - 3; i > 0; i -= 3) s.insert(std::size_t(i), ",");
+  const std::string digits = std::to_string(v);
+  std::string s;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) s.push_back(',');
+    s.push_back(digits[i]);
+  }
   return s;
 }
 
@@ -104,10 +108,12 @@ class progress_printer {
       const double eta = rate > 0 ? double(p.total - std::min(p.done, p.total)) / rate : -1;
       std::string bar(30, ' ');
       for (int i = 0; i < int(frac * 30 + 1e-9) && i < 30; ++i) bar[std::size_t(i)] = '#';
-      std::snprintf(line, sizeof line, "[%s] %5.1f%%  %s/%s pairs  %.0f pairs/s  ETA %s", bar.c_str(), 100 * frac,
-                    with_commas(p.done).c_str(), with_commas(p.total).c_str(), rate, clock_text(eta).c_str());
+      std::snprintf(line, sizeof line, "[%s] %5.1f%%  %s/%s pairs  %s pairs/s  ETA %s", bar.c_str(), 100 * frac,
+                    with_commas(p.done).c_str(), with_commas(p.total).c_str(), with_commas(std::uint64_t(rate)).c_str(),
+                    clock_text(eta).c_str());
     } else {
-      std::snprintf(line, sizeof line, "%s pairs  %.0f pairs/s", with_commas(p.done).c_str(), rate);
+      std::snprintf(line, sizeof line, "%s pairs  %s pairs/s", with_commas(p.done).c_str(),
+                    with_commas(std::uint64_t(rate)).c_str());
     }
     if (tty_) std::fprintf(stderr, "\r%s\x1b[K", line);
     else std::fprintf(stderr, "gyrores sweep: %s\n", line);
@@ -186,7 +192,7 @@ std::string run_sweep(const sweep_args& a) {
                         " pairs; every finished pair is kept in the resume state '" + rep.state_path +
                         "': run the same command with --resume to continue");
   }
-  return sweep_summary_text(rep.summary);
+  return a.json ? rep.summary.dump(2) + "\n" : sweep_summary_text(rep.summary);
 }
 
 command_runner install_sweep(CLI::App& app) {
@@ -217,6 +223,7 @@ command_runner install_sweep(CLI::App& app) {
   sub->add_option("--max-pairs", a->max_pairs, "stop after this many pairs, leaving a resume state (0: no limit)")
       ->capture_default_str();
   sub->add_flag("--quiet", a->quiet, "no progress on stderr");
+  sub->add_flag("--json", a->json, "print the summary as JSON (the --summary schema) instead of text");
   return [a] { return run_sweep(*a); };
 }
 
