@@ -17,4 +17,7 @@
 #include "asymptotic.hpp"       // the paper's theta_asy, error bound, r_res_asy
 #include "pair_analysis.hpp"    // everything reported about one pair
 #include "certificate.hpp"      // interval certificates and their checker
+#include "coupling.hpp"         // any n: exact resonance test, min of H_q over a horizon, convergents
+#include "design.hpp"           // design problems (absorb/contain) and the Pareto front
+#include "figures.hpp"          // data behind the figures (trajectory, envelope, circles, energies)
 #include "sweep.hpp"            // sweeps over all pairs up to an order: checks, mergeable summary
