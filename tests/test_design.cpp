@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <numeric>
 #include <set>
@@ -385,6 +386,7 @@ TEST_CASE("cli pareto: CSV and JSON", "[pareto][cli]") {
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   CHECK(rows == int(j["front"].size()));
+  std::filesystem::remove_all(dir);
   auto bad = cli_run("pareto --max-order 40 --orientation sideways");
   CHECK(bad.status == 2);
   CHECK(bad.out.empty());
