@@ -124,6 +124,15 @@ TEST_CASE("huge pairs print exact integers and a lattice result", "[cli]") {
   CHECK(mantissa_digits(j["r_res"].get<std::string>()) == 40);
 }
 
+TEST_CASE("integers with leading zeros are decimal, not octal", "[cli]") {
+  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  auto r = run("pair 011 09 --json --digits 5");
+  REQUIRE(r.status == 0);
+  auto j = nlohmann::json::parse(r.out);
+  CHECK(j["tau"] == 11);
+  CHECK(j["sigma"] == 9);
+}
+
 TEST_CASE("degenerate pairs: r_res is exactly zero, first zero at pi/2", "[cli]") {
   if (std::string(GYRORES_CLI_PATH).empty()) return;
   auto r = run("pair 11 9 --json");

@@ -104,6 +104,9 @@ inline big_int parse_big_int(const std::string& text, const std::string& what) {
   for (std::size_t k = i; k < text.size(); ++k)
     if (text[k] < '0' || text[k] > '9')
       throw usage_error(what + " must be an integer, got '" + text + "'");
-  return big_int(text[0] == '+' ? text.substr(1) : text);
+  // Strip leading zeros: GMP would read "011" as octal.
+  std::size_t first = text.find_first_not_of('0', i);
+  std::string digits = first == std::string::npos ? "0" : text.substr(first);
+  return big_int(text[0] == '-' ? "-" + digits : digits);
 }
 }  // namespace gyrores
