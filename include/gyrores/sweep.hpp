@@ -545,17 +545,20 @@ struct sweep_accumulator {
 // Counting pairs (for progress and for checking merges)
 
 // Number of pairs with min_order <= tau + sigma <= max_order: sum of phi(a)/2 (phi sieve,
-// 8 bytes per order; max_order <= 2^31 enforced by the caller's patience, not here).
+// 4 bytes per order: callers keep max_order <= sweep_count_limit, 40 MB).
+inline constexpr std::int64_t sweep_count_limit = 10'000'000;
 inline std::uint64_t sweep_total_pairs(std::int64_t min_order, std::int64_t max_order) {
   if (min_order < 3) min_order = 3;
   if (max_order < min_order) return 0;
-  std::vector<std::int64_t> phi(std::size_t(max_order) + 1);
-  for (std::int64_t i = 0; i <= max_order; ++i) phi[std::size_t(i)] = i;
-  for (std::int64_t pr = 2; pr <= max_order; ++pr)
-    if (phi[std::size_t(pr)] == pr)
-      for (std::int64_t m = pr; m <= max_order; m += pr) phi[std::size_t(m)] -= phi[std::size_t(m)] / pr;
+  if (max_order > sweep_count_limit)
+    throw usage_error("sweep_total_pairs: orders beyond " + std::to_string(sweep_count_limit) + " are not counted");
+  std::vector<std::uint32_t> phi(std::size_t(max_order) + 1);
+  for (std::size_t i = 0; i < phi.size(); ++i) phi[i] = std::uint32_t(i);
+  for (std::size_t pr = 2; pr < phi.size(); ++pr)
+    if (phi[pr] == pr)
+      for (std::size_t m = pr; m < phi.size(); m += pr) phi[m] -= phi[m] / std::uint32_t(pr);
   std::uint64_t s = 0;
-  for (std::int64_t a = min_order; a <= max_order; ++a) s += std::uint64_t(phi[std::size_t(a)] / 2);
+  for (std::int64_t a = min_order; a <= max_order; ++a) s += phi[std::size_t(a)] / 2;
   return s;
 }
 // Pairs of shard i of n: positions p < total with p = i mod n.

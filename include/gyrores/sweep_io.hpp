@@ -697,11 +697,13 @@ inline sweep_json sweep_merge(const std::vector<std::string>& paths) {
   sweep_accumulator acc;
   acc.max_examples = max_examples;
   double seconds = 0;
-  const std::uint64_t total =
-      sweep_total_pairs(ident.at("min_order").get<std::int64_t>(), ident.at("max_order").get<std::int64_t>());
+  // Each shard must hold exactly its share of the pairs (counted when max_order <= sweep_count_limit).
+  const std::int64_t max_order = ident.at("max_order").get<std::int64_t>();
+  const bool counted = max_order <= sweep_count_limit;
+  const std::uint64_t total = counted ? sweep_total_pairs(ident.at("min_order").get<std::int64_t>(), max_order) : 0;
   for (auto& x : in) {
     const std::int64_t i = x.run.at("shard").at(0).get<std::int64_t>();
-    if (x.acc.pairs != sweep_shard_pairs(total, i, n))
+    if (counted && x.acc.pairs != sweep_shard_pairs(total, i, n))
       throw usage_error("'" + x.path + "' holds " + std::to_string(x.acc.pairs) + " pairs, shard " + std::to_string(i) +
                         "/" + std::to_string(n) + " has " + std::to_string(sweep_shard_pairs(total, i, n)));
     acc.merge(x.acc);
@@ -749,9 +751,6 @@ inline std::string sweep_default_state_path(const sweep_files& f) {
   if (!f.summary_path.empty()) return f.summary_path + ".resume";
   return "gyrores-sweep.resume";
 }
-
-// Orders up to this are counted exactly for progress and merges (phi sieve, 8 bytes/order).
-inline constexpr std::int64_t sweep_count_limit = 50'000'000;
 
 template <class T>
 sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files, const sweep_engine_options& eo_in,
