@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "gyrores/asymptotic.hpp"
-#include "gyrores/lattice.hpp"
-#include "gyrores/resonant.hpp"
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/model/resonant.hpp>
 
 using gyrores::big_int;
 using gyrores::mpfr_real;

@@ -14,7 +14,7 @@
 #include <cstdlib>
 #include <ctime>
 
-#include <gyrores/sweep.hpp>
+#include <gyrores/sweep/sweep.hpp>
 
 namespace {
 

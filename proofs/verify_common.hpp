@@ -30,10 +30,10 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/enumerate.hpp>
-#include <gyrores/interval.hpp>
-#include <gyrores/pair.hpp>
-#include <gyrores/real.hpp>
+#include <gyrores/model/enumerate.hpp>
+#include <gyrores/core/interval.hpp>
+#include <gyrores/model/pair.hpp>
+#include <gyrores/core/real.hpp>
 
 namespace gyrores::proofs {
 

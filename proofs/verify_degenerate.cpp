@@ -1,4 +1,4 @@
-// verify_degenerate: paper Thm. degenerate (MATH.md P3), for every pair up to --max-order,
+// verify_degenerate: paper Thm. degenerate (docs/mathematics.md §2, P3), for every pair up to --max-order,
 // independently of certify_pair (it reuses only the proof steps: lobe frames, basins, cover).
 //
 // The theorem is proved in proofs/README.md (P3) and proofs/global-minimality.md §1. Per pair
@@ -18,7 +18,7 @@
 // Cover strategy: "all-lobes" (every fast lobe bisected) when a <= 8 b, "slow-nodes" (Rayleigh
 // bound away from the slow nodes, the lobes at each node bisected) otherwise; both are the
 // library's proof::exclude_lobe with bound 0 (proofs/global-minimality.md §6, §7).
-#include <gyrores/certificate.hpp>
+#include <gyrores/certify/certificate.hpp>
 
 #include "verify_common.hpp"
 

@@ -1,4 +1,4 @@
-// verify_envelope: paper Prop. convexEnvelope (MATH.md P2), for every pair up to --max-order.
+// verify_envelope: paper Prop. convexEnvelope (docs/mathematics.md §2, P2), for every pair up to --max-order.
 //
 // Notation (proofs/README.md, P2). In units of rho0 the trajectory is
 //   x(theta) = (sin tau theta, w1 cos tau theta) + (sin sigma theta, w2 cos sigma theta),

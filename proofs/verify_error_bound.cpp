@@ -1,4 +1,4 @@
-// verify_error_bound: paper Thm. theta_asy and Thm. error_bound (MATH.md P6, P7), rigorously
+// verify_error_bound: paper Thm. theta_asy and Thm. error_bound (docs/mathematics.md §2, P6, P7), rigorously
 // for every pair up to --max-order.
 //
 // For x = b/a < 1/2 and each of the paper's fast nodes k = round(a/(2b)) (two on a tie, b = 1),
@@ -22,10 +22,10 @@
 //               f on [-pi/2, pi/2] or an exact zero at an end (integers); n/a otherwise: the
 //               lobe has an even number of roots, possibly none, and theta_c need not exist. [asserted]
 // The log gives, per lobe, the enclosure of ratio = |theta_c - theta_asy|/(pi^3 x^2/a) and of
-// its x -> 0 limit 2 C(s)/pi^3 = 2 tan^3 u/(3 pi^3 (1 + sec^2 u)) at u = u_asy (MATH.md §3).
+// its x -> 0 limit 2 C(s)/pi^3 = 2 tan^3 u/(3 pi^3 (1 + sec^2 u)) at u = u_asy (docs/mathematics.md §3).
 // Option --every K: log only every K-th pair (and every pair with a new largest ratio).
-#include <gyrores/asymptotic.hpp>
-#include <gyrores/certificate.hpp>
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/certify/certificate.hpp>
 
 #include <optional>
 

@@ -1,6 +1,6 @@
 // verify_minimisers: where and what the global minimisers of R are, for every pair up to
-// --max-order: paper Thm. globalMinimiser (MATH.md P4), the "first slow node" claim (P5) and the
-// structure claims of MATH.md §3 (minimiser count, m_min, location at the pass).
+// --max-order: paper Thm. globalMinimiser (docs/mathematics.md §2, P4), the "first slow node" claim (P5) and the
+// structure claims of docs/mathematics.md §3 (minimiser count, m_min, location at the pass).
 //
 // Each pair is certified by gyrores::certify_pair (proofs/global-minimality.md: interval Newton,
 // basin, symmetry images, cover of [0, 2 pi) by interval bisection), which proves that the
@@ -9,7 +9,7 @@
 // certificate (and only from it, plus exact integers and MPFI) the program decides:
 //
 //   S.count      the number of global minimisers is 2 for delta odd, 4 for delta = 0 mod 4, and
-//                R has exactly 2 zeros for delta = 2 mod 4 (MATH.md §3).                  [asserted]
+//                R has exactly 2 zeros for delta = 2 mod 4 (docs/mathematics.md §3).                  [asserted]
 //   S.m_min      min_N |a - 4N| is 0, 1, 2 for delta = 2 mod 4, odd, 0 mod 4 (integers).  [asserted]
 //   S.pass       every global minimiser lies in a frame whose strand offset |m| equals m_min, at
 //                u in (-pi/2, pi/2): within half a fast lobe of the pass of that strand by
@@ -34,8 +34,8 @@
 //   cert.check   (with --check) gyrores::check_certificate re-proves the certificate.       [asserted]
 //
 // Options: --check (run the independent checker too, ~doubles the time); --digits D (default 6).
-#include <gyrores/asymptotic.hpp>
-#include <gyrores/certificate.hpp>
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/certify/certificate.hpp>
 
 #include <optional>
 #include <set>
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     const bool check = opt.extra.count("check") > 0;
     const unsigned digits = opt.extra.count("digits") ? unsigned(std::stoul(opt.extra["digits"])) : 6u;
     run R("verify_minimisers",
-          "global minimisers: paper Thm. globalMinimiser (P4), first slow node (P5), MATH.md §3 structure", opt);
+          "global minimisers: paper Thm. globalMinimiser (P4), first slow node (P5), docs/mathematics.md §3 structure", opt);
     auto& c_count = R.add_claim("S.count", "2 global minimisers (delta odd), 4 (delta = 0 mod 4), 2 zeros (delta = 2 mod 4)", true);
     auto& c_mmin = R.add_claim("S.m_min", "min_N |a - 4N| = 0, 1, 2 for delta = 2 mod 4, odd, 0 mod 4", true);
     auto& c_pass = R.add_claim("S.pass", "every global minimiser is a q' root in a frame with |m| = m_min, within half a fast lobe of the pass", true);

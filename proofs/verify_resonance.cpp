@@ -1,4 +1,4 @@
-// verify_resonance: paper Prop. resonance (MATH.md P1), for every pair up to --max-order.
+// verify_resonance: paper Prop. resonance (docs/mathematics.md §2, P1), for every pair up to --max-order.
 //
 // The proof is exact algebra (proofs/README.md, P1): with a = tau + sigma, b = tau - sigma,
 //   a^2 - b^2 = 4 tau sigma                                            (integer identity)

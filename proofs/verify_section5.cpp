@@ -1,4 +1,4 @@
-// verify_section5: the paper's Section V (MATH.md P8) with exact values.
+// verify_section5: the paper's Section V (docs/mathematics.md §2, P8) with exact values.
 //
 // 1. Every number printed in Section V (and the pair named in Fig. 1) is recomputed from the
 //    paper's own definitions as an MPFI enclosure (or exact integers) and compared with the
@@ -20,8 +20,8 @@
 //    certified r_res is below that of (6, 5). For orders a >= 62 this follows from
 //    r_res <= pi m_min/(2a) <= pi/a < r_res(6, 5) (README P8), so --max-order 61 completes the proof
 //    that (6, 5) is the best containment pair under the beat condition.
-#include <gyrores/asymptotic.hpp>
-#include <gyrores/certificate.hpp>
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/certify/certificate.hpp>
 
 #include <optional>
 

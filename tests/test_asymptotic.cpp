@@ -1,4 +1,4 @@
-// The paper's lobe asymptotics (Thm. theta_asy, Thm. error_bound; MATH.md P6, P7, P8 case B),
+// The paper's lobe asymptotics (Thm. theta_asy, Thm. error_bound; docs/mathematics.md §2, P6, P7, P8 case B),
 // checked against independent references:
 //  - hard-coded values computed separately with mpmath at 70 digits (printed to 55) (findroot on u + tan u = s
 //    and on the naive q'(theta) = rho0 (sqrt(tau/sigma) cos tau theta + sqrt(sigma/tau) cos sigma theta));
@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "gyrores/asymptotic.hpp"
-#include "gyrores/enumerate.hpp"
-#include "gyrores/global_search.hpp"
-#include "test_support.hpp"
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/model/enumerate.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using gyrores::test::rel_error;
@@ -27,7 +27,7 @@ namespace {
 using P64 = resonant_pair<std::int64_t>;
 using PB = resonant_pair<big_int>;
 
-// Naive q'(theta) = dq/dt in the resonant time (MATH.md §1), in mpfr at the current precision.
+// Naive q'(theta) = dq/dt in the resonant time (docs/mathematics.md §1), in mpfr at the current precision.
 mpfr_real naive_qdot(long tau, long sigma, const mpfr_real& th, const mpfr_real& v) {
   mpfr_real t(tau), s(sigma);
   mpfr_real rho0 = v * sqrt(t * s) / (t + s);
@@ -190,7 +190,7 @@ TEST_CASE("asymptotic: P7 error bound over all coprime pairs with x < 1/2, order
   // limit constant grows with |s|, b = 1 (s = +-pi/2) is the worst case.
   // Also observed (and asserted): the paper's lobe carries a global minimiser iff |m| = m_min
   // (m = a - 2 k b); that is the case for only 692 of the 3157 lobes (2465 of 3058 pairs have
-  // none), e.g. (9,4) (MATH.md P5). Ties (two lobes) happen iff b = 1.
+  // none), e.g. (9,4) (docs/mathematics.md §2, P5). Ties (two lobes) happen iff b = 1.
   double max_ratio = 0;
   std::string argmax;
   std::size_t pairs = 0, lobes = 0, global = 0, violations = 0;
@@ -283,7 +283,7 @@ TEST_CASE("asymptotic: ratio and error for huge pairs in double", "[asymptotic][
 }
 
 TEST_CASE("asymptotic: r_res_asy relative error -> 0 along (n+1, n)", "[asymptotic][r_res]") {
-  // Observed closed form r_res ~ v x |sin u* tan u*|, u* + tan u* = pi/2 (MATH.md §3). Its
+  // Observed closed form r_res ~ v x |sin u* tan u*|, u* + tan u* = pi/2 (docs/mathematics.md §3). Its
   // relative error is ~ c x^2 with c = 1/2 + tan^2(u*)/6 = 0.62336 (derived here by expanding
   // the exact lobe formulas; part of it is the sqrt(1 - x^2) the closed form leaves out).
   scoped_digits d(50);
@@ -419,7 +419,7 @@ TEST_CASE("asymptotic: degenerate pairs", "[asymptotic][degenerate]") {
   }
 }
 
-TEST_CASE("asymptotic: (9,4) lobe is not the global minimiser (MATH.md P5)", "[asymptotic]") {
+TEST_CASE("asymptotic: (9,4) lobe is not the global minimiser (docs/mathematics.md §2, P5)", "[asymptotic]") {
   auto r = paper_asymptotics<double>(P64(9, 4), 1.0);
   REQUIRE(r.lobes.size() == 1);
   CHECK(r.lobes[0].k == 1);

@@ -3,10 +3,10 @@
 // honest certificates at 20, 100 and 1000 digits and rejects tampered ones.
 #include <catch2/catch.hpp>
 
-#include <gyrores/certificate.hpp>
-#include <gyrores/enumerate.hpp>
+#include <gyrores/certify/certificate.hpp>
+#include <gyrores/model/enumerate.hpp>
 
-#include "high_precision_reference.hpp"
+#include "testing/high_precision_reference.hpp"
 
 using namespace gyrores;
 

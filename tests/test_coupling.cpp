@@ -7,10 +7,10 @@
 #include <cmath>
 #include <numeric>
 
-#include <gyrores/coupling.hpp>
+#include <gyrores/design/coupling.hpp>
 #include <gyrores/gyrores.hpp>
 
-#include "cli_run.hpp"
+#include "testing/cli_run.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;

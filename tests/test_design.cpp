@@ -21,10 +21,10 @@
 #include <numeric>
 #include <set>
 
-#include <gyrores/design.hpp>
+#include <gyrores/design/design.hpp>
 #include <gyrores/gyrores.hpp>
 
-#include "cli_run.hpp"
+#include "testing/cli_run.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;

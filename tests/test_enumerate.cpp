@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
-#include <gyrores/enumerate.hpp>
+#include <gyrores/model/enumerate.hpp>
 
-#include "test_support.hpp"
+#include "testing/test_support.hpp"
 
 using gyrores::coprime_pairs;
 using pr = std::pair<std::int64_t, std::int64_t>;  // (tau, sigma)

@@ -16,10 +16,10 @@
 #include <set>
 #include <sstream>
 
-#include <gyrores/figures.hpp>
+#include <gyrores/design/figures.hpp>
 #include <gyrores/gyrores.hpp>
 
-#include "cli_run.hpp"
+#include "testing/cli_run.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;

@@ -2,7 +2,7 @@
 // independent brute-force reference of tests/reference.hpp (naive R(theta), dense scan, refinement
 // in float128 or MPFR; no lobe frames, no TOMS 748, no integer shortcut for degenerate pairs).
 //
-// Also: the paper's Section V numbers (MATH.md P8), recomputed from the paper's own definitions.
+// Also: the paper's Section V numbers (docs/mathematics.md §2, P8), recomputed from the paper's own definitions.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -13,15 +13,15 @@
 #include <utility>
 #include <vector>
 
-#include <gyrores/degenerate.hpp>
-#include <gyrores/enumerate.hpp>
-#include <gyrores/global_search.hpp>
-#include <gyrores/pair.hpp>
-#include <gyrores/real.hpp>
-#include <gyrores/resonant.hpp>
+#include <gyrores/inscribed/degenerate.hpp>
+#include <gyrores/model/enumerate.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/model/pair.hpp>
+#include <gyrores/core/real.hpp>
+#include <gyrores/model/resonant.hpp>
 
-#include "reference.hpp"
-#include "test_support.hpp"
+#include "testing/reference.hpp"
+#include "testing/test_support.hpp"
 
 using gyrores::float128;
 using gyrores::inscribed_global;
@@ -35,7 +35,7 @@ namespace {
 mpfr_real mabs(const mpfr_real& x) { return x < 0 ? mpfr_real(-x) : x; }
 mpfr_real mrel(const mpfr_real& x, const mpfr_real& ref) { return mabs(mpfr_real((x - ref) / ref)); }
 
-// Exact number of global minimisers expected (MATH.md §3; observed there, checked here):
+// Exact number of global minimisers expected (docs/mathematics.md §3; observed there, checked here):
 // delta = 2 mod 4: the two zeros pi/2, 3pi/2; delta odd: 2 (a mirror pair); delta = 0 mod 4: 4.
 std::size_t expected_minimisers(std::int64_t tau, std::int64_t sigma) {
   std::int64_t d = tau - sigma;
@@ -311,7 +311,7 @@ TEST_CASE("result fields, amplitude scaling, integer types and errors", "[global
   CHECK_NOTHROW(inscribed_global(p64(11, 9), 1.0, small));  // degenerate: decided exactly, no search
 }
 
-TEST_CASE("paper Section V numbers (MATH.md P8), recomputed from the paper's definitions", "[global][paper]") {
+TEST_CASE("paper Section V numbers (docs/mathematics.md §2, P8), recomputed from the paper's definitions", "[global][paper]") {
   scoped_digits d(50);
   const mpfr_real pi = boost::math::constants::pi<mpfr_real>();
   auto n_of = [](std::int64_t tau, std::int64_t sigma) {
@@ -428,7 +428,7 @@ TEST_CASE("paper Section V numbers (MATH.md P8), recomputed from the paper's def
     CHECK(r.t_first < pi / n);
   }
 
-  SECTION("MATH.md P5: for (9, 4) the global minimum is near 3 pi/5, not near the first slow node pi/5") {
+  SECTION("docs/mathematics.md §2, P5: for (9, 4) the global minimum is near 3 pi/5, not near the first slow node pi/5") {
     auto r = inscribed_global(p64(9, 4), mpfr_real(1));
     auto ref = gyrores::ref::reference_inscribed<mpfr_real>(9, 4, 160, mpfr_real("1e-30"), mpfr_real("1e-80"));
     CHECK(mrel(r.theta_first, ref.theta_first) < mpfr_real("1e-45"));

@@ -1,4 +1,4 @@
-// The hard cases of MATH.md §4 as one table-driven catalogue (STYLE practice 11), checked against
+// The hard cases of docs/mathematics.md §4 as one table-driven catalogue , checked against
 // the independent high-precision reference (tests/high_precision_reference.hpp).
 //
 // Rows: huge pairs (delta = 1 up to 10^30, which needs big_int), a pair whose sum overflows 64
@@ -23,12 +23,12 @@
 #include <iostream>
 #include <iomanip>
 
-#include "gyrores/cross_check.hpp"
-#include "gyrores/enumerate.hpp"
-#include "gyrores/global_search.hpp"
-#include "gyrores/lattice.hpp"
-#include "high_precision_reference.hpp"
-#include "test_support.hpp"
+#include <gyrores/inscribed/cross_check.hpp>
+#include <gyrores/model/enumerate.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/inscribed/lattice.hpp>
+#include "testing/high_precision_reference.hpp"
+#include "testing/test_support.hpp"
 
 using gyrores::big_int;
 using gyrores::mpfr_real;

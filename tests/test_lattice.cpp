@@ -1,6 +1,6 @@
 // The lattice method (lattice.hpp) against the global search (global_search.hpp), which assumes
 // nothing about where the minimum sits, and the structure the lattice method relies on
-// (MATH.md §3, *observed*): checked here on every coprime pair up to order 300 in double, up to
+// (docs/mathematics.md §3, *observed*): checked here on every coprime pair up to order 300 in double, up to
 // order 60 at 30 digits, and on random pairs up to order 3000 (fixed, printed seed; count scaled
 // by GYRORES_TEST_MULTIPLIER).
 #include <catch2/catch.hpp>
@@ -10,11 +10,11 @@
 #include <sstream>
 #include <random>
 
-#include "gyrores/cross_check.hpp"
-#include "gyrores/enumerate.hpp"
-#include "gyrores/global_search.hpp"
-#include "gyrores/lattice.hpp"
-#include "test_support.hpp"
+#include <gyrores/inscribed/cross_check.hpp>
+#include <gyrores/model/enumerate.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/inscribed/lattice.hpp>
+#include "testing/test_support.hpp"
 
 using gyrores::mpfr_real;
 using gyrores::resonant_pair;
@@ -56,7 +56,7 @@ template <class T> bool agree(const pair64& p, const T& tol, std::size_t* global
 
 }  // namespace
 
-// One sweep checks both the agreement and the observed structure claim (MATH.md §3): the
+// One sweep checks both the agreement and the observed structure claim (docs/mathematics.md §3): the
 // global search, which assumes nothing, finds exactly 2 minimisers for delta odd and 4 for
 // delta = 0 mod 4 (degenerate pairs: the 2 zeros pi/2, 3 pi/2).
 TEST_CASE("lattice = global search on every coprime pair up to order 300 (double, relative 1e-12); "

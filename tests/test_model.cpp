@@ -11,13 +11,13 @@
 #include <random>
 #include <vector>
 
-#include <gyrores/model.hpp>
-#include <gyrores/pair.hpp>
-#include <gyrores/real.hpp>
-#include <gyrores/resonant.hpp>
+#include <gyrores/model/model.hpp>
+#include <gyrores/model/pair.hpp>
+#include <gyrores/core/real.hpp>
+#include <gyrores/model/resonant.hpp>
 
-#include "reference.hpp"
-#include "test_support.hpp"
+#include "testing/reference.hpp"
+#include "testing/test_support.hpp"
 
 using gyrores::big_int;
 using gyrores::float128;

@@ -12,11 +12,12 @@
 #include <random>
 #include <string>
 
-#include <gyrores/enumerate.hpp>
-#include <gyrores/integer.hpp>
-#include <gyrores/pair.hpp>
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/model/enumerate.hpp>
+#include <gyrores/core/integer.hpp>
+#include <gyrores/model/pair.hpp>
 
-#include "test_support.hpp"
+#include "testing/test_support.hpp"
 
 using gyrores::big_int;
 using gyrores::resonant_pair;

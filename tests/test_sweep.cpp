@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/sweep_io.hpp>
+#include <gyrores/io/sweep_io.hpp>
 
 using namespace gyrores;
 
@@ -155,7 +155,7 @@ TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]"
 
 TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
   sweep_config c = config(100);
-  // (9,4): the global minimum is near 3 pi/5, not in the lobe of pi/5 (MATH.md P5).
+  // (9,4): the global minimum is near 3 pi/5, not in the lobe of pi/5 (docs/mathematics.md §2, P5).
   auto r94 = sweep_evaluate<double>(resonant_pair<std::int64_t>(9, 4), c);
   REQUIRE_FALSE(r94.failed);
   CHECK(r94.status[int(sweep_check::paper_node)] == sweep_status::fail);

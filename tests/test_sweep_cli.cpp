@@ -18,7 +18,7 @@
 #include <vector>
 #include <algorithm>
 
-#include <gyrores/sweep_io.hpp>
+#include <gyrores/io/sweep_io.hpp>
 
 #ifndef GYRORES_CLI_PATH
 #define GYRORES_CLI_PATH ""

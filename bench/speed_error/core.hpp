@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "gyrores/pair.hpp"
-#include "gyrores/real.hpp"
+#include <gyrores/model/pair.hpp>
+#include <gyrores/core/real.hpp>
 
 namespace gyrores::bench {
 

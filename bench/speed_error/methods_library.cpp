@@ -5,10 +5,10 @@
 #include <sstream>
 
 #include "case_support.hpp"
-#include "gyrores/asymptotic.hpp"
-#include "gyrores/certificate.hpp"
-#include "gyrores/global_search.hpp"
-#include "gyrores/lattice.hpp"
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/certify/certificate.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/inscribed/lattice.hpp>
 #include "methods.hpp"
 #include "reference.hpp"
 
@@ -34,7 +34,7 @@ namespace {
 // ---- computations -------------------------------------------------------------------------
 
 // The observed closed form r_res_asy = v x |sin u* tan u*|, u* + tan u* = pi m_min/(2b)
-// (asymptotic.hpp, MATH.md §3), alone: one root of u + tan u = s.
+// (asymptotic.hpp, docs/mathematics.md §3), alone: one root of u + tan u = s.
 template <class T, pair_integer I> T r_res_asy_only(const resonant_pair<I>& p) {
   using std::fabs;
   using std::sin;
@@ -201,7 +201,7 @@ std::vector<method_def> library_methods(const run_config& cfg) {
        }});
 
   out.push_back({"r_res_asy", "r_res_asy",
-                 "the observed closed form r_res_asy = v x |sin u* tan u*|, u* + tan u* = pi m_min/(2b) (MATH.md §3, "
+                 "the observed closed form r_res_asy = v x |sin u* tan u*|, u* + tan u* = pi m_min/(2b) (docs/mathematics.md §3, "
                  "asymptotic.hpp): one root of u + tan u = s; heuristic",
                  skip_asymptotic, [](const bench_pair& bp, const precision& pr, const reference&) {
                    return dispatch_real(pr, [&](auto tag) {

@@ -22,7 +22,7 @@
 #include <memory>
 
 #include "case_support.hpp"
-#include "gyrores/lattice.hpp"
+#include <gyrores/inscribed/lattice.hpp>
 #include "reference.hpp"
 #endif
 

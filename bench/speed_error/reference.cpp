@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "gyrores/lattice.hpp"
-#include "high_precision_reference.hpp"  // tests/: the independent reference
+#include <gyrores/inscribed/lattice.hpp>
+#include "testing/high_precision_reference.hpp"  // src/testing/: the independent reference
 
 namespace gyrores::bench {
 

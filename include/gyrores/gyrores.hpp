@@ -1,23 +1,30 @@
-// Umbrella header: the whole library, in the order the data flows.
+// Umbrella header: the whole mathematical library, layer by layer in the order the data flows
+// (docs/architecture.md). File and JSON I/O is the separate io/ part: include <gyrores/io/...>.
 #pragma once
-#include "error.hpp"          // usage_error (bad input), compute_error (could not compute honestly)
-#include "integer.hpp"        // int64/int128/big_int helpers: gcd, v2, inverse mod
-#include "pair.hpp"           // resonant_pair<I>: number theory of (tau, sigma)
-#include "enumerate.hpp"      // coprime_pairs: lazy enumeration by order
-#include "real.hpp"           // real types (double ... mpfr_real, mpfi_real), conversions
-#include "model.hpp"          // the model for any real n: frequencies, impulse response, energies, envelope
-#include "resonant.hpp"       // resonant parametrisation and exact local (lobe-frame) coordinates
-#include "roots.hpp"          // the TOMS 748 wrapper
-#include "result.hpp"         // inscribed_result<T>
-#include "degenerate.hpp"     // delta = 2 mod 4: r_res = 0 by integer arithmetic
-#include "global_search.hpp"  // reference method: all critical points
-#include "lattice.hpp"        // O(log tau) method for any pair
-#include "cross_check.hpp"      // lattice vs global search
-#include "decimal.hpp"          // exact decimal output, Ziv rounding test
-#include "asymptotic.hpp"       // the paper's theta_asy, error bound, r_res_asy
-#include "pair_analysis.hpp"    // everything reported about one pair
-#include "certificate.hpp"      // interval certificates and their checker
-#include "coupling.hpp"         // any n: exact resonance test, min of H_q over a horizon, convergents
-#include "design.hpp"           // design problems (absorb/contain) and the Pareto front
-#include "figures.hpp"          // data behind the figures (trajectory, envelope, circles, energies)
-#include "sweep.hpp"            // sweeps over all pairs up to an order: checks, mergeable summary
+// core: errors, integers, reals, decimal text, intervals, roots, precision and verified digits
+#include <gyrores/core/error.hpp>            // usage_error (bad input), compute_error (could not compute honestly)
+#include <gyrores/core/integer.hpp>          // int64/int128/big_int helpers: gcd, v2, inverse mod
+#include <gyrores/core/real.hpp>             // real types (double ... mpfr_real, mpfi_real), conversions
+#include <gyrores/core/decimal.hpp>          // exact decimal output, Ziv rounding test, decimal input
+#include <gyrores/core/interval.hpp>         // MPFI helpers with tri-state decisions
+#include <gyrores/core/roots.hpp>            // the TOMS 748 wrapper, safeguarded Newton
+// model: pairs, enumeration, the model for any n, resonant frames
+#include <gyrores/model/pair.hpp>            // resonant_pair<I>: number theory of (tau, sigma)
+#include <gyrores/model/enumerate.hpp>       // coprime_pairs: lazy enumeration by order
+#include <gyrores/model/model.hpp>           // the model for any real n: frequencies, impulse response, envelope
+#include <gyrores/model/resonant.hpp>        // resonant parametrisation and exact local (lobe-frame) coordinates
+// inscribed radius: degenerate pairs, global search, lattice, asymptotics, analysis
+#include <gyrores/inscribed/result.hpp>      // inscribed_result<T>
+#include <gyrores/inscribed/degenerate.hpp>  // delta = 2 mod 4: r_res = 0 by integer arithmetic
+#include <gyrores/inscribed/global_search.hpp>  // reference method: all critical points
+#include <gyrores/inscribed/lattice.hpp>     // O(log tau) method for any pair
+#include <gyrores/inscribed/cross_check.hpp> // lattice vs global search
+#include <gyrores/inscribed/asymptotic.hpp>  // the paper's theta_asy, error bound, r_res_asy
+#include <gyrores/inscribed/pair_analysis.hpp>  // everything reported about one pair
+// certificates
+#include <gyrores/certify/certificate.hpp>   // interval certificates and their checker
+// design, figures data, sweeps
+#include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
+#include <gyrores/design/design.hpp>         // design problems (absorb/contain) and the Pareto front
+#include <gyrores/design/figures.hpp>        // data behind the figures (trajectory, envelope, circles, energies)
+#include <gyrores/sweep/sweep.hpp>           // sweeps over all pairs up to an order: checks, mergeable summary

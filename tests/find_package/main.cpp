@@ -1,5 +1,5 @@
-#include <gyrores/pair.hpp>
-#include <gyrores/degenerate.hpp>
+#include <gyrores/model/pair.hpp>
+#include <gyrores/inscribed/degenerate.hpp>
 
 int main() {
   gyrores::resonant_pair<std::int64_t> p(11, 9);

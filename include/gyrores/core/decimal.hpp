@@ -1,0 +1,81 @@
+// Decimal input and output with every printed digit accounted for.
+//
+// real_to_mpfr: exact conversion of any supported real into an mpfr_real (no rounding: the
+// target precision is raised to hold every bit). format_scientific: correctly rounded
+// scientific notation with D significant digits, by MPFR, to nearest by default or in a given
+// direction (outward ends of enclosures). digits_settled: Ziv's test: given a value known to
+// within a relative error e, the D-digit rounding is certain only if both ends of
+// [v(1-e), v(1+e)] round to the same string. parse_big_int, real_from_decimal: decimal input.
+#pragma once
+#include <mpfr.h>
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/real.hpp>
+
+namespace gyrores {
+
+// Exact copy of v as an mpfr_real (precision >= the bits of T).
+template <class T> mpfr_real real_to_mpfr(const T& v) {
+  mpfr_real r;
+  if constexpr (is_mpfr_v<T>) {
+    r = v;  // copies precision and value
+  } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, long double>) {
+    r.precision(20);  // 68 bits >= the 64 of long double
+    mpfr_set_ld(r.backend().data(), static_cast<long double>(v), MPFR_RNDN);
+  } else if constexpr (std::is_same_v<T, float128>) {
+    // Three doubles hold the 113 bits of a float128 exactly (53 + 53 + 53 >= 113).
+    double hi = static_cast<double>(v);
+    float128 rest = v - float128(hi);
+    double mid = static_cast<double>(rest);
+    double lo = static_cast<double>(rest - float128(mid));
+    mpfr_real acc;
+    acc.precision(200);
+    mpfr_set_d(acc.backend().data(), hi, MPFR_RNDN);
+    mpfr_add_d(acc.backend().data(), acc.backend().data(), mid, MPFR_RNDN);
+    mpfr_add_d(acc.backend().data(), acc.backend().data(), lo, MPFR_RNDN);
+    return acc;
+  } else {
+    r = mpfr_real(v.str(0, std::ios_base::scientific));
+  }
+  return r;
+}
+
+// Scientific notation d.ddd...e+XX with `digits` significant digits (at least 1), correctly
+// rounded in direction `rnd` (MPFR_RNDN: to nearest; MPFR_RNDD/RNDU: down/up, for the ends of
+// an enclosure). Zero prints as 0.000...e+00. Precondition: v finite.
+std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rnd = MPFR_RNDN);
+
+// True when every value within a relative `rel_err` of v rounds to the same `digits`-digit
+// string as v (Ziv's rounding test). Exact zero (rel_err irrelevant) is settled.
+bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits);
+
+// Parse a decimal integer (optional sign, digits only, any size; leading zeros are decimal, not
+// an octal prefix). Throws usage_error naming `what`.
+big_int parse_big_int(const std::string& text, const std::string& what);
+
+// Parse a decimal real (e.g. "1", "0.25", "1e-3") into T, correctly rounded by T's parser.
+// Throws usage_error naming `what` for anything else.
+template <class T> T real_from_decimal(const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  if (text.empty()) throw usage_error(what + " must be a number, got ''");
+  std::strtold(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0')
+    throw usage_error(what + " must be a number, got '" + text + "'");
+  for (char ch : text)
+    if (!(std::isdigit((unsigned char)ch) || ch == '.' || ch == 'e' || ch == 'E' || ch == '+' || ch == '-'))
+      throw usage_error(what + " must be a decimal number, got '" + text + "'");
+  if constexpr (std::is_floating_point_v<T>) {
+    if constexpr (std::is_same_v<T, double>) return std::strtod(text.c_str(), nullptr);
+    else return std::strtold(text.c_str(), nullptr);
+  } else {
+    return T(text);
+  }
+}
+
+}  // namespace gyrores

@@ -1,0 +1,24 @@
+// Exact rationals (GMP): parsing decimals and fractions exactly, printing them, perfect squares.
+// A decimal such as "0.2886751345948" is the exact rational 2886751345948/10^13, never a double.
+#pragma once
+#include <boost/multiprecision/gmp.hpp>
+#include <string>
+
+#include <gyrores/core/integer.hpp>
+
+namespace gyrores {
+
+using big_rational = boost::multiprecision::mpq_rational;
+
+// Parse an exact rational: an integer, a fraction "P/Q" (integers, Q != 0) or a decimal
+// ("0.25", "-1.5e-3", "2E+4"; exponents up to 6 digits, |shift| <= 100000). Throws usage_error
+// naming `what` for anything else.
+big_rational parse_rational(const std::string& text, const std::string& what);
+
+// Exact text of a rational: "P/Q", or "P" when Q = 1.
+std::string rational_str(const big_rational& r);
+
+// True when v >= 0 is a perfect square; root receives floor(sqrt(v)).
+bool int_is_square(const big_int& v, big_int& root);
+
+}  // namespace gyrores

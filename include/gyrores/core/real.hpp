@@ -1,0 +1,133 @@
+// Real types gyrores runs on, and exact-as-possible conversions into them.
+//
+// Every numerical routine is a template on the real type T. Supported: double, long double,
+// float128, cpp_bin_float_*, mpfr_real (MPFR, precision chosen at run time) and, for
+// certificates, mpfi_real (MPFI intervals). mpfr_real and mpfi_real use expression templates
+// off, so `auto` in generic code holds a value, not an expression.
+#pragma once
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <boost/multiprecision/float128.hpp>
+#include <boost/multiprecision/mpfi.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include <gyrores/core/integer.hpp>
+
+namespace gyrores {
+
+using float128 = boost::multiprecision::float128;
+using mpfr_real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
+                                                boost::multiprecision::et_off>;
+using mpfi_real = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>,
+                                                boost::multiprecision::et_off>;
+
+template <class T> inline constexpr bool is_mpfr_v = std::is_same_v<T, mpfr_real>;
+template <class T> inline constexpr bool is_mpfi_v = std::is_same_v<T, mpfi_real>;
+template <class T> inline constexpr bool is_variable_precision_v = is_mpfr_v<T> || is_mpfi_v<T>;
+
+// Working precision of T in bits (for mpfr/mpfi: the current default precision).
+template <class T> unsigned real_bits() {
+  if constexpr (is_variable_precision_v<T>)
+    return unsigned(boost::multiprecision::detail::digits10_2_2(T::default_precision()));
+  else
+    return unsigned(std::numeric_limits<T>::digits);
+}
+
+// Unit roundoff 2^(1 - bits) of T at the current precision.
+template <class T> T real_epsilon() {
+  using std::ldexp;
+  return ldexp(T(1), 1 - int(real_bits<T>()));
+}
+
+// Sets the default decimal precision of mpfr_real and mpfi_real for a scope, restoring it after.
+// Boost 1.74 keeps this default in one process-wide variable: do not change it concurrently
+// from several threads.
+class scoped_digits {
+ public:
+  explicit scoped_digits(unsigned digits10)
+      : old_r_(mpfr_real::default_precision()), old_i_(mpfi_real::default_precision()) {
+    mpfr_real::default_precision(digits10);
+    mpfi_real::default_precision(digits10);
+  }
+  ~scoped_digits() {
+    mpfr_real::default_precision(old_r_);
+    mpfi_real::default_precision(old_i_);
+  }
+  scoped_digits(const scoped_digits&) = delete;
+  scoped_digits& operator=(const scoped_digits&) = delete;
+
+ private:
+  unsigned old_r_, old_i_;
+};
+
+// Binary and decimal precision, converted with one pair of constants: log10(2) rounded down and
+// log2(10) rounded up to 18 digits, in 128-bit integer arithmetic. The floors and ceilings are
+// exact for every precision up to 3 * 10^6 bits and 10^6 digits (checked against 60-digit
+// logarithms; tests/test_core.cpp checks a sample).
+// floor(bits log10 2): the decimal digits that `bits` bits always carry.
+inline unsigned bits_to_digits10(unsigned bits) {
+  constexpr unsigned __int128 log10_2 = 301029995663981195ull;  // 10^-18 units
+  return unsigned(bits * log10_2 / 1000000000000000000ull);
+}
+// ceil(digits log2 10): the bits that carry `digits` decimal digits.
+inline unsigned digits10_to_bits(unsigned digits) {
+  constexpr unsigned __int128 log2_10 = 3321928094887362348ull;  // 10^-18 units
+  return unsigned((digits * log2_10 + 999999999999999999ull) / 1000000000000000000ull);
+}
+// Decimal digits to request from MPFR (whose precision Boost sets in digits) so that it carries
+// at least `bits` bits.
+inline unsigned digits10_for_bits(unsigned bits) { return bits_to_digits10(bits) + 1u; }
+
+template <class T> T real_pi() { return boost::math::constants::pi<T>(); }
+
+// Integers to T with one rounding where T allows it (MPFR: exact rounding; double: via the
+// built-in conversion; others via decimal text, correctly rounded by their parsers).
+template <class T> T real_from_int(const big_int& v) {
+  if constexpr (is_variable_precision_v<T>) {
+    return T(v);
+  } else {
+    if (boost::multiprecision::msb(boost::multiprecision::abs(v == 0 ? big_int(1) : v)) < 62)
+      return T(std::int64_t(v));
+    if constexpr (std::is_floating_point_v<T>)
+      return T(std::stold(v.str()));
+    else
+      return T(v.str());
+  }
+}
+template <class T> T real_from_int(std::int64_t v) { return T(v); }
+template <class T> T real_from_int(int128 v) {
+  if (v >= std::numeric_limits<std::int64_t>::min() && v <= std::numeric_limits<std::int64_t>::max())
+    return T(std::int64_t(v));
+  if constexpr (std::is_floating_point_v<T>) return T(v);  // built-in rounding conversion
+  else return real_from_int<T>(to_big(v));
+}
+
+// p/q in T (two integer roundings and one division: relative error <= 1.5 ulp).
+template <class T, class I> T real_from_ratio(const I& p, const I& q) {
+  return real_from_int<T>(p) / real_from_int<T>(q);
+}
+
+// Converting between real types (e.g. a double scout root into mpfr).
+template <class To, class From> To real_cast(const From& v) {
+  if constexpr (std::is_same_v<To, From>) return v;
+  else if constexpr (std::is_floating_point_v<From>) return To(v);
+  else if constexpr (std::is_floating_point_v<To>) return static_cast<To>(v);
+  else return To(v);
+}
+
+// Type name for messages and JSON.
+template <class T> std::string real_type_name() {
+  if constexpr (std::is_same_v<T, double>) return "double";
+  else if constexpr (std::is_same_v<T, long double>) return "long double";
+  else if constexpr (std::is_same_v<T, float128>) return "float128";
+  else if constexpr (is_mpfr_v<T>) return "mpfr(" + std::to_string(real_bits<T>()) + " bits)";
+  else if constexpr (is_mpfi_v<T>) return "mpfi(" + std::to_string(real_bits<T>()) + " bits)";
+  else return "binary" + std::to_string(real_bits<T>());
+}
+
+}  // namespace gyrores

@@ -1,0 +1,334 @@
+// Exact inscribed radius for any coprime pair in O(log tau): the lattice method (docs/mathematics.md §3).
+//
+// On the torus (p1, p2) = (tau theta, sigma theta), (q, q') vanishes only at P+ = (pi/2, -pi/2)
+// and P- = (-pi/2, pi/2). The closed line passes P+ on strands at offsets (pi/2)(a - 4N)/|(tau,
+// sigma)|; the smallest |a - 4N| = m_min is 0, 1 or 2 by a mod 4. In lobe-frame terms
+// (resonant.hpp) a pass with offset m is a frame (k, j) with (2j+1) a - 2 k b = m; for m = m_min
+// it is found by one modular inverse (extended Euclid):
+//   delta odd:       2j+1 = a^{-1} mod 2b,            k = ((2j+1) a - 1)/(2b)
+//   delta = 0 mod 4: 2j+1 = (a/2)^{-1} mod (b/2)*2,   k = ((2j+1) a/2 - 1)/b
+// The global minimiser is the root of q' = 0 near that pass (u near 0 in the frame):
+//   x < 1/2: the root of q' in u in [-pi/2, pi/2] (q' changes sign there: f(-pi/2) = x cos(mu + x pi/2)
+//            > 0 > -x cos(mu - x pi/2) = f(pi/2) since |mu| + x pi/2 < pi/2);
+//   x >= 1/2: the root of q' in the interval [i pi/tau, (i+1) pi/tau] that contains the pass
+//            theta = 2 k pi/a (each such interval holds exactly one root, global_search.hpp).
+//            Observed on all 142506 pairs with x >= 1/2 up to order 1500 (the two neighbours on
+//            each side never do better); lattice_options::window_always solves all five.
+// The other minimisers are the exact images under theta -> 2 pi - theta (and theta -> theta + pi
+// when tau, sigma are odd): 2 minimisers for delta odd, 4 for delta = 0 mod 4.
+// STATUS: that the minimiser sits there is *observed* (docs/mathematics.md §3), not proved; the library
+// cross-checks it against the global search (tests: every pair up to order 300, and `gyrores
+// pair` for orders up to its documented threshold).
+//
+// Precision: the root is scouted in double (MPFR at 64 bits when the pair exceeds double's
+// exponent range) with TOMS 748, then polished in T by Newton's method; for mpfr_real with
+// precision doubling, so the last step is the only one at full precision.
+#pragma once
+#include <algorithm>
+#include <memory>
+#include <tuple>
+#include <vector>
+
+#include <gyrores/inscribed/degenerate.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/model/resonant.hpp>
+#include <gyrores/inscribed/result.hpp>
+#include <gyrores/core/roots.hpp>
+
+namespace gyrores {
+
+struct lattice_options {
+  // Solve the q' roots in the five intervals around the pass (for any x) and keep the smallest R,
+  // instead of the single bracket of the default.
+  bool window_always = false;
+};
+
+namespace detail {
+
+// The pass frame with offset m = +m_min (m_min = 1 or 2). L: int128 or big_int.
+template <class L> lobe_frame<L> lattice_pass_frame(const L& a, const L& b) {
+  if (int_mod(b, L(2)) == 1) {
+    L mod = 2 * b;
+    L odd = mod == 2 ? L(1) : int_inverse_mod(a, mod);  // odd since a * odd = 1 mod an even number
+    L j = (odd - 1) / 2;
+    L k = ((2 * j + 1) * a - 1) / (2 * b);
+    return {k, j, L(1)};
+  }
+  // delta = 0 mod 4: a = 2a', b = 2b', a' odd, b' even; (2j+1) a' - 2 k b' = 1.
+  L ah = a / 2, bh = b / 2;
+  L mod = 2 * bh;
+  L odd = int_inverse_mod(ah, mod);
+  L j = (odd - 1) / 2;
+  L k = ((2 * j + 1) * ah - 1) / (2 * bh);
+  return {k, j, L(2)};
+}
+
+template <class S> struct scout_root {
+  S u, radius_sq;
+  std::uintmax_t evaluations;
+};
+
+// Solve q' = 0 in frame f on [ulo, uhi] in the scout type S.
+template <class S, class L>
+scout_root<S> lattice_solve(const resonant_constants<S>& c, const lobe_frame<L>& f, const L& a, const S& ulo,
+                            const S& uhi) {
+  auto fr = lobe_frame_real_of(c, f, a);
+  auto fn = [&](const S& u) {
+    using std::cos;
+    using std::sin;
+    S w = fr.mu - c.x * u;
+    return S(cos(u) * sin(w) - c.x * sin(u) * cos(w));
+  };
+  auto root = root_bracketed(fn, ulo, uhi, fn(ulo), fn(uhi), default_root_tolerance<S>(lobe_root_floor(fr)),
+                             "lattice (q' = 0)");
+  S q = lobe_eval(c, fr, root.root).q;  // |q| alone at a q' root (resonant.hpp)
+  return {root.root, q * q, root.evaluations + 2};
+}
+
+template <class L> struct lattice_candidate_site {
+  lobe_frame<L> frame;
+  L lo_num, hi_num, den;  // bracket as theta = pi * num / den (window mode), or den = 0: u in [-pi/2, pi/2]
+};
+
+// Candidate brackets for the minimiser (see the header comment).
+template <class L> std::vector<lattice_candidate_site<L>> lattice_sites(const L& tau, const L& a, const L& b,
+                                                                        bool window, bool five = true) {
+  auto pass = lattice_pass_frame(a, b);
+  if (!window) return {{pass, L(0), L(0), L(0)}};
+  // Interval containing theta_pass = 2 k pi/a, in units pi/tau: i = floor(2 k tau / a).
+  L ic = int_floor_div(L(2 * pass.k * tau), a);
+  std::vector<lattice_candidate_site<L>> out;
+  L den = 2 * tau;
+  const L reach = five ? L(2) : L(0);
+  for (L i = ic - reach; i <= ic + reach; ++i) {
+    L centre = 2 * i + 1;
+    out.push_back({lobe_frame_near(a, b, centre, den), L(centre - 1), L(centre + 1), den});
+  }
+  return out;
+}
+
+template <class S, class L>
+scout_root<S> lattice_solve_site(const resonant_constants<S>& c, const lattice_candidate_site<L>& s, const L& a) {
+  if (s.den == 0) {
+    // x < 1/2: f(-pi/2) = x cos(mu + x pi/2) > 0 > f(pi/2). Safeguarded Newton from the
+    // small-angle root of u + tan u = mu/x (u ~ mu/(2x)), TOMS 748 if it does not converge.
+    S h = c.pi / 2;
+    auto fr = lobe_frame_real_of(c, s.frame, a);
+    S floor = lobe_root_floor(fr);
+    S u0 = fr.mu / (2 * c.x);
+    if (u0 > h * S(0.9)) u0 = h * S(0.9);
+    if (u0 < -h * S(0.9)) u0 = -h * S(0.9);
+    S q_last = 0;
+    auto fdf = [&](const S& u) {
+      auto e = lobe_qdot_newton(c, fr.mu, u);
+      q_last = c.v * c.s1mx2 * e.su * e.sw;
+      return std::pair<S, S>{e.f, e.df};
+    };
+    newton_result<S> nr;
+    if (root_newton_safeguarded(fdf, S(-h), h, +1, u0, floor, nr))
+      return {nr.root, q_last * q_last, nr.evaluations};  // |q| at the last point: stationary
+    return lattice_solve(c, s.frame, a, S(-h), h);
+  }
+  return lattice_solve(c, s.frame, a, lobe_u_at(c, s.frame, a, s.lo_num, s.den), lobe_u_at(c, s.frame, a, s.hi_num, s.den));
+}
+
+// Newton polish of q' = 0 in frame f from u0 (accurate to about start_bits), in T. For
+// mpfr_real the precision doubles up to the current default, so only the last step runs at full
+// precision. Returns u and R; R comes from the last evaluation, at a point within |step| of the
+// root, and R is stationary there (q' = 0), so its error is O(step^2).
+template <class T> struct polished {
+  T u, radius_sq;
+  std::uintmax_t evaluations;
+};
+
+template <class T> void set_working_precision(T& v) {
+  if constexpr (is_mpfr_v<T>) v.precision(T::default_precision());
+}
+
+template <class T, class L, pair_integer I>
+polished<T> lattice_polish(const resonant_pair<I>& p, const T& v, const lobe_frame<L>& f, const L& a, const T& u0,
+                           unsigned start_bits) {
+  using std::fabs;
+  using std::ldexp;
+  std::uintmax_t evals = 0;
+  T u = u0;
+  auto newton_step = [&](const resonant_constants<T>& c, const T& mu, T& rsq) {
+    auto e = lobe_qdot_newton(c, mu, u);
+    ++evals;
+    T q = c.v * c.s1mx2 * e.su * e.sw;  // |q| alone at a q' root (resonant.hpp)
+    rsq = q * q;
+    T step = e.f / e.df;
+    u -= step;
+    return step;
+  };
+  if constexpr (is_mpfr_v<T>) {
+    // Lower levels: bits_full/2 + 16, its half + 16, ... down to twice the start accuracy.
+    std::vector<unsigned> ladder;
+    for (unsigned b = real_bits<T>() / 2 + 16; b > 2 * start_bits; b = b / 2 + 16) ladder.push_back(b);
+    std::reverse(ladder.begin(), ladder.end());
+    for (unsigned bits : ladder) {
+      scoped_digits d(digits10_for_bits(bits));
+      set_working_precision(u);
+      auto c = resonant_constants_of<T>(p, T(v));
+      T rsq;
+      newton_step(c, lobe_frame_real_of(c, f, a).mu, rsq);
+    }
+    set_working_precision(u);
+  }
+  auto c = resonant_constants_of<T>(p, v);
+  const auto fr = lobe_frame_real_of(c, f, a);
+  const T mu = fr.mu, floor = lobe_root_floor(fr);
+  const T half_eps = ldexp(T(1), -int(real_bits<T>() / 2) + 4);
+  for (int it = 0; it < 8; ++it) {
+    T rsq;
+    T step = newton_step(c, mu, rsq);
+    T scale = fabs(u) > floor ? fabs(u) : floor;
+    if (fabs(step) <= half_eps * scale) return {u, rsq, evals};
+  }
+  throw compute_error("lattice: Newton polish of q' = 0 did not converge in " + real_type_name<T>());
+}
+
+template <class T, class L>
+void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a,
+                  const L& b, const T& u, const T& rsq, int m_min) {
+  using std::sqrt;
+  std::vector<std::pair<T, lobe_frame<L>>> pts;
+  auto add = [&](const lobe_frame<L>& g, const T& ug) { pts.push_back({lobe_theta(c, g, a, ug), g}); };
+  add(f, u);
+  add(lobe_mirror(f, a, b), T(-u));
+  if (m_min == 2) {
+    auto s = lobe_shift(f, a, b);
+    add(s, u);
+    add(lobe_mirror(s, a, b), T(-u));
+  }
+  std::sort(pts.begin(), pts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  r.r_res = sqrt(rsq);
+  r.h_min = rsq / 2;
+  r.h_z_max = c.v * c.v / 2 - r.h_min;
+  for (auto& p : pts) r.minimisers.push_back(p.first);
+  r.theta_first = pts.front().first;
+  r.t_first = c.sqrt_ts * r.theta_first;
+  const auto& g = pts.front().second;
+  bool mirrored = (g.m < 0) != (f.m < 0);
+  r.first = {to_big(g.k), to_big(g.j), to_big(g.m), mirrored ? T(-u) : u};
+}
+
+template <class T, class L, pair_integer I>
+inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v, const lattice_options& opt) {
+  const L tau = L(p.tau()), a = L(p.order()), b = L(p.delta());
+  // x >= 1/2 iff 2b >= a.
+  bool window = opt.window_always || 2 * b >= a;
+  auto sites = lattice_sites(tau, a, b, window, opt.window_always);
+
+  // Scout in double unless the pair is beyond double's exponent range.
+  const bool huge = to_big(p.order()) > (big_int(1) << 900);
+  if (huge && !is_mpfr_v<T>)
+    throw compute_error("pair " + p.str() + " exceeds the exponent range of " + real_type_name<T>() +
+                        "; use mpfr_real (more digits)");
+  std::size_t best = 0;
+  std::vector<double> scout_u(sites.size()), scout_r(sites.size());
+  std::uintmax_t evals = 0;
+  unsigned scout_bits = 53;
+  auto scout_all = [&](auto tag) {
+    using S = decltype(tag);
+    auto cs = resonant_constants_of<S>(p, S(1));
+    std::vector<S> us, rs;
+    for (auto& s : sites) {
+      auto sr = lattice_solve_site(cs, s, a);
+      evals += sr.evaluations;
+      us.push_back(sr.u);
+      rs.push_back(sr.radius_sq);
+    }
+    return std::pair{us, rs};
+  };
+  std::vector<T> ut;
+  std::vector<T> rt;
+  if constexpr (std::is_same_v<T, double>) {
+    auto cs = resonant_constants_of<double>(p, v);
+    for (auto& s : sites) {
+      auto sr = lattice_solve_site(cs, s, a);
+      evals += sr.evaluations;
+      ut.push_back(sr.u);
+      rt.push_back(sr.radius_sq);
+    }
+  } else {
+    if (huge) {
+      if constexpr (is_mpfr_v<T>) {
+        std::vector<mpfr_real> us, rs;
+        {
+          scoped_digits d(20);
+          scout_bits = 64;
+          std::tie(us, rs) = scout_all(mpfr_real());
+        }
+        for (auto& x : us) ut.push_back(x);
+        for (auto& x : rs) rt.push_back(x);
+      }
+    } else {
+      auto [us, rs] = scout_all(double());
+      for (auto& x : us) ut.push_back(T(x));
+      for (auto& x : rs) rt.push_back(T(x));
+    }
+  }
+  for (std::size_t i = 1; i < sites.size(); ++i)
+    if (rt[i] < rt[best]) best = i;
+
+  inscribed_result<T> r;
+  r.method = inscribed_method::lattice;
+  r.critical_points = sites.size();
+  T u = ut[best], rsq = rt[best];
+  if constexpr (!std::is_same_v<T, double>) {
+    // Polish every scout candidate within a relative 1e-8 of the best (normally just one).
+    bool have = false;
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      if (!(rt[i] <= rt[best] * (1 + T(1e-8)))) continue;
+      auto pol = lattice_polish(p, v, sites[i].frame, a, ut[i], scout_bits);
+      evals += pol.evaluations;
+      if (!have || pol.radius_sq < rsq) {
+        u = pol.u;
+        rsq = pol.radius_sq;
+        best = i;
+        have = true;
+      }
+    }
+  } else {
+    (void)scout_bits;
+  }
+  r.evaluations = evals;
+  auto c = resonant_constants_of<T>(p, v);
+  lattice_fill(r, c, sites[best].frame, a, b, u, rsq, p.strand_offset_min());
+  return r;
+}
+
+inline int bit_length(unsigned __int128 v) {
+  int n = 0;
+  while (v) { v >>= 1; ++n; }
+  return n;
+}
+inline bool lattice_fits_int128(const resonant_pair<std::int64_t>& p) {
+  int la = bit_length((unsigned __int128)p.order()), lb = bit_length((unsigned __int128)p.delta()),
+      lt = bit_length((unsigned __int128)p.tau());
+  return la + lb <= 124 && la + lt <= 124;
+}
+
+}  // namespace detail
+
+// The inscribed radius of any coprime pair by the lattice method (see the header comment).
+template <class T, pair_integer I>
+inscribed_result<T> inscribed_lattice(const resonant_pair<I>& p, const T& v, const lattice_options& opt = {}) {
+  detail::check_amplitude(v);
+  if (p.degenerate()) return inscribed_degenerate<T>(p, v);
+  // int128 holds every intermediate when a b and a tau stay below 2^124 (the largest products
+  // are (2j+1) a and 2 k b with j < b, k < a, and 2 k tau in the window mode).
+  if constexpr (std::is_same_v<I, std::int64_t>) {
+    if (detail::lattice_fits_int128(p)) return detail::inscribed_lattice_impl<T, int128>(p, v, opt);
+    return detail::inscribed_lattice_impl<T, big_int>(pair_cast<big_int>(p), v, opt);
+  } else {
+    if (pair_fits_int64(p)) {
+      auto q = pair_cast<std::int64_t>(p);
+      if (detail::lattice_fits_int128(q)) return detail::inscribed_lattice_impl<T, int128>(q, v, opt);
+    }
+    return detail::inscribed_lattice_impl<T, big_int>(p, v, opt);
+  }
+}
+
+}  // namespace gyrores

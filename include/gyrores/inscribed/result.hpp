@@ -1,0 +1,47 @@
+// The one result type of every inscribed-radius solver.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <gyrores/core/integer.hpp>
+
+namespace gyrores {
+
+enum class inscribed_method { degenerate_exact, global_search, lattice };
+
+inline std::string method_name(inscribed_method m) {
+  switch (m) {
+    case inscribed_method::degenerate_exact: return "degenerate-exact";
+    case inscribed_method::global_search: return "global-search";
+    case inscribed_method::lattice: return "lattice";
+  }
+  return "?";
+}
+
+// A point in lobe-frame coordinates (resonant.hpp): theta = 2 (k pi + u)/a, exact integers
+// k, j, m and the real u. Certificates start from it.
+template <class T> struct lobe_point {
+  big_int k, j, m;
+  T u;
+};
+
+// r_res = min over theta in [0, 2 pi) of sqrt(q^2 + q'^2); h_min = r_res^2/2 (min of H_q);
+// h_z_max = v^2/2 - h_min (max of H_z, since H = v^2/2 is conserved). minimisers: every
+// global minimiser theta in [0, 2 pi), ascending; theta_first = minimisers.front(),
+// t_first = sqrt(tau sigma) theta_first. For degenerate pairs r_res = 0 exactly.
+template <class T> struct inscribed_result {
+  T r_res, h_min, h_z_max;
+  std::vector<T> minimisers;
+  T theta_first, t_first;
+  bool degenerate = false;
+  inscribed_method method = inscribed_method::global_search;
+  lobe_point<T> first;             // the first minimiser in local coordinates (not for degenerate pairs)
+  std::size_t critical_points = 0;  // critical points of R examined
+  std::uintmax_t evaluations = 0;   // evaluations of q' or z' by the root solvers
+  // Global search only: the smallest R = q^2 + q'^2 among critical points that are not global
+  // minimisers (the gap to the minimum shows how clearly the minimum is separated); 0 otherwise.
+  T next_radius_sq = 0;
+};
+
+}  // namespace gyrores

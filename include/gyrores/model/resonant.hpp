@@ -1,0 +1,170 @@
+// The resonant parametrisation of a pair (tau, sigma) and its exact local coordinates.
+//
+// With a = tau + sigma, b = tau - sigma, x = b/a, alpha = a theta/2, beta = b theta/2 = x alpha:
+//   q  = 2 rho0 sin(alpha) cos(beta),            q' = v (cos alpha cos beta - x sin alpha sin beta),
+//   z  = 2 rho0 sin(alpha) sin(beta),            z' = v (x sin alpha cos beta + cos alpha sin beta),
+// with 2 rho0 = v sqrt(1 - x^2) = 2 v sqrt(tau sigma)/a (docs/mathematics.md §1).
+//
+// Local coordinates (a "lobe frame", docs/mathematics.md §3): integers k, j fix a fast node alpha = k pi and
+// a slow node beta = pi/2 + j pi; with alpha = k pi + u and w = mu - x u,
+// mu = pi m / (2a), m = (2j+1) a - 2 k b (an integer), and s = (-1)^(k+j):
+//   q  = s v sqrt(1-x^2) sin u sin w,      q' = s v (cos u sin w - x sin u cos w),
+//   z  = s v sqrt(1-x^2) sin u cos w,      z' = s v (x sin u sin w + cos u cos w).
+// Everything here is an integer or an O(1) angle: tau * theta is never formed, so the
+// evaluation keeps full relative accuracy for pairs of any size (e.g. (10^30+1, 10^30)).
+#pragma once
+#include <cmath>
+#include <type_traits>
+
+#include <gyrores/model/pair.hpp>
+#include <gyrores/core/real.hpp>
+
+namespace gyrores {
+
+// Per-pair constants in T, computed once (each from exact integers, one or two roundings).
+template <class T> struct resonant_constants {
+  T v;        // impulse amplitude qdot0 > 0
+  T x;        // b/a
+  T s1mx2;    // sqrt(1 - x^2) = 2 sqrt(tau sigma)/a
+  T sqrt_ts;  // sqrt(tau sigma): t = sqrt(tau sigma) theta
+  T pi;
+  T n;        // resonant coupling b / sqrt(tau sigma) (> 0 by convention)
+  T omega1, omega2;  // sqrt(tau/sigma), sqrt(sigma/tau)
+  T rho0;     // v sqrt(tau sigma)/a
+};
+
+template <class T, pair_integer I> resonant_constants<T> resonant_constants_of(const resonant_pair<I>& p, const T& v) {
+  using std::sqrt;
+  using W = wide_int<I>;
+  resonant_constants<T> c;
+  c.v = v;
+  T a = real_from_int<T>(p.order());
+  T b = real_from_int<T>(W(p.delta()));
+  T tau = real_from_int<T>(p.tau()), sigma = real_from_int<T>(p.sigma());
+  c.x = b / a;
+  c.sqrt_ts = sqrt(tau) * sqrt(sigma);  // no product: tau*sigma may exceed T's exact range
+  c.s1mx2 = 2 * c.sqrt_ts / a;
+  c.pi = real_pi<T>();
+  c.n = b / c.sqrt_ts;
+  c.omega1 = sqrt(tau / sigma);
+  c.omega2 = sqrt(sigma / tau);
+  c.rho0 = v * c.sqrt_ts / a;
+  return c;
+}
+
+// A lobe frame: exact integers (L is int128 or big_int). m = (2j+1) a - 2 k b.
+template <class L> struct lobe_frame {
+  L k, j, m;
+};
+
+template <class L> lobe_frame<L> lobe_frame_of(const L& a, const L& b, const L& k, const L& j) {
+  return {k, j, L((2 * j + 1) * a - 2 * k * b)};
+}
+
+// The frame in T: mu = pi m/(2a) and the sign (-1)^(k+j).
+template <class T> struct lobe_frame_real {
+  T mu;
+  int sign;
+};
+
+template <class T, class L> lobe_frame_real<T> lobe_frame_real_of(const resonant_constants<T>& c, const lobe_frame<L>& f,
+                                                                   const L& a) {
+  T mu = c.pi * real_from_int<T>(f.m) / (2 * real_from_int<T>(a));
+  bool odd = ((f.k + f.j) & 1) != 0;
+  return {mu, odd ? -1 : 1};
+}
+
+template <class T> struct lobe_values {
+  T q, qdot, z, zdot;
+  T radius_sq() const { return q * q + qdot * qdot; }
+};
+
+// q, q', z, z' at u in a frame.
+template <class T> lobe_values<T> lobe_eval(const resonant_constants<T>& c, const lobe_frame_real<T>& f, const T& u) {
+  using std::cos;
+  using std::sin;
+  T w = f.mu - c.x * u;
+  T su = sin(u), cu = cos(u), sw = sin(w), cw = cos(w);
+  T sv = f.sign > 0 ? c.v : T(-c.v);
+  T amp = sv * c.s1mx2;
+  return {amp * su * sw, sv * (cu * sw - c.x * su * cw), amp * su * cw, sv * (c.x * su * sw + cu * cw)};
+}
+
+// Scale below which a root u of q' or z' in this frame is located absolutely, not relatively:
+// |mu|/1024, at most 1/1024. The q' roots that matter sit at |u| ~ |mu|/x or larger (e.g.
+// |u| ~ 1e-9 for (10^9, 1)), so they keep full relative accuracy; mu = 0 only for degenerate
+// pairs, which never reach a root solver.
+template <class T> T lobe_root_floor(const lobe_frame_real<T>& f) {
+  using std::fabs;
+  T m = fabs(f.mu);
+  if (m > 1) m = 1;
+  return m / 1024;
+}
+
+// At a root of q' (q' = dq/dt = 0), q is stationary in u, so R = q^2 there is insensitive to
+// the error of the root, whereas q'^2 is not: for (10^9, 1) a root error of one ulp makes
+// q'^2 exceed q^2. The radius at a q' root is therefore taken as |q| alone.
+
+// q'(u)/(s v) and its u-derivative, sharing the four trig values (for Newton polishing).
+template <class T> struct qdot_with_derivative {
+  T f, df;
+  T su, cu, sw, cw;
+};
+template <class T> qdot_with_derivative<T> lobe_qdot_newton(const resonant_constants<T>& c, const T& mu, const T& u) {
+  using std::cos;
+  using std::sin;
+  T w = mu - c.x * u;
+  T su = sin(u), cu = cos(u), sw = sin(w), cw = cos(w);
+  T f = cu * sw - c.x * su * cw;
+  T df = -(1 + c.x * c.x) * su * sw - 2 * c.x * cu * cw;
+  return {f, df, su, cu, sw, cw};
+}
+
+// theta = 2 (k pi + u)/a reduced to [0, 2 pi): k is reduced mod a exactly first.
+template <class T, class L> T lobe_theta(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const T& u) {
+  L kr = int_mod(f.k, a);
+  T at = real_from_int<T>(a);
+  T th = 2 * c.pi * (real_from_int<T>(kr) / at) + 2 * u / at;
+  T two_pi = 2 * c.pi;
+  if (th < 0) th += two_pi;
+  if (th >= two_pi) th -= two_pi;
+  return th;
+}
+
+// The frame nearest theta0 = pi * num/den (den > 0): k = round(a num/(2 den)),
+// j = floor(b num/(2 den)); and u at theta = pi * num2/den in that frame, as the exact
+// fraction pi * (a num2 - 2 k den) / (2 den).
+template <class L> lobe_frame<L> lobe_frame_near(const L& a, const L& b, const L& num, const L& den) {
+  L twice = 2 * den;
+  L k = int_floor_div(L(2 * a * num + twice), L(2 * twice));  // round(a num / (2 den))
+  L j = int_floor_div(L(b * num), twice);
+  return lobe_frame_of(a, b, k, j);
+}
+template <class T, class L> T lobe_u_at(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const L& num,
+                                        const L& den) {
+  L top = a * num - 2 * f.k * den;
+  return c.pi * real_from_int<T>(top) / (2 * real_from_int<T>(den));
+}
+
+// Exact symmetries of R (docs/mathematics.md §1, §3), as maps of frames (u is kept or negated):
+//  mirror theta -> 2 pi - theta: (k, j, u) -> (a - k, b - 1 - j, -u), m -> -m.
+//  shift  theta -> theta + pi (tau, sigma both odd): (k, j, u) -> (k + a/2, j + b/2, u), m -> m.
+template <class L> lobe_frame<L> lobe_mirror(const lobe_frame<L>& f, const L& a, const L& b) {
+  return {L(a - f.k), L(b - 1 - f.j), L(-f.m)};
+}
+template <class L> lobe_frame<L> lobe_shift(const lobe_frame<L>& f, const L& a, const L& b) {
+  return {L(f.k + a / 2), L(f.j + b / 2), f.m};
+}
+
+// Plain evaluation at a real theta (for plots and references at moderate order): alpha and
+// beta are formed in T, so the phase error grows like a * |theta| * eps.
+template <class T> lobe_values<T> resonant_state_at(const resonant_constants<T>& c, const T& a, const T& b, const T& theta) {
+  using std::cos;
+  using std::sin;
+  T al = a * theta / 2, be = b * theta / 2;
+  T sa = sin(al), ca = cos(al), sb = sin(be), cb = cos(be);
+  T amp = c.v * c.s1mx2;
+  return {amp * sa * cb, c.v * (ca * cb - c.x * sa * sb), amp * sa * sb, c.v * (c.x * sa * cb + ca * sb)};
+}
+
+}  // namespace gyrores

@@ -1,0 +1,136 @@
+// gyrores design absorb|contain --tmax T [--beat B] [--max-order M] [--exclude-low L]
+//                                [--delta D] [--proxy] [--candidates K] [--digits D] [--json]
+// The paper's design problems (eqs. design-absorb, design-contain) over resonant pairs up to
+// order M: see include/gyrores/design.hpp. No feasible pair: one line on stderr, exit 3.
+#include <sstream>
+
+#include <gyrores/design/design.hpp>
+
+#include "cli_output.hpp"
+#include "commands.hpp"
+#include "verified_pair.hpp"
+
+namespace gyrores::cli {
+namespace {
+
+struct design_args {
+  std::string problem, tmax, beat;
+  std::int64_t max_order = 200, exclude_low = 0, delta = 0, candidates = 5;
+  int digits = 10;
+  bool proxy = false, json = false;
+};
+
+std::string constraint_text(const design_args& a, const design_options& o) {
+  std::ostringstream os;
+  os << (o.time == design_time::first_hit ? "t_first" : "pi/|n|") << " <= " << a.tmax;
+  if (!a.beat.empty()) os << ", beat (tau+sigma)/(tau-sigma) >= " << a.beat;
+  if (a.exclude_low > 0) os << ", tau+sigma > " << a.exclude_low << " (R_low excluded)";
+  if (a.delta > 0) os << ", delta = " << a.delta;
+  os << ", tau+sigma <= " << a.max_order;
+  return os.str();
+}
+
+std::string run_design(const design_args& a) {
+  design_options o;
+  if (a.problem == "absorb") o.problem = design_problem::absorb;
+  else if (a.problem == "contain") o.problem = design_problem::contain;
+  else throw usage_error("the design problem must be 'absorb' or 'contain', got '" + a.problem + "'");
+  if (a.digits < 1 || a.digits > 1000) throw usage_error("--digits must be in [1, 1000], got " + std::to_string(a.digits));
+  o.tmax = parse_rational(a.tmax, "--tmax");
+  if (!(o.tmax > 0)) throw usage_error("--tmax must be > 0, got " + a.tmax);
+  if (!a.beat.empty()) {
+    o.filter.beat_min = parse_rational(a.beat, "--beat");
+    if (!(*o.filter.beat_min > 0)) throw usage_error("--beat must be > 0, got " + a.beat);
+  }
+  if (a.exclude_low < 0) throw usage_error("--exclude-low must be >= 0");
+  if (a.delta < 0) throw usage_error("--delta must be >= 1");
+  if (a.candidates < 0 || a.candidates > 1000) throw usage_error("--candidates must be in [0, 1000]");
+  o.filter.exclude_low = a.exclude_low;
+  if (a.delta > 0) o.filter.delta = a.delta;
+  o.time = a.proxy ? design_time::proxy : design_time::first_hit;
+  o.max_order = a.max_order;
+  o.candidates = std::size_t(a.candidates);
+  auto catalogue = design_catalogue(a.max_order);
+  auto res = design_solve(catalogue, o);
+  if (!res.feasible_any())
+    throw compute_error("no resonant pair meets the constraints (" + constraint_text(a, o) + "; " +
+                        std::to_string(res.examined) + " pairs examined); nothing chosen");
+
+  // Verified digits for the reported pairs only.
+  std::vector<std::pair<resonant_pair<big_int>, pair_values>> rows;
+  for (const auto& p : res.ranked) {
+    resonant_pair<big_int> bp(big_int(p.tau), big_int(p.sigma));
+    rows.push_back({bp, pair_values_verified(bp, unsigned(a.digits))});
+  }
+  const auto& chosen = res.ranked.front();
+  const bool exact_exceeds = a.proxy && !design_time_within(chosen, design_time::first_hit, o.tmax);
+
+  if (a.json) {
+    json j;
+    j["problem"] = a.problem;
+    j["tmax"] = a.tmax;
+    j["time"] = a.proxy ? "proxy" : "t_first";
+    j["beat"] = a.beat.empty() ? json(nullptr) : json(a.beat);
+    j["max_order"] = a.max_order;
+    j["exclude_low"] = a.exclude_low;
+    j["delta"] = a.delta > 0 ? json(a.delta) : json(nullptr);
+    j["examined"] = res.examined;
+    j["feasible"] = res.feasible;
+    j["chosen"] = pair_values_json(rows[0].first, rows[0].second);
+    j["chosen_t_first_exceeds_tmax"] = exact_exceeds;
+    json c = json::array();
+    for (std::size_t i = 1; i < rows.size(); ++i) c.push_back(pair_values_json(rows[i].first, rows[i].second));
+    j["candidates"] = c;
+    j["digits"] = a.digits;
+    return json_dump(j) + "\n";
+  }
+  std::ostringstream os;
+  os << "design " << a.problem << ": " << (o.problem == design_problem::absorb ? "minimise" : "maximise")
+     << " r_res (qdot0 = 1) subject to " << constraint_text(a, o) << "\n"
+     << "  time constraint uses " << (a.proxy ? "the paper's proxy pi/|n| (heuristic)" : "the exact first-hit time t_first")
+     << "; " << res.examined << " pairs examined, " << res.feasible << " feasible\n";
+  const auto& v = rows[0].second;
+  os << "chosen " << rows[0].first.str() << "\n"
+     << "  n             " << v.n << "\n"
+     << "  r_res         " << radius_text(v) << "\n"
+     << "  H_q min       " << v.h_min << "\n"
+     << "  t_first       " << v.t_first << "  (exact first-hit time)\n"
+     << "  pi/|n|        " << v.t_min_paper << "  (the paper's proxy)\n";
+  if (exact_exceeds)
+    os << "  note: the exact first-hit time exceeds --tmax " << a.tmax
+       << ": the proxy chose a pair that does not meet the time constraint\n";
+  if (rows.size() > 1) {
+    os << "next best:\n";
+    os << "  rank  pair          n                 r_res             t_first           pi/|n|\n";
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      const auto& w = rows[i].second;
+      std::string pr = rows[i].first.str();
+      os << "  " << i + 1 << std::string(i + 1 < 10 ? 5 : 4, ' ') << pr << std::string(pr.size() < 14 ? 14 - pr.size() : 1, ' ')
+         << w.n << "  " << w.r_res << "  " << w.t_first << "  " << w.t_min_paper << "\n";
+    }
+  }
+  os << "  ranking: objective, then smaller time, then smaller order; " << a.digits
+     << " digits, each verified (lattice method, cross-checked against the global search)\n";
+  return os.str();
+}
+
+command_runner install_design(CLI::App& app) {
+  auto a = std::make_shared<design_args>();
+  auto* sub = app.add_subcommand("design", "Choose a resonant pair: absorb (min r_res) or contain (max r_res) under a time limit");
+  sub->add_option("PROBLEM", a->problem, "absorb or contain")->required();
+  sub->add_option("--tmax", a->tmax, "time limit T (decimal or fraction); constraint time <= T")->required();
+  sub->add_option("--beat", a->beat, "require (tau+sigma)/(tau-sigma) >= B (decimal or fraction)");
+  sub->add_option("--max-order", a->max_order, "search pairs with tau + sigma <= M (3..5000)")->capture_default_str();
+  sub->add_option("--exclude-low", a->exclude_low, "exclude the low-order set tau + sigma <= L");
+  sub->add_option("--delta", a->delta, "only pairs with tau - sigma = D (follows the paper's Case A)");
+  sub->add_flag("--proxy", a->proxy, "use the paper's proxy pi/|n| instead of the exact first-hit time");
+  sub->add_option("--candidates", a->candidates, "runners-up to report")->capture_default_str();
+  sub->add_option("--digits", a->digits, "significant digits of every real printed")->capture_default_str();
+  sub->add_flag("--json", a->json, "one JSON object on stdout");
+  return [a] { return run_design(*a); };
+}
+
+const command_registration registration{"design", install_design};
+
+}  // namespace
+}  // namespace gyrores::cli

@@ -1,0 +1,38 @@
+// gyrores merge FILES... [--summary OUT] [--json]
+// Combines the outputs of the shards of one sweep (row files written with --out, or shard
+// summaries written with --summary, which come with SUMMARY.values) into the summary a single
+// run gives. See include/gyrores/sweep_io.hpp for what each file holds and what is checked.
+#include <gyrores/io/sweep_io.hpp>
+
+#include "cli_output.hpp"
+#include "commands.hpp"
+
+namespace gyrores::cli {
+namespace {
+
+struct merge_args {
+  std::vector<std::string> files;
+  std::string summary;
+  bool json = false;
+};
+
+std::string run_merge(const merge_args& a) {
+  sweep_json s = sweep_merge(a.files);
+  if (!a.summary.empty()) sweep_write_atomic(a.summary, s.dump(2) + "\n");
+  if (a.json) return s.dump(2) + "\n";
+  return sweep_summary_text(s);
+}
+
+command_runner install_merge(CLI::App& app) {
+  auto a = std::make_shared<merge_args>();
+  auto* sub = app.add_subcommand("merge", "Combine the shard outputs of a sweep into one summary");
+  sub->add_option("FILES", a->files, "row files (--out) or shard summaries (--summary) of every shard")->required();
+  sub->add_option("--summary", a->summary, "write the merged summary as JSON to this file");
+  sub->add_flag("--json", a->json, "print the merged summary as JSON instead of text");
+  return [a] { return run_merge(*a); };
+}
+
+const command_registration registration{"merge", install_merge};
+
+}  // namespace
+}  // namespace gyrores::cli

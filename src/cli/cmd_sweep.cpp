@@ -1,0 +1,233 @@
+// gyrores sweep --max-order M [--min-order m] [--check LIST] [--out FILE] [--format csv|jsonl]
+//               [--summary FILE] [--threads N] [--shard I/N] [--resume] [--digits D] [--json] ...
+// Visits every coprime pair with m <= tau + sigma <= M, checks the paper's claims per pair and
+// prints a summary; the engine and the file formats are in include/gyrores/sweep.hpp and
+// sweep_io.hpp (their header comments document rows, summary, resume state and merge).
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include <gyrores/io/sweep_io.hpp>
+
+#include "cli_output.hpp"
+#include "commands.hpp"
+
+namespace gyrores::cli {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void sweep_on_signal(int) {
+  if (g_stop.load()) ::_exit(130);  // a second signal: leave at once (the last checkpoint stays)
+  g_stop.store(true);
+}
+
+// Installs SIGINT/SIGTERM handlers for the scope of a sweep, restoring the old ones after.
+class signal_scope {
+ public:
+  signal_scope() {
+    g_stop.store(false);
+    struct sigaction sa {};
+    sa.sa_handler = sweep_on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~signal_scope() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  signal_scope(const signal_scope&) = delete;
+  signal_scope& operator=(const signal_scope&) = delete;
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+struct sweep_args {
+  std::int64_t max_order = 0, min_order = 3;
+  std::string checks = "all", out, format, summary, shard = "0/1", state;
+  unsigned threads = 0;
+  bool resume = false, quiet = false, json = false;
+  int digits = 15;
+  std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
+  std::size_t examples = 5;
+  double checkpoint = 300;
+  std::uint64_t max_pairs = 0;
+};
+
+std::string with_commas(std::uint64_t v) {
+  const std::string digits = std::to_string(v);
+  std::string s;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) s.push_back(',');
+    s.push_back(digits[i]);
+  }
+  return s;
+}
+
+std::string clock_text(double s) {
+  if (!(s >= 0) || s > 1e7) return "?";
+  long t = long(s + 0.5);
+  char buf[32];
+  if (t >= 3600) std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  else std::snprintf(buf, sizeof buf, "%ld:%02ld", t / 60, t % 60);
+  return buf;
+}
+
+// Progress on stderr: a redrawn bar on a terminal, a plain line every 10 s otherwise.
+class progress_printer {
+ public:
+  explicit progress_printer(bool quiet) : quiet_(quiet), tty_(::isatty(2) == 1) {}
+  void operator()(const sweep_progress_info& p) {
+    if (quiet_) return;
+    const double every = tty_ ? 0.2 : 10.0;
+    if (p.seconds - last_ < every) return;
+    last_ = p.seconds;
+    draw(p);
+  }
+  void finish(const sweep_progress_info& p) {
+    if (quiet_) return;
+    if (tty_ && drawn_) {
+      draw(p);
+      std::fputs("\n", stderr);
+    }
+  }
+
+ private:
+  void draw(const sweep_progress_info& p) {
+    const double rate = p.seconds > 0 ? double(p.done_this_run) / p.seconds : 0;
+    char line[256];
+    if (p.total > 0) {
+      const double frac = double(p.done) / double(p.total);
+      const double eta = rate > 0 ? double(p.total - std::min(p.done, p.total)) / rate : -1;
+      std::string bar(30, ' ');
+      for (int i = 0; i < int(frac * 30 + 1e-9) && i < 30; ++i) bar[std::size_t(i)] = '#';
+      std::snprintf(line, sizeof line, "[%s] %5.1f%%  %s/%s pairs  %s pairs/s  ETA %s", bar.c_str(), 100 * frac,
+                    with_commas(p.done).c_str(), with_commas(p.total).c_str(), with_commas(std::uint64_t(rate)).c_str(),
+                    clock_text(eta).c_str());
+    } else {
+      std::snprintf(line, sizeof line, "%s pairs  %s pairs/s", with_commas(p.done).c_str(),
+                    with_commas(std::uint64_t(rate)).c_str());
+    }
+    if (tty_) std::fprintf(stderr, "\r%s\x1b[K", line);
+    else std::fprintf(stderr, "gyrores sweep: %s\n", line);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  bool quiet_, tty_;
+  bool drawn_ = false;
+  double last_ = 0;
+};
+
+void parse_shard(const std::string& s, sweep_config& c) {
+  auto slash = s.find('/');
+  auto bad = [&] { return usage_error("--shard must be I/N with 0 <= I < N, got '" + s + "'"); };
+  if (slash == std::string::npos) throw bad();
+  try {
+    std::size_t p1 = 0, p2 = 0;
+    std::string a = s.substr(0, slash), b = s.substr(slash + 1);
+    c.shard_index = std::stoll(a, &p1);
+    c.shard_count = std::stoll(b, &p2);
+    if (p1 != a.size() || p2 != b.size()) throw bad();
+  } catch (const std::logic_error&) {
+    throw bad();
+  }
+  if (c.shard_count < 1 || c.shard_index < 0 || c.shard_index >= c.shard_count) throw bad();
+}
+
+template <class T> sweep_report run_typed(const sweep_config& cfg, const sweep_files& files, const sweep_engine_options& eo, bool quiet) {
+  progress_printer pp(quiet);
+  sweep_progress_info last;
+  auto rep = sweep_to_files<T>(cfg, files, eo, [&](const sweep_progress_info& p) {
+    last = p;
+    pp(p);
+  });
+  pp.finish(last);
+  return rep;
+}
+
+std::string run_sweep(const sweep_args& a) {
+  sweep_config cfg;
+  cfg.max_order = a.max_order;
+  cfg.min_order = a.min_order;
+  cfg.checks = sweep_parse_checks(a.checks);
+  parse_shard(a.shard, cfg);
+  cfg.cross_check_max_order = a.cross_check_max_order;
+  cfg.max_examples = a.examples;
+  if (a.digits < 1 || a.digits > 1000) throw usage_error("--digits must be in [1, 1000], got " + std::to_string(a.digits));
+  cfg.digits = unsigned(a.digits);
+  sweep_validate(cfg);
+  if (a.checkpoint < 0) throw usage_error("--checkpoint must be >= 0 seconds");
+
+  sweep_files files;
+  files.rows_path = a.out;
+  std::string format = a.format;
+  if (format.empty()) format = a.out.size() >= 6 && a.out.substr(a.out.size() - 6) == ".jsonl" ? "jsonl" : "csv";
+  files.rows_format = sweep_parse_format(format);
+  files.summary_path = a.summary;
+  files.state_path = a.state;
+  files.resume = a.resume;
+  files.checkpoint_seconds = a.checkpoint;
+
+  sweep_engine_options eo;
+  eo.threads = a.threads;
+  eo.max_pairs = a.max_pairs;
+  eo.stop = &g_stop;
+
+  signal_scope signals;
+  sweep_report rep;
+  if (a.digits <= 15) rep = run_typed<double>(cfg, files, eo, a.quiet);
+  else if (a.digits <= 30) rep = run_typed<float128>(cfg, files, eo, a.quiet);
+  else rep = run_typed<mpfr_real>(cfg, files, eo, a.quiet);
+
+  if (!rep.complete) {
+    std::string why = g_stop.load() ? "interrupted" : "stopped (--max-pairs)";
+    throw compute_error(why + " after " + with_commas(rep.done) + (rep.total ? " of " + with_commas(rep.total) : "") +
+                        " pairs; every finished pair is kept in the resume state '" + rep.state_path +
+                        "': run the same command with --resume to continue");
+  }
+  return a.json ? rep.summary.dump(2) + "\n" : sweep_summary_text(rep.summary);
+}
+
+command_runner install_sweep(CLI::App& app) {
+  auto a = std::make_shared<sweep_args>();
+  auto* sub = app.add_subcommand("sweep", "Check the paper's claims over every resonant pair up to an order");
+  sub->add_option("--max-order", a->max_order, "largest order tau + sigma (required, 3..2^40)")->required();
+  sub->add_option("--min-order", a->min_order, "smallest order tau + sigma")->capture_default_str();
+  sub->add_option("--check", a->checks,
+                  "comma-separated checks: degeneracy, paper-node, asy-bound, structure, cross-check, or all")
+      ->capture_default_str();
+  sub->add_option("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
+  sub->add_option("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
+  sub->add_option("--summary", a->summary, "summary as JSON to FILE (a shard run also writes FILE.values for merge)");
+  sub->add_option("--threads", a->threads, "worker threads (0: all cores; mpfr runs use 1)")->capture_default_str();
+  sub->add_option("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'")
+      ->capture_default_str();
+  sub->add_flag("--resume", a->resume, "continue an interrupted run from its resume state");
+  sub->add_option("--digits", a->digits,
+                  "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits")
+      ->capture_default_str();
+  sub->add_option("--cross-check-max-order", a->cross_check_max_order,
+                  "cross-check lattice vs global search up to this order (O(order) per pair)")
+      ->capture_default_str();
+  sub->add_option("--examples", a->examples, "violating pairs listed per check")->capture_default_str();
+  sub->add_option("--state", a->state, "resume state file (default: OUT.resume, else SUMMARY.resume, else ./gyrores-sweep.resume)");
+  sub->add_option("--checkpoint", a->checkpoint, "seconds between resume checkpoints (0: only when stopping)")
+      ->capture_default_str();
+  sub->add_option("--max-pairs", a->max_pairs, "stop after this many pairs, leaving a resume state (0: no limit)")
+      ->capture_default_str();
+  sub->add_flag("--quiet", a->quiet, "no progress on stderr");
+  sub->add_flag("--json", a->json, "print the summary as JSON (the --summary schema) instead of text");
+  return [a] { return run_sweep(*a); };
+}
+
+const command_registration registration{"sweep", install_sweep};
+
+}  // namespace
+}  // namespace gyrores::cli

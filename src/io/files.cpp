@@ -1,0 +1,109 @@
+// include/gyrores/io/files.hpp: POSIX files with atomic replacement and durability points.
+#include <gyrores/io/files.hpp>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <gyrores/core/error.hpp>
+
+namespace gyrores {
+namespace {
+
+[[noreturn]] void fail(const std::string& what, const std::string& path, int err) {
+  throw usage_error(what + " '" + path + "': " + std::strerror(err));
+}
+
+}  // namespace
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("cannot read", path, errno);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
+
+void write_file_atomically(const std::string& path, std::string_view content) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) fail("cannot write", path, errno);
+  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  ok = ok && std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
+  int err = errno;
+  ok = (std::fclose(f) == 0) && ok;
+  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ok = false;
+    err = errno;
+  }
+  if (!ok) {
+    std::remove(tmp.c_str());
+    fail("cannot write", path, err);
+  }
+}
+
+void ensure_directory(const std::string& dir) {
+  if (dir.empty()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw usage_error("cannot create directory '" + dir + "'" + (ec ? ": " + ec.message() : std::string()));
+}
+
+void truncate_file(const std::string& path, std::uint64_t size) {
+  if (::truncate(path.c_str(), off_t(size)) != 0) fail("cannot truncate", path, errno);
+}
+
+void rename_file(const std::string& from, const std::string& to) {
+  if (std::rename(from.c_str(), to.c_str()) != 0) fail("cannot rename", from, errno);
+}
+
+void remove_file(const std::string& path) noexcept { std::remove(path.c_str()); }
+
+append_file::append_file(const std::string& path, mode m) : path_(path) {
+  f_ = std::fopen(path.c_str(), m == mode::create ? "wb" : "ab");
+  if (!f_) fail(m == mode::create ? "cannot create" : "cannot open", path, errno);
+}
+
+append_file::~append_file() {
+  if (f_) std::fclose(f_);
+}
+
+append_file::append_file(append_file&& o) noexcept : f_(o.f_), path_(std::move(o.path_)) { o.f_ = nullptr; }
+
+append_file& append_file::operator=(append_file&& o) noexcept {
+  if (this != &o) {
+    if (f_) std::fclose(f_);
+    f_ = o.f_;
+    path_ = std::move(o.path_);
+    o.f_ = nullptr;
+  }
+  return *this;
+}
+
+void append_file::write(std::string_view bytes) {
+  if (!f_) throw usage_error("cannot write '" + path_ + "': not open");
+  if (std::fwrite(bytes.data(), 1, bytes.size(), f_) != bytes.size()) fail("cannot write", path_, errno);
+}
+
+void append_file::sync() {
+  if (!f_) return;
+  if (std::fflush(f_) != 0) fail("cannot write", path_, errno);
+  if (::fsync(::fileno(f_)) != 0) fail("cannot sync", path_, errno);
+}
+
+void append_file::close() {
+  if (!f_) return;
+  sync();
+  std::FILE* f = f_;
+  f_ = nullptr;
+  if (std::fclose(f) != 0) fail("cannot close", path_, errno);
+}
+
+}  // namespace gyrores

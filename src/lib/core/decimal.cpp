@@ -1,0 +1,44 @@
+// include/gyrores/core/decimal.hpp: decimal output by MPFR, Ziv's test, decimal integers.
+#include <gyrores/core/decimal.hpp>
+
+#include <cstdio>
+
+namespace gyrores {
+
+std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rnd) {
+  if (digits < 1) digits = 1;
+  mpfr_exp_t exp = 0;
+  char* raw = mpfr_get_str(nullptr, &exp, 10, digits, v.backend().data(), rnd);
+  if (!raw) throw compute_error("format_scientific: MPFR could not format the value");
+  std::string s(raw);
+  mpfr_free_str(raw);
+  const bool neg = !s.empty() && s[0] == '-';
+  if (neg) s.erase(0, 1);
+  const long e10 = mpfr_zero_p(v.backend().data()) ? 0 : long(exp) - 1;
+  std::string out = neg ? "-" : "";
+  out += s.substr(0, 1);
+  if (digits > 1) out += "." + s.substr(1);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "e%c%02ld", e10 < 0 ? '-' : '+', e10 < 0 ? -e10 : e10);
+  return out + buf;
+}
+
+bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits) {
+  if (mpfr_zero_p(v.backend().data())) return true;
+  mpfr_real lo = v - abs(v) * rel_err, hi = v + abs(v) * rel_err;
+  return format_scientific(lo, digits) == format_scientific(hi, digits);
+}
+
+big_int parse_big_int(const std::string& text, const std::string& what) {
+  std::size_t i = 0;
+  if (!text.empty() && (text[0] == '+' || text[0] == '-')) i = 1;
+  if (i == text.size()) throw usage_error(what + " must be an integer, got '" + text + "'");
+  for (std::size_t k = i; k < text.size(); ++k)
+    if (text[k] < '0' || text[k] > '9') throw usage_error(what + " must be an integer, got '" + text + "'");
+  // Strip leading zeros: GMP would read "011" as octal.
+  const std::size_t first = text.find_first_not_of('0', i);
+  const std::string digits = first == std::string::npos ? "0" : text.substr(first);
+  return big_int(text[0] == '-' ? "-" + digits : digits);
+}
+
+}  // namespace gyrores

@@ -1,0 +1,79 @@
+// include/gyrores/core/rational.hpp
+#include <gyrores/core/rational.hpp>
+
+#include <cctype>
+
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/core/error.hpp>
+
+namespace gyrores {
+namespace {
+
+// The value of a decimal "[+-]digits[.digits][(e|E)[+-]digits]" as p/10^k, exactly.
+big_rational parse_decimal_exact(const std::string& text, const std::string& what) {
+  auto bad = [&]() { return usage_error(what + " must be a decimal or a fraction P/Q, got '" + text + "'"); };
+  std::size_t i = 0;
+  bool neg = false;
+  if (text[i] == '+' || text[i] == '-') neg = text[i++] == '-';
+  std::string digits;
+  long frac = 0;
+  bool seen_dot = false;
+  for (; i < text.size() && text[i] != 'e' && text[i] != 'E'; ++i) {
+    const char ch = text[i];
+    if (ch == '.' && !seen_dot) {
+      seen_dot = true;
+    } else if (std::isdigit((unsigned char)ch)) {
+      digits += ch;
+      if (seen_dot) ++frac;
+    } else {
+      throw bad();
+    }
+  }
+  if (digits.empty()) throw bad();
+  long exp10 = 0;
+  if (i < text.size()) {
+    const std::string e = text.substr(i + 1);
+    const std::size_t k = !e.empty() && (e[0] == '+' || e[0] == '-') ? 1 : 0;
+    if (k == e.size() || e.size() - k > 6) throw bad();
+    for (std::size_t j = k; j < e.size(); ++j)
+      if (!std::isdigit((unsigned char)e[j])) throw bad();
+    exp10 = std::stol(e);
+  }
+  const long shift = exp10 - frac;
+  if (shift > 100000 || shift < -100000) throw usage_error(what + ": exponent out of range in '" + text + "'");
+  big_int num = parse_big_int(digits, what), den(1);
+  const big_int ten_pow = boost::multiprecision::pow(big_int(10), unsigned(shift < 0 ? -shift : shift));
+  if (shift >= 0) num *= ten_pow;
+  else den = ten_pow;
+  if (neg) num = -num;
+  return big_rational(num, den);
+}
+
+}  // namespace
+
+big_rational parse_rational(const std::string& text, const std::string& what) {
+  if (text.empty()) throw usage_error(what + " must be a decimal or a fraction P/Q, got ''");
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) return parse_decimal_exact(text, what);
+  const std::string p = text.substr(0, slash), q = text.substr(slash + 1);
+  const big_int num = parse_big_int(p, what + " (numerator)");
+  if (q.empty() || q[0] == '+' || q[0] == '-')
+    throw usage_error(what + " must be a decimal or a fraction P/Q, got '" + text + "'");
+  const big_int den = parse_big_int(q, what + " (denominator)");
+  if (den == 0) throw usage_error(what + ": denominator is zero in '" + text + "'");
+  return big_rational(num, den);
+}
+
+std::string rational_str(const big_rational& r) {
+  const big_int q = boost::multiprecision::denominator(r);
+  const std::string s = boost::multiprecision::numerator(r).str();
+  return q == 1 ? s : s + "/" + q.str();
+}
+
+bool int_is_square(const big_int& v, big_int& root) {
+  if (v < 0) return false;
+  root = boost::multiprecision::sqrt(v);
+  return root * root == v;
+}
+
+}  // namespace gyrores
