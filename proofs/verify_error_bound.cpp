@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
         } else {
           double xd = double(b) / double(a), mud = M_PI * double(m) / (2.0 * double(a)),
                  sd_ = M_PI * double(m) / (2.0 * double(b));
-          P gc = P(detail::asy_lobe_root<double>(xd, mud, sd_, M_PI));
+          P gc = P(lobe_equation_root<double>(xd, mud, sd_, M_PI));
           P ga = P(u_plus_tan_u_root<double>(sd_));
           Uc = proof::certify_root(K, mu, gc, abs(gc));
           Ua = certify_u_plus_tan(s, ga);

@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
       I s = pi * real_from_int<I>(m) / 2, mu = proof::mu_of(K, m);
       P ga = polish(P(u_plus_tan_u_root<double>(-M_PI / 2)), [&](const I& u) { return I(u + tan(u) - s); },
                     [&](const I& u) { return I(2 + interval_sqr(tan(u))); });
-      P gc = polish(P(detail::asy_lobe_root<double>(1.0 / 11, -M_PI / 22, -M_PI / 2, M_PI)),
+      P gc = polish(P(lobe_equation_root<double>(1.0 / 11, -M_PI / 22, -M_PI / 2, M_PI)),
                     [&](const I& u) { return proof::f_of(K, mu, u); }, [&](const I& u) { return proof::df_of(K, mu, u); });
       auto Ua = certify_u_plus_tan(s, ga);
       auto Uc = proof::certify_root(K, mu, gc, abs(gc));

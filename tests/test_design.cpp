@@ -369,7 +369,8 @@ TEST_CASE("cli design: infeasible exits 3, bad input exits 2, nothing on stdout"
 
 TEST_CASE("cli pareto: CSV and JSON", "[pareto][cli]") {
   if (!cli_available()) return;
-  std::string dir = gyrores::test::temp_dir("pareto");
+  gyrores::test::temp_dir tmp("pareto");
+  const std::string dir = tmp.path();
   REQUIRE(!dir.empty());
   auto r = cli_run("pareto --max-order 40 --out " + dir + "/front.csv --json --digits 6");
   REQUIRE(r.status == 0);
@@ -386,7 +387,6 @@ TEST_CASE("cli pareto: CSV and JSON", "[pareto][cli]") {
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   CHECK(rows == int(j["front"].size()));
-  std::filesystem::remove_all(dir);
   auto bad = cli_run("pareto --max-order 40 --orientation sideways");
   CHECK(bad.status == 2);
   CHECK(bad.out.empty());

@@ -264,7 +264,8 @@ TEST_CASE("figures: the XML checker accepts and rejects", "[figures]") {
 
 TEST_CASE("cli plot: PNG of the requested size, not blank; SVG well-formed; data and script beside", "[figures][cli]") {
   if (!cli_available()) return;
-  std::string dir = gyrores::test::temp_dir("plot");
+  gyrores::test::temp_dir tmp("plot");
+  const std::string dir = tmp.path();
   REQUIRE(!dir.empty());
   struct job {
     std::string args, image;
@@ -313,19 +314,18 @@ TEST_CASE("cli plot: PNG of the requested size, not blank; SVG well-formed; data
   auto again = std::system(("cd " + dir + " && gnuplot -e \"outfile='again.png'\" phase65.gp 2>/dev/null").c_str());
   CHECK(again == 0);
   CHECK(fs::exists(fs::path(dir) / "again.png"));
-  fs::remove_all(dir);
 }
 
 TEST_CASE("cli plot: without gnuplot the data and script are still written", "[figures][cli]") {
   if (!cli_available()) return;
-  std::string dir = gyrores::test::temp_dir("nognuplot");
+  gyrores::test::temp_dir tmp("nognuplot");
+  const std::string dir = tmp.path();
   auto r = cli_run("plot phase 6 5 --out " + dir + "/p.svg", "PATH=/nonexistent");
   CHECK(r.status == 0);
   CHECK(r.out.find("gnuplot not found") != std::string::npos);
   CHECK(fs::exists(fs::path(dir) / "p.dat"));
   CHECK(fs::exists(fs::path(dir) / "p.gp"));
   CHECK_FALSE(fs::exists(fs::path(dir) / "p.svg"));
-  fs::remove_all(dir);
 }
 
 TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
@@ -343,7 +343,8 @@ TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
 
 TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli]") {
   if (!cli_available()) return;
-  std::string dir = gyrores::test::temp_dir("report");
+  gyrores::test::temp_dir tmp("report");
+  const std::string dir = tmp.path();
   REQUIRE(!dir.empty());
   auto t0 = std::chrono::steady_clock::now();
   auto r = cli_run("report --out " + dir + "/out");
@@ -375,5 +376,4 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   CHECK(md.find("Certified enclosures: not in this report") != std::string::npos);
   for (auto& e : fs::recursive_directory_iterator(fs::path(dir) / "out"))
     CHECK(e.path().string().find(".tmp") == std::string::npos);
-  fs::remove_all(dir);
 }

@@ -63,7 +63,7 @@ template <class T> std::uint64_t u_plus_tan_u_evaluations(const T& s) {
 
 template <class T> T paper_s(const bench_pair& bp) {
   const big_int a = bp.order(), b = bp.delta();
-  big_int k = detail::asy_round_half(a, b).first;
+  big_int k = paper_fast_node(a, b).k;
   return real_pi<T>() * real_from_ratio<T>(big_int(a - 2 * k * b), big_int(2 * b));
 }
 
@@ -294,8 +294,8 @@ std::vector<method_def> library_methods(const run_config& cfg) {
              const lobe_frame<int128> f{int128(std::int64_t(fb.k)), int128(std::int64_t(fb.j)), int128(std::int64_t(fb.m))};
              const int128 a128 = p64.order();
              return make_case(
-                 "newton_doubling", pr, bp, [=] { return detail::lattice_polish(p64, T(1), f, a128, T(u0), 53); },
-                 [=](const detail::polished<T>& r) {
+                 "newton_doubling", pr, bp, [=] { return lobe_root_polish(p64, T(1), f, a128, T(u0), 53); },
+                 [=](const lobe_polish_result<T>& r) {
                    using std::sqrt;
                    auto c = resonant_constants_of<T>(p64, T(1));
                    outcome o;
@@ -306,8 +306,8 @@ std::vector<method_def> library_methods(const run_config& cfg) {
                  });
            }
            return make_case(
-               "newton_doubling", pr, bp, [=] { return detail::lattice_polish(p, T(1), fb, a, T(u0), 53); },
-               [=](const detail::polished<T>& r) {
+               "newton_doubling", pr, bp, [=] { return lobe_root_polish(p, T(1), fb, a, T(u0), 53); },
+               [=](const lobe_polish_result<T>& r) {
                  using std::sqrt;
                  auto c = resonant_constants_of<T>(p, T(1));
                  outcome o;

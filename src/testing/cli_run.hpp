@@ -1,13 +1,8 @@
-// Running the built gyrores executable from a test (GYRORES_CLI_PATH, set by tests/CMakeLists.txt
-// for the tests that drive the CLI; empty when the CLI is not built, and those checks are skipped).
+// Running the built gyrores executable from a test, and temporary directories.
+//
+// GYRORES_CLI_PATH is set by tests/CMakeLists.txt for the tests that drive the CLI; it is empty
+// when the CLI is not built, and those checks are skipped (cli_available()).
 #pragma once
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #ifndef GYRORES_CLI_PATH
@@ -17,45 +12,41 @@
 namespace gyrores::test {
 
 struct cli_result {
-  int status;
+  int status = -1;  // exit status; -1 if the process did not exit normally
   std::string out, err;
 };
 
-inline bool cli_available() { return std::string(GYRORES_CLI_PATH).size() > 0; }
+inline std::string cli_path() { return GYRORES_CLI_PATH; }
+inline bool cli_available() { return !cli_path().empty(); }
 
-// Runs `[env] GYRORES_CLI_PATH args`, capturing stdout and stderr.
-inline cli_result cli_run(const std::string& args, const std::string& env = "") {
-  static int counter = 0;
-  std::string errfile = "/tmp/gyrores_test_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(++counter);
-  std::string cmd = (env.empty() ? "" : env + " ") + std::string(GYRORES_CLI_PATH) + " " + args + " 2>" + errfile;
-  cli_result r{-1, "", ""};
-  FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  int st = ::pclose(p);
-  std::ifstream in(errfile);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  std::remove(errfile.c_str());
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+// Runs `[env] <cli> args` through the shell, capturing stdout and stderr.
+cli_result cli_run(const std::string& args, const std::string& env = "");
 
-inline int count_lines(const std::string& s) {
-  int c = 0;
-  for (char ch : s) c += ch == '\n';
-  return c;
-}
+// Starts `<cli> args` in the background (stdout and stderr to the given files, stdin closed)
+// and returns its process id, for tests that signal a running command.
+int cli_spawn(const std::string& args, const std::string& out_file, const std::string& err_file);
+// Waits for a spawned process; returns its exit status, or 128 + signal if a signal ended it.
+int cli_wait(int pid);
 
-// A fresh empty directory under /tmp.
-inline std::string temp_dir(const std::string& tag) {
-  std::string tmpl = "/tmp/gyrores_" + tag + "_XXXXXX";
-  std::string buf = tmpl;
-  char* d = ::mkdtemp(buf.data());
-  return d ? std::string(d) : std::string();
-}
+int count_lines(const std::string& s);
+
+// The whole file, or "" if it cannot be read.
+std::string read_text(const std::string& path);
+bool path_exists(const std::string& path);
+
+// A fresh empty directory under /tmp, removed with its content when the object goes away.
+class temp_dir {
+ public:
+  explicit temp_dir(const std::string& tag);
+  ~temp_dir();
+  temp_dir(const temp_dir&) = delete;
+  temp_dir& operator=(const temp_dir&) = delete;
+  const std::string& path() const { return path_; }
+  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
+  operator const std::string&() const { return path_; }
+
+ private:
+  std::string path_;
+};
 
 }  // namespace gyrores::test

@@ -26,6 +26,15 @@ using mpfr_real = boost::multiprecision::number<boost::multiprecision::mpfr_floa
 using mpfi_real = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<0>,
                                                 boost::multiprecision::et_off>;
 
+// The real types the compiled part of the library (src/lib/) instantiates: the ones the CLI uses.
+// A header lists its instantiations once, as a macro X(PREFIX, T) expanding to declarations
+// "PREFIX template R f<T>(...);", and writes GYRORES_FOR_COMPILED_REALS(X, extern) after the
+// templates (explicit instantiation declarations: users do not instantiate them again); one .cpp
+// in src/lib/ writes GYRORES_FOR_COMPILED_REALS(X, ) (the explicit instantiation definitions).
+// Other real types (cpp_bin_float, mpfi_real, ...) are instantiated implicitly where used.
+#define GYRORES_FOR_COMPILED_REALS(X, PREFIX) \
+  X(PREFIX, double) X(PREFIX, long double) X(PREFIX, ::gyrores::float128) X(PREFIX, ::gyrores::mpfr_real)
+
 template <class T> inline constexpr bool is_mpfr_v = std::is_same_v<T, mpfr_real>;
 template <class T> inline constexpr bool is_mpfi_v = std::is_same_v<T, mpfi_real>;
 template <class T> inline constexpr bool is_variable_precision_v = is_mpfr_v<T> || is_mpfi_v<T>;

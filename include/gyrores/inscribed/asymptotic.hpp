@@ -31,11 +31,11 @@
 //    error = 2 |e| x^2/a and ratio = error/bound = 2 |e|/pi^3 keep full relative accuracy for
 //    pairs of any size (error and bound may underflow to 0 in double for a > ~1e100; the ratio
 //    does not). As x -> 0, e -> tan^3 u/(3 (1 + sec^2 u)), so |theta_c - theta_asy| ~ C(s) x^2/a
-//    with C(s) = 2 |tan u|^3/(3 (1 + sec^2 u)) (docs/mathematics.md §3, "C(s)"). Since |m| <= b, |s| <= pi/2
-//    and C(s) <= C(pi/2) = 0.1549, i.e. ratio -> at most 0.0049967 (reached as b = 1, a -> oo).
-//    Observed (all coprime pairs with x < 1/2 and a <= 200 in tests/test_asymptotic.cpp, and a
-//    one-off sweep to a <= 1500): the ratio never exceeds that limit (max 0.0049967, at
-//    (100, 99) and (750, 749) respectively), so P7 holds, with a margin of ~200.
+//    with C(s) = 2 |tan u|^3/(3 (1 + sec^2 u)) (docs/mathematics.md §3, "C(s)"). Since |m| <= b,
+//    |s| <= pi/2 and C(s) <= C(pi/2) = 0.1549, i.e. ratio -> at most 0.0049967 (approached as
+//    b = 1, a -> oo; the largest ratio of a sweep is at its largest pair with b = 1). P7 itself
+//    is proved with a sharper constant in proofs/README.md (Lemma 7.1); the sweeps
+//    (`gyrores sweep`, check asy-bound) measure how sharp it is.
 //    u_c from psi and u_asy + d are compared (compute_error if they disagree).
 //
 // Applicability: the lobe equation has exactly one root in |u| < pi/2 when x < 1/2 (2b < a).
@@ -100,15 +100,20 @@ template <class T> struct asymptotic_report {
   T r_res_asy_rel_error{};               // |r_res_asy - r_res|/r_res (absolute |r_res_asy| if r_res = 0)
 };
 
-namespace detail {
-
-// round(a/(2b)) for a, b > 0 exactly: {K, tie}; on a tie (a/(2b) = K + 1/2) both K and K + 1.
-template <class L> std::pair<L, bool> asy_round_half(const L& a, const L& b) {
-  L twob = 2 * b;
-  L r = int_mod(a, twob);
-  if (r == b) return {L((a - b) / twob), true};
+// The paper's fast node k = round(a/(2b)) for a, b > 0, exactly (integers L: int128, big_int):
+// {k, tie}; on a tie (a/(2b) = k + 1/2, which happens exactly when b = 1 for a coprime pair)
+// both k and k + 1 are the paper's nodes and `k` is the smaller.
+template <class L> struct paper_node {
+  L k;
+  bool tie;
+};
+template <class L> paper_node<L> paper_fast_node(const L& a, const L& b) {
+  const L twob = 2 * b;
+  if (int_mod(a, twob) == b) return {L((a - b) / twob), true};
   return {int_floor_div(L(a + b), twob), false};
 }
+
+namespace detail {
 
 // Refuses pairs beyond T's exponent range (mpfr_real has none in practice).
 template <class T, pair_integer I> void asy_check_range(const resonant_pair<I>& p, const char* what) {
@@ -145,23 +150,29 @@ template <class T> root_tolerance<T> asy_u_tolerance(const T& s) {
   return {4 * real_epsilon<T>(), fl};
 }
 
-// Root of psi(u) = u - atan(tan(mu - x u)/x) on [-pi/2, pi/2] (the lobe equation); s = mu/x
-// only sets the tolerance floor (the root is ~ s/2 when s is small).
-template <class T> T asy_lobe_root(const T& x, const T& mu, const T& s, const T& pi) {
+}  // namespace detail
+
+// The exact lobe root u_c: the root of psi(u) = u - atan(tan(mu - x u)/x) on [-pi/2, pi/2], i.e.
+// of the lobe equation x tan u = tan(mu - x u) (precondition, not checked: 0 < x < 1/2, so that
+// |mu - x u| < pi/2 and the root is unique; mu = pi m/(2a) with |m| <= b). s = mu/x only sets the
+// tolerance floor (the root is ~ s/2 when s is small). To ~4 ulp; compute_error if TOMS 748 fails.
+template <class T> T lobe_equation_root(const T& x, const T& mu, const T& s, const T& pi) {
   using std::atan;
   using std::tan;
   if (mu == 0) return T(0);  // exact: psi is odd when mu = 0
   auto psi = [&](const T& u) { return T(u - atan(tan(mu - x * u) / x)); };
   T h = pi / 2, lo = -h;
-  return root_bracketed(psi, lo, h, psi(lo), psi(h), asy_u_tolerance(s),
-                        "asymptotic: lobe root of x tan u = tan(mu - x u)", asy_budget<T>())
+  return root_bracketed(psi, lo, h, psi(lo), psi(h), detail::asy_u_tolerance(s),
+                        "asymptotic: lobe root of x tan u = tan(mu - x u)", detail::asy_budget<T>())
       .root;
 }
 
-// e = (u_c - u_asy)/x^2 from the cancellation-free equation in the header comment. G is
-// strictly increasing in e (it is (x tan u - tan(mu - x u))/x^3 shifted by a constant), so the
-// root is bracketed by expanding away from the first-order guess e0.
-template <class T> T asy_error_scaled(const T& x, const T& s, const T& u_asy, const T& pi) {
+// e = (u_c - u_asy)/x^2 from the cancellation-free equation in the header comment, so that
+// |theta_c - theta_asy| = 2 |e| x^2/a keeps full relative accuracy for pairs of any size (x < 1/2;
+// s = pi m/(2b); u_asy = u_plus_tan_u_root(s)). G is strictly increasing in e (it is
+// (x tan u - tan(mu - x u))/x^3 shifted by a constant), so the root is bracketed by expanding
+// away from the first-order guess e0. compute_error if no bracket is found or TOMS 748 fails.
+template <class T> T asymptotic_error_scaled(const T& x, const T& s, const T& u_asy, const T& pi) {
   using std::cos;
   using std::fabs;
   using std::sin;
@@ -170,9 +181,9 @@ template <class T> T asy_error_scaled(const T& x, const T& s, const T& u_asy, co
     T d = e * x2;
     T sinc = d == 0 ? T(1) : T(sin(d) / d);
     T y = y0 - d;
-    return T(e * (1 + sinc / (ca * cos(u_asy + d))) - y * y * y * tan_minus_id_over_cube(T(x * y)));
+    return T(e * (1 + sinc / (ca * cos(u_asy + d))) - y * y * y * detail::tan_minus_id_over_cube(T(x * y)));
   };
-  const T e0 = y0 * y0 * y0 * tan_minus_id_over_cube(T(x * y0)) / (1 + 1 / (ca * ca));
+  const T e0 = y0 * y0 * y0 * detail::tan_minus_id_over_cube(T(x * y0)) / (1 + 1 / (ca * ca));
   const T g0 = G(e0);
   if (g0 == 0) return e0;
   // Domain: |u_asy + e x^2| < pi/2; G -> -inf / +inf at its ends.
@@ -203,8 +214,10 @@ template <class T> T asy_error_scaled(const T& x, const T& s, const T& u_asy, co
   T lo = dir > 0 ? near : far, hi = dir > 0 ? far : near;
   T glo = dir > 0 ? gnear : gfar, ghi = dir > 0 ? gfar : gnear;
   root_tolerance<T> tol{4 * real_epsilon<T>(), fabs(e0) > 0 ? T(fabs(e0) / 16) : T(1)};
-  return root_bracketed(G, lo, hi, glo, ghi, tol, "asymptotic: (u_c - u_asy)/x^2", asy_budget<T>()).root;
+  return root_bracketed(G, lo, hi, glo, ghi, tol, "asymptotic: (u_c - u_asy)/x^2", detail::asy_budget<T>()).root;
 }
+
+namespace detail {
 
 // 2 (k pi + u)/a with k/a formed as one exact-integer ratio.
 template <class T, class L> T asy_theta(const L& k, const L& a, const T& u, const T& pi) {
@@ -248,27 +261,29 @@ bool asy_holds_global_min(const inscribed_result<T>& lr, const big_int& A, const
 
 }  // namespace detail
 
-// The root u of u + tan u = s in (-pi/2, pi/2), for any real s, in T.
-// Solved as u - atan(s - u) = 0 on [-pi/2, pi/2] with root_bracketed (TOMS 748; the sign change
-// holds for every s, and the derivative lies in (1, 2]). Accuracy: a few ulp relative to
-// max(|u|, min(1, |s|/8)), i.e. full relative accuracy also for tiny s.
-// Throws compute_error if the solver fails (it never returns an unverified number).
-template <class T> T u_plus_tan_u_root(const T& s) {
+// The root u of u + tan u = s in (-pi/2, pi/2), for any real s, in T, with the solver's record
+// (final bracket, evaluations). Solved as u - atan(s - u) = 0 on [-pi/2, pi/2] with
+// root_bracketed (TOMS 748; the sign change holds for every s, and the derivative lies in
+// (1, 2]). Accuracy: a few ulp relative to max(|u|, min(1, |s|/8)), i.e. full relative accuracy
+// also for tiny s. Throws compute_error if the solver fails (it never returns an unverified number).
+template <class T> root_result<T> u_plus_tan_u_solve(const T& s) {
   using std::atan;
-  if (s == 0) return T(0);  // exact: the root is odd in s
+  if (s == 0) return {T(0), T(0), T(0), 0};  // exact: the root is odd in s
   auto phi = [&](const T& u) { return T(u - atan(s - u)); };
   T h = real_pi<T>() / 2, lo = -h;
-  return root_bracketed(phi, lo, h, phi(lo), phi(h), detail::asy_u_tolerance(s), "asymptotic: u + tan u = s",
-                        detail::asy_budget<T>())
-      .root;
+  auto r = root_bracketed(phi, lo, h, phi(lo), phi(h), detail::asy_u_tolerance(s), "asymptotic: u + tan u = s",
+                          detail::asy_budget<T>());
+  r.evaluations += 2;  // phi(lo), phi(hi)
+  return r;
 }
+template <class T> T u_plus_tan_u_root(const T& s) { return u_plus_tan_u_solve(s).root; }
 
 // The paper's fast-node indices k = round(a/(2b)) (exact integer arithmetic): one k, or the two
 // k = (a-1)/2, (a+1)/2 when a/(2b) is a half-integer (exactly when b = 1). Defined for every
 // pair; meaningful for the asymptotics only when x < 1/2.
 template <pair_integer I> std::vector<big_int> paper_lobe_indices(const resonant_pair<I>& p) {
   big_int a = to_big(p.order()), b = to_big(p.delta());
-  auto [k, tie] = detail::asy_round_half(a, b);
+  auto [k, tie] = paper_fast_node(a, b);
   if (tie) return {k, big_int(k + 1)};
   return {k};
 }
@@ -299,7 +314,7 @@ template <class T, pair_integer I> T theta_asy_only(const resonant_pair<I>& p) {
   const L a = p.order(), b = L(p.delta());
   if (2 * b >= a) throw usage_error("theta_asy_only: x = b/a >= 1/2 for " + p.str() + ": the lobe asymptotics do not apply");
   detail::asy_check_range<T>(p, "theta_asy_only");
-  const L k = detail::asy_round_half(a, b).first;
+  const L k = paper_fast_node(a, b).k;
   const L m = a - 2 * k * b;
   T pi = real_pi<T>();
   T s = pi * real_from_ratio<T>(m, L(2 * b));
@@ -326,7 +341,7 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
   using std::sin;
   using std::tan;
   using L = wide_int<I>;
-  detail::check_amplitude(v);
+  check_amplitude(v);
   asymptotic_report<T> rep;
   const L a = p.order(), b = L(p.delta());
   rep.m_min = p.strand_offset_min();
@@ -344,7 +359,7 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
   auto c = resonant_constants_of<T>(p, v);
   const T pi = c.pi, x = c.x;
   rep.x = x;
-  auto [k0, tie] = detail::asy_round_half(a, b);
+  auto [k0, tie] = paper_fast_node(a, b);
   rep.tie = tie;
   if (tie) rep.reason = "a/(2b) is a half-integer (b = 1): both lobes k = (a-1)/2 and (a+1)/2 are reported (mirror images)";
   if (p.degenerate()) {
@@ -377,12 +392,12 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
       const T w = x * (lo.s - lo.u_asy);
       lo.qdot_asy = T(frr.sign) * v * cos(lo.u_asy) * cos(w) * w * w * w * detail::tan_minus_id_over_cube(w);
     }
-    lo.u_c = detail::asy_lobe_root(x, lo.mu, lo.s, pi);
+    lo.u_c = lobe_equation_root(x, lo.mu, lo.s, pi);
     lo.theta_c = detail::asy_theta(k, a, lo.u_c, pi);
     // R = q^2 at the root of q'; |q| keeps full relative accuracy where q' (which vanishes only up
     // to the root's rounding) would not (tiny s: q ~ x u^2 while the q' residual is ~ eps x u).
     lo.r_c = fabs(lobe_eval(c, frr, lo.u_c).q);
-    const T e = detail::asy_error_scaled(x, lo.s, lo.u_asy, pi);
+    const T e = asymptotic_error_scaled(x, lo.s, lo.u_asy, pi);
     const T x2 = x * x;
     // Cross-check: the two routes to u_c (psi root; u_asy + e x^2) must agree to rounding.
     const T gap = fabs(lo.u_c - (lo.u_asy + e * x2));

@@ -29,9 +29,6 @@ struct global_search_options {
 };
 
 namespace detail {
-template <class T> void check_amplitude(const T& v) {
-  if (!(v > 0)) throw usage_error("the impulse amplitude qdot0 must be > 0");
-}
 
 // Collect all global minimisers among (frame, u, R) candidates; fills the result.
 template <class T, class L> struct critical_point {
@@ -72,7 +69,7 @@ void fill_minimisers(inscribed_result<T>& r, const resonant_constants<T>& c, con
 
 template <class T, pair_integer I>
 inscribed_result<T> inscribed_global(const resonant_pair<I>& p, const T& v, const global_search_options& opt = {}) {
-  detail::check_amplitude(v);
+  check_amplitude(v);
   if (p.degenerate()) return inscribed_degenerate<T>(p, v);
   if (to_big(p.order()) > big_int(opt.max_order))
     throw compute_error("global search is limited to order tau + sigma <= " + std::to_string(opt.max_order) +

@@ -37,10 +37,18 @@
 
 namespace gyrores {
 
+// How the q' root at each candidate bracket is found.
+enum class lattice_solver {
+  scout_and_polish,  // default: scout in double (safeguarded Newton or TOMS 748), polish in T by Newton
+  toms748_full,      // TOMS 748 in T at every bracket, no scout, no Newton (slower; a cross-check
+                     // and the benchmark's "TOMS 748 in local coordinates")
+};
+
 struct lattice_options {
   // Solve the q' roots in the five intervals around the pass (for any x) and keep the smallest R,
   // instead of the single bracket of the default.
   bool window_always = false;
+  lattice_solver solver = lattice_solver::scout_and_polish;
 };
 
 namespace detail {
@@ -132,21 +140,27 @@ scout_root<S> lattice_solve_site(const resonant_constants<S>& c, const lattice_c
   return lattice_solve(c, s.frame, a, lobe_u_at(c, s.frame, a, s.lo_num, s.den), lobe_u_at(c, s.frame, a, s.hi_num, s.den));
 }
 
-// Newton polish of q' = 0 in frame f from u0 (accurate to about start_bits), in T. For
-// mpfr_real the precision doubles up to the current default, so only the last step runs at full
-// precision. Returns u and R; R comes from the last evaluation, at a point within |step| of the
-// root, and R is stationary there (q' = 0), so its error is O(step^2).
-template <class T> struct polished {
-  T u, radius_sq;
-  std::uintmax_t evaluations;
-};
-
 template <class T> void set_working_precision(T& v) {
   if constexpr (is_mpfr_v<T>) v.precision(T::default_precision());
 }
 
+}  // namespace detail
+
+// Newton polish of q' = 0 in lobe frame f (a = tau + sigma) from u0, a root accurate to about
+// start_bits bits, in T. For mpfr_real the precision doubles up to the current default, so only
+// the last step runs at full precision; other types take plain Newton steps. Returns u and R;
+// R comes from the last evaluation, at a point within |step| of the root, and R is stationary
+// there (q' = 0), so its error is O(step^2). Precondition (not checked): u0 is in the root's
+// basin of Newton convergence (e.g. the lattice method's double scout). compute_error if 8
+// full-precision steps do not reach half the working precision.
+template <class T> struct lobe_polish_result {
+  T u, radius_sq;
+  std::uintmax_t evaluations;
+};
+
+
 template <class T, class L, pair_integer I>
-polished<T> lattice_polish(const resonant_pair<I>& p, const T& v, const lobe_frame<L>& f, const L& a, const T& u0,
+lobe_polish_result<T> lobe_root_polish(const resonant_pair<I>& p, const T& v, const lobe_frame<L>& f, const L& a, const T& u0,
                            unsigned start_bits) {
   using std::fabs;
   using std::ldexp;
@@ -168,12 +182,12 @@ polished<T> lattice_polish(const resonant_pair<I>& p, const T& v, const lobe_fra
     std::reverse(ladder.begin(), ladder.end());
     for (unsigned bits : ladder) {
       scoped_digits d(digits10_for_bits(bits));
-      set_working_precision(u);
+      detail::set_working_precision(u);
       auto c = resonant_constants_of<T>(p, T(v));
       T rsq;
       newton_step(c, lobe_frame_real_of(c, f, a).mu, rsq);
     }
-    set_working_precision(u);
+    detail::set_working_precision(u);
   }
   auto c = resonant_constants_of<T>(p, v);
   const auto fr = lobe_frame_real_of(c, f, a);
@@ -187,6 +201,8 @@ polished<T> lattice_polish(const resonant_pair<I>& p, const T& v, const lobe_fra
   }
   throw compute_error("lattice: Newton polish of q' = 0 did not converge in " + real_type_name<T>());
 }
+
+namespace detail {
 
 template <class T, class L>
 void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a,
@@ -213,76 +229,92 @@ void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const 
   r.first = {to_big(g.k), to_big(g.j), to_big(g.m), mirrored ? T(-u) : u};
 }
 
+// The q' root and R at every candidate site, before the choice of the minimiser.
+template <class T> struct lattice_candidates {
+  std::vector<T> u, radius_sq;
+  std::uintmax_t evaluations = 0;
+  unsigned bits = 53;  // accuracy of the roots (the scout type's precision)
+};
+
+template <class S, class T, class L, pair_integer I>
+void lattice_scout_in(lattice_candidates<T>& out, const resonant_pair<I>& p, const S& v,
+                      const std::vector<lattice_candidate_site<L>>& sites, const L& a) {
+  auto cs = resonant_constants_of<S>(p, v);
+  for (const auto& s : sites) {
+    auto sr = lattice_solve_site(cs, s, a);
+    out.evaluations += sr.evaluations;
+    out.u.push_back(T(sr.u));
+    out.radius_sq.push_back(T(sr.radius_sq));
+  }
+}
+
+// The scout: every site solved in double, or in MPFR at 64 bits when the pair is beyond double's
+// exponent range (`huge`; then T is mpfr_real, checked by the caller).
+template <class T, class L, pair_integer I>
+lattice_candidates<T> lattice_scout(const resonant_pair<I>& p, const T& v,
+                                    const std::vector<lattice_candidate_site<L>>& sites, const L& a, bool huge) {
+  lattice_candidates<T> out;
+  if constexpr (std::is_same_v<T, double>) {
+    lattice_scout_in<double>(out, p, v, sites, a);
+  } else if (!huge) {
+    lattice_scout_in<double>(out, p, 1.0, sites, a);
+  } else if constexpr (is_mpfr_v<T>) {
+    scoped_digits d(20);
+    out.bits = 64;
+    lattice_scout_in<mpfr_real>(out, p, mpfr_real(1), sites, a);
+  }
+  return out;
+}
+
+// lattice_solver::toms748_full: every site solved by TOMS 748 in T directly.
+template <class T, class L, pair_integer I>
+lattice_candidates<T> lattice_solve_full(const resonant_pair<I>& p, const T& v,
+                                         const std::vector<lattice_candidate_site<L>>& sites, const L& a) {
+  lattice_candidates<T> out;
+  out.bits = real_bits<T>();
+  auto c = resonant_constants_of<T>(p, v);
+  for (const auto& s : sites) {
+    const T h = c.pi / 2;
+    auto sr = s.den == 0 ? lattice_solve(c, s.frame, a, T(-h), h)
+                         : lattice_solve(c, s.frame, a, lobe_u_at(c, s.frame, a, s.lo_num, s.den),
+                                         lobe_u_at(c, s.frame, a, s.hi_num, s.den));
+    out.evaluations += sr.evaluations;
+    out.u.push_back(sr.u);
+    out.radius_sq.push_back(sr.radius_sq);
+  }
+  return out;
+}
+
+template <class T> std::size_t lattice_smallest(const lattice_candidates<T>& c) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < c.radius_sq.size(); ++i)
+    if (c.radius_sq[i] < c.radius_sq[best]) best = i;
+  return best;
+}
+
 template <class T, class L, pair_integer I>
 inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v, const lattice_options& opt) {
   const L tau = L(p.tau()), a = L(p.order()), b = L(p.delta());
   // x >= 1/2 iff 2b >= a.
-  bool window = opt.window_always || 2 * b >= a;
-  auto sites = lattice_sites(tau, a, b, window, opt.window_always);
-
-  // Scout in double unless the pair is beyond double's exponent range.
+  const bool window = opt.window_always || 2 * b >= a;
+  const auto sites = lattice_sites(tau, a, b, window, opt.window_always);
   const bool huge = to_big(p.order()) > (big_int(1) << 900);
   if (huge && !is_mpfr_v<T>)
     throw compute_error("pair " + p.str() + " exceeds the exponent range of " + real_type_name<T>() +
                         "; use mpfr_real (more digits)");
-  std::size_t best = 0;
-  std::vector<double> scout_u(sites.size()), scout_r(sites.size());
-  std::uintmax_t evals = 0;
-  unsigned scout_bits = 53;
-  auto scout_all = [&](auto tag) {
-    using S = decltype(tag);
-    auto cs = resonant_constants_of<S>(p, S(1));
-    std::vector<S> us, rs;
-    for (auto& s : sites) {
-      auto sr = lattice_solve_site(cs, s, a);
-      evals += sr.evaluations;
-      us.push_back(sr.u);
-      rs.push_back(sr.radius_sq);
-    }
-    return std::pair{us, rs};
-  };
-  std::vector<T> ut;
-  std::vector<T> rt;
-  if constexpr (std::is_same_v<T, double>) {
-    auto cs = resonant_constants_of<double>(p, v);
-    for (auto& s : sites) {
-      auto sr = lattice_solve_site(cs, s, a);
-      evals += sr.evaluations;
-      ut.push_back(sr.u);
-      rt.push_back(sr.radius_sq);
-    }
-  } else {
-    if (huge) {
-      if constexpr (is_mpfr_v<T>) {
-        std::vector<mpfr_real> us, rs;
-        {
-          scoped_digits d(20);
-          scout_bits = 64;
-          std::tie(us, rs) = scout_all(mpfr_real());
-        }
-        for (auto& x : us) ut.push_back(x);
-        for (auto& x : rs) rt.push_back(x);
-      }
-    } else {
-      auto [us, rs] = scout_all(double());
-      for (auto& x : us) ut.push_back(T(x));
-      for (auto& x : rs) rt.push_back(T(x));
-    }
-  }
-  for (std::size_t i = 1; i < sites.size(); ++i)
-    if (rt[i] < rt[best]) best = i;
-
-  inscribed_result<T> r;
-  r.method = inscribed_method::lattice;
-  r.critical_points = sites.size();
-  T u = ut[best], rsq = rt[best];
-  if constexpr (!std::is_same_v<T, double>) {
+  const bool polish = opt.solver == lattice_solver::scout_and_polish && !std::is_same_v<T, double>;
+  auto cand = opt.solver == lattice_solver::toms748_full ? lattice_solve_full(p, v, sites, a)
+                                                          : lattice_scout(p, v, sites, a, huge);
+  std::size_t best = lattice_smallest(cand);
+  T u = cand.u[best], rsq = cand.radius_sq[best];
+  if (polish) {
     // Polish every scout candidate within a relative 1e-8 of the best (normally just one).
+    const T limit = cand.radius_sq[best] * (1 + T(1e-8));
     bool have = false;
     for (std::size_t i = 0; i < sites.size(); ++i) {
-      if (!(rt[i] <= rt[best] * (1 + T(1e-8)))) continue;
-      auto pol = lattice_polish(p, v, sites[i].frame, a, ut[i], scout_bits);
-      evals += pol.evaluations;
+      if (!(cand.radius_sq[i] <= limit)) continue;
+      auto pol = lobe_root_polish(p, v, sites[i].frame, a, cand.u[i], cand.bits);
+      cand.evaluations += pol.evaluations;
       if (!have || pol.radius_sq < rsq) {
         u = pol.u;
         rsq = pol.radius_sq;
@@ -290,10 +322,11 @@ inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v
         have = true;
       }
     }
-  } else {
-    (void)scout_bits;
   }
-  r.evaluations = evals;
+  inscribed_result<T> r;
+  r.method = inscribed_method::lattice;
+  r.critical_points = sites.size();
+  r.evaluations = cand.evaluations;
   auto c = resonant_constants_of<T>(p, v);
   lattice_fill(r, c, sites[best].frame, a, b, u, rsq, p.strand_offset_min());
   return r;
@@ -315,7 +348,7 @@ inline bool lattice_fits_int128(const resonant_pair<std::int64_t>& p) {
 // The inscribed radius of any coprime pair by the lattice method (see the header comment).
 template <class T, pair_integer I>
 inscribed_result<T> inscribed_lattice(const resonant_pair<I>& p, const T& v, const lattice_options& opt = {}) {
-  detail::check_amplitude(v);
+  check_amplitude(v);
   if (p.degenerate()) return inscribed_degenerate<T>(p, v);
   // int128 holds every intermediate when a b and a tau stay below 2^124 (the largest products
   // are (2j+1) a and 2 k b with j < b, k < a, and 2 k tau in the window mode).

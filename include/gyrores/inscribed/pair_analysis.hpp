@@ -34,7 +34,7 @@ template <class T> struct pair_analysis {
 
 template <class T, pair_integer I>
 pair_analysis<T> analyse_pair(const resonant_pair<I>& p, const T& v, const analysis_options& opt = {}) {
-  detail::check_amplitude(v);
+  check_amplitude(v);
   auto c = resonant_constants_of<T>(p, v);
   pair_analysis<T> r;
   r.qdot0 = v;

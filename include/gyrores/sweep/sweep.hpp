@@ -304,7 +304,7 @@ template <class T> void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair
     const std::int64_t m = a - 2 * k * b;
     const T s = c.pi * real_from_ratio<T>(m, twob);
     const T u_asy = u_plus_tan_u_root(s);
-    const T e = detail::asy_error_scaled(c.x, s, u_asy, c.pi);
+    const T e = asymptotic_error_scaled(c.x, s, u_asy, c.pi);
     const T at = real_from_int<T>(a), x2 = c.x * c.x, pi3 = c.pi * c.pi * c.pi;
     r.has_asy = true;
     r.asy_constant = 2 * fabs(e);
