@@ -418,4 +418,17 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
   return rep;
 }
 
+// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+#define GYRORES_ASYMPTOTIC_INSTANCES(PREFIX, T) \
+  PREFIX template root_result<T> u_plus_tan_u_solve<T>(const T&); \
+  PREFIX template T lobe_equation_root<T>(const T&, const T&, const T&, const T&); \
+  PREFIX template T asymptotic_error_scaled<T>(const T&, const T&, const T&, const T&); \
+  PREFIX template T theta_asy_only<T, std::int64_t>(const resonant_pair<std::int64_t>&); \
+  PREFIX template T theta_asy_only<T, big_int>(const resonant_pair<big_int>&); \
+  PREFIX template T theta_asy_only<T, std::int64_t>(const resonant_pair<std::int64_t>&, const big_int&); \
+  PREFIX template T theta_asy_only<T, big_int>(const resonant_pair<big_int>&, const big_int&); \
+  PREFIX template asymptotic_report<T> paper_asymptotics<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&); \
+  PREFIX template asymptotic_report<T> paper_asymptotics<T, big_int>(const resonant_pair<big_int>&, const T&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_ASYMPTOTIC_INSTANCES, extern)
+
 }  // namespace gyrores

@@ -43,4 +43,10 @@ void cross_check_lattice(const resonant_pair<I>& p, const T& v, const inscribed_
     fail("near-tie between distinct critical values; double precision cannot separate them");
 }
 
+// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+#define GYRORES_CROSS_CHECK_INSTANCES(PREFIX, T) \
+  PREFIX template void cross_check_lattice<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&, const inscribed_result<T>&); \
+  PREFIX template void cross_check_lattice<T, big_int>(const resonant_pair<big_int>&, const T&, const inscribed_result<T>&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_CROSS_CHECK_INSTANCES, extern)
+
 }  // namespace gyrores

@@ -31,4 +31,10 @@ template <class T, pair_integer I> inscribed_result<T> inscribed_degenerate(cons
   return r;
 }
 
+// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+#define GYRORES_DEGENERATE_INSTANCES(PREFIX, T) \
+  PREFIX template inscribed_result<T> inscribed_degenerate<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&); \
+  PREFIX template inscribed_result<T> inscribed_degenerate<T, big_int>(const resonant_pair<big_int>&, const T&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_DEGENERATE_INSTANCES, extern)
+
 }  // namespace gyrores

@@ -364,4 +364,10 @@ inscribed_result<T> inscribed_lattice(const resonant_pair<I>& p, const T& v, con
   }
 }
 
+// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+#define GYRORES_LATTICE_INSTANCES(PREFIX, T) \
+  PREFIX template inscribed_result<T> inscribed_lattice<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&, const lattice_options&); \
+  PREFIX template inscribed_result<T> inscribed_lattice<T, big_int>(const resonant_pair<big_int>&, const T&, const lattice_options&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_LATTICE_INSTANCES, extern)
+
 }  // namespace gyrores

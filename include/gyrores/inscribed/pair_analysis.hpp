@@ -57,4 +57,10 @@ pair_analysis<T> analyse_pair(const resonant_pair<I>& p, const T& v, const analy
   return r;
 }
 
+// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+#define GYRORES_PAIR_ANALYSIS_INSTANCES(PREFIX, T) \
+  PREFIX template pair_analysis<T> analyse_pair<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&, const analysis_options&); \
+  PREFIX template pair_analysis<T> analyse_pair<T, big_int>(const resonant_pair<big_int>&, const T&, const analysis_options&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_PAIR_ANALYSIS_INSTANCES, extern)
+
 }  // namespace gyrores

@@ -47,7 +47,15 @@ template <pair_integer I> class resonant_pair {
     int d = delta_mod4();
     return d == 2 ? 0 : (d % 2 == 1 ? 1 : 2);
   }
-  std::string str() const { return "(" + to_decimal(tau_) + ", " + to_decimal(sigma_) + ")"; }
+  std::string str() const {
+    // Built by appending: GCC 12 reports a false -Wrestrict on "(" + std::string&&.
+    std::string s(1, '(');
+    s += to_decimal(tau_);
+    s += ", ";
+    s += to_decimal(sigma_);
+    s += ')';
+    return s;
+  }
 
   friend bool operator==(const resonant_pair&, const resonant_pair&) = default;
 
