@@ -1,46 +1,32 @@
-// Sweeps (sweep.hpp, sweep_io.hpp): counts against independent counting, determinism across
+// Sweeps (sweep/, io/sweep_*.hpp): counts against independent counting, determinism across
 // thread counts, shards + merge = single run, resume after interruption, atomic files.
 #include <catch2/catch.hpp>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
-#include <cstdio>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <gyrores/io/sweep_io.hpp>
+#include <gyrores/io/csv.hpp>
+#include <gyrores/io/files.hpp>
+#include <gyrores/io/sweep_files.hpp>
+#include <gyrores/io/sweep_merge.hpp>
+#include <gyrores/io/sweep_summary.hpp>
+#include <gyrores/model/enumerate.hpp>
+
+#include "testing/cli_run.hpp"
 
 using namespace gyrores;
+using gyrores::test::path_exists;
+using gyrores::test::read_text;
+using gyrores::test::temp_dir;
 
 namespace {
-
-// A fresh directory under /tmp, removed (with its files) at scope exit.
-struct temp_dir {
-  std::string path;
-  temp_dir() {
-    char tmpl[] = "/tmp/gyrores_test_sweep_XXXXXX";
-    char* p = ::mkdtemp(tmpl);
-    REQUIRE(p != nullptr);
-    path = p;
-  }
-  ~temp_dir() { std::system(("rm -rf '" + path + "'").c_str()); }
-  std::string operator/(const std::string& name) const { return path + "/" + name; }
-};
-
-bool exists(const std::string& p) { return ::access(p.c_str(), F_OK) == 0; }
-
-std::string read_all(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 // The file without its last line (the end line carries the run time).
 std::string without_last_line(const std::string& s) {
@@ -49,7 +35,15 @@ std::string without_last_line(const std::string& s) {
   return cut == std::string::npos ? std::string() : s.substr(0, cut + 1);
 }
 
-sweep_json read_json(const std::string& p) { return sweep_json::parse(read_all(p)); }
+json read_json(const std::string& p) { return json::parse(read_text(p)); }
+
+// The names of the entries of a directory, sorted.
+std::vector<std::string> file_names(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
 
 sweep_config config(std::int64_t max_order, std::int64_t min_order = 3) {
   sweep_config c;
@@ -95,6 +89,41 @@ TEST_CASE("sweep: check lists parse; unknown names are usage errors", "[sweep]")
   c.shard_index = 4;
   c.shard_count = 4;
   CHECK_THROWS_AS(sweep_validate(c), usage_error);
+  // The library names its parameters, never a CLI flag.
+  CHECK_THROWS_WITH(sweep_validate(config(2)), "max_order must be >= 3, got 2");
+  CHECK_THROWS_WITH(sweep_validate(config(10, 11)), "min_order 11 exceeds max_order 10");
+  c = config(10);
+  c.cross_check_max_order = -1;
+  CHECK_THROWS_WITH(sweep_validate(c), "cross_check_max_order must be >= 0");
+  CHECK(sweep_parse_format("jsonl") == sweep_format::jsonl);
+  CHECK_THROWS_WITH(sweep_parse_format("xml"), "rows format must be csv or jsonl, got 'xml'");
+}
+
+TEST_CASE("sweep: CSV fields and JSON Lines text read back as written", "[sweep]") {
+  const std::vector<std::string> written = {"plain", "a,b", "say \"hi\"", "", "1e-5"};
+  std::string line;
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    if (i) line += ',';
+    csv_append_field(line, written[i]);
+  }
+  CHECK(line == "plain,\"a,b\",\"say \"\"hi\"\"\",,1e-5");
+  CHECK(csv_split_line(line) == written);
+  // A row whose note holds quotes, a backslash and a tab: valid JSON, and the same text back.
+  sweep_row<double> r = sweep_evaluate<double>(resonant_pair<std::int64_t>(9, 4), config(30));
+  r.note = "a \"note\" with \\ and \t";
+  std::string out;
+  sweep_format_row(out, r, sweep_format::jsonl, 17);
+  REQUIRE(out.back() == '\n');
+  const json j = json::parse(out);
+  CHECK(j["note"] == r.note);
+  CHECK(j["tau"] == 9);
+  CHECK(j["check_paper_node"] == "fail");
+  CHECK(j["t_first_over_proxy"] == sweep_double_text(r.t_ratio));
+  out.clear();
+  sweep_format_row(out, r, sweep_format::csv, 17);
+  const auto fields = csv_split_line(out.substr(0, out.size() - 1));
+  REQUIRE(fields.size() == sweep_row_columns().size());
+  CHECK(fields.back() == r.note);
 }
 
 TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]") {
@@ -211,9 +240,9 @@ TEST_CASE("sweep: paper-node verdicts agree with the minimiser thetas", "[sweep]
 }
 
 TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
-  temp_dir d;
+  temp_dir d("test_sweep");
   const sweep_config c = config(70);
-  sweep_json s1, s2;
+  json s1, s2;
   for (unsigned threads : {1u, 2u}) {
     sweep_files f;
     f.rows_path = d / ("rows" + std::to_string(threads) + ".csv");
@@ -223,7 +252,7 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
     CHECK(rep.threads == threads);
     (threads == 1 ? s1 : s2) = read_json(f.summary_path);
   }
-  CHECK(without_last_line(read_all(d / "rows1.csv")) == without_last_line(read_all(d / "rows2.csv")));
+  CHECK(without_last_line(read_text(d / "rows1.csv")) == without_last_line(read_text(d / "rows2.csv")));
   CHECK(sweep_summary_core(s1) == sweep_summary_core(s2));
   CHECK(s1["run"]["threads"] == 1);
   CHECK(s2["run"]["threads"] == 2);
@@ -239,7 +268,7 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
   CHECK(s1["asy_ratio_max"]["pair"].size() == 2);
   for (const char* k : {"min", "median", "max"}) CHECK(s1["t_first_over_proxy"][k].is_string());
   // Rows: one per pair between the two metadata lines.
-  std::istringstream rows(read_all(d / "rows1.csv"));
+  std::istringstream rows(read_text(d / "rows1.csv"));
   std::string line;
   int n = 0;
   while (std::getline(rows, line)) ++n;
@@ -247,13 +276,13 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
 }
 
 TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard summaries)", "[sweep]") {
-  temp_dir d;
+  temp_dir d("test_sweep");
   const std::int64_t M = 90;
   sweep_files single;
   single.summary_path = d / "single.json";
   auto rep = sweep_to_files<double>(config(M), single, engine(2));
   REQUIRE(rep.complete);
-  const sweep_json want = sweep_summary_core(read_json(single.summary_path));
+  const json want = sweep_summary_core(read_json(single.summary_path));
 
   std::vector<std::string> csv, jsonl, summaries;
   for (int i = 0; i < 4; ++i) {
@@ -271,7 +300,7 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
     csv.push_back(f.rows_path);
     jsonl.push_back(g.rows_path);
     summaries.push_back(f.summary_path);
-    CHECK(exists(f.summary_path + ".values"));
+    CHECK(path_exists(f.summary_path + ".values"));
   }
   CHECK(sweep_summary_core(sweep_merge(csv)) == want);
   CHECK(sweep_summary_core(sweep_merge(jsonl)) == want);
@@ -294,122 +323,141 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
   CHECK(sweep_summary_core(sweep_merge({whole.rows_path})) == want);
 }
 
-TEST_CASE("sweep: resume after a stop or a crash continues to the same result", "[sweep]") {
-  temp_dir d;
-  const sweep_config c = config(80);
-  sweep_files ref;
-  ref.rows_path = d / "ref.csv";
-  ref.summary_path = d / "ref.json";
-  REQUIRE(sweep_to_files<double>(c, ref, engine(2)).complete);
-  const std::string ref_rows = without_last_line(read_all(ref.rows_path));
-  const sweep_json ref_sum = sweep_summary_core(read_json(ref.summary_path));
+namespace {
 
-  SECTION("max_pairs limits, then resume twice") {
+// An uninterrupted run of config(80) in a fresh directory: what every resumed run must reproduce.
+class resume_fixture {
+ protected:
+  temp_dir d{"test_sweep"};
+  const sweep_config c = config(80);
+  std::string ref_rows;  // CSV, without the end line
+  json ref_summary;      // sweep_summary_core
+
+  resume_fixture() {
     sweep_files f;
-    f.rows_path = d / "a.csv";
-    f.summary_path = d / "a.json";
-    auto e = engine(2);
-    e.max_pairs = 100;
-    auto r1 = sweep_to_files<double>(c, f, e);
-    CHECK_FALSE(r1.complete);
-    CHECK(r1.done == 100);
-    CHECK_FALSE(exists(f.rows_path));  // only a.csv.part: never a partial a.csv
-    CHECK(exists(f.rows_path + ".part"));
-    CHECK_FALSE(exists(f.summary_path));
-    CHECK(exists(r1.state_path));
+    f.rows_path = d / "ref.csv";
+    f.summary_path = d / "ref.json";
+    REQUIRE(sweep_to_files<double>(c, f, engine(2)).complete);
+    ref_rows = without_last_line(read_text(f.rows_path));
+    ref_summary = sweep_summary_core(read_json(f.summary_path));
+  }
+
+  // Resumes the sweep of f to its end: the state is gone, the summary (and CSV rows) are the reference's.
+  void resume_to_end(sweep_files f, sweep_engine_options e) {
     f.resume = true;
-    e.max_pairs = 333;
-    auto r2 = sweep_to_files<double>(c, f, e);
-    CHECK_FALSE(r2.complete);
-    CHECK(r2.done == 433);
     e.max_pairs = 0;
-    auto r3 = sweep_to_files<double>(c, f, e);
-    CHECK(r3.complete);
-    CHECK_FALSE(exists(r3.state_path));
-    CHECK(without_last_line(read_all(f.rows_path)) == ref_rows);
-    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_sum);
+    e.stop = nullptr;
+    const auto rep = sweep_to_files<double>(c, f, e);
+    REQUIRE(rep.complete);
+    CHECK_FALSE(path_exists(rep.state_path));
+    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_summary);
+    if (!f.rows_path.empty() && f.rows_format == sweep_format::csv)
+      CHECK(without_last_line(read_text(f.rows_path)) == ref_rows);
   }
-  SECTION("stop flag (as set by SIGINT), summary only, then resume") {
-    sweep_files f;
-    f.summary_path = d / "b.json";
-    std::atomic<bool> stop{false};
-    auto e = engine(2, 16);
-    e.stop = &stop;
-    auto r1 = sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
-      if (p.done >= 200) stop = true;
-    });
-    CHECK_FALSE(r1.complete);
-    CHECK(r1.done >= 200);
-    CHECK(r1.done < ref_sum["pairs"].get<std::uint64_t>());
-    CHECK_FALSE(exists(f.summary_path));
-    stop = false;
-    f.resume = true;
-    auto r2 = sweep_to_files<double>(c, f, e);
-    REQUIRE(r2.complete);
-    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_sum);
+};
+
+}  // namespace
+
+TEST_CASE_METHOD(resume_fixture, "sweep: resume after max_pairs limits, twice, gives the uninterrupted result", "[sweep]") {
+  sweep_files f;
+  f.rows_path = d / "a.csv";
+  f.summary_path = d / "a.json";
+  auto e = engine(2);
+  e.max_pairs = 100;
+  auto r1 = sweep_to_files<double>(c, f, e);
+  CHECK_FALSE(r1.complete);
+  CHECK(r1.done == 100);
+  CHECK_FALSE(path_exists(f.rows_path));  // only a.csv.part: never a partial a.csv
+  CHECK(path_exists(f.rows_path + ".part"));
+  CHECK_FALSE(path_exists(f.summary_path));
+  CHECK(path_exists(r1.state_path));
+  f.resume = true;
+  e.max_pairs = 333;
+  auto r2 = sweep_to_files<double>(c, f, e);
+  CHECK_FALSE(r2.complete);
+  CHECK(r2.done == 433);
+  resume_to_end(f, e);
+}
+
+TEST_CASE_METHOD(resume_fixture, "sweep: resume after the stop flag (as set by SIGINT), summary only", "[sweep]") {
+  sweep_files f;
+  f.summary_path = d / "b.json";
+  std::atomic<bool> stop{false};
+  auto e = engine(2, 16);
+  e.stop = &stop;
+  auto r1 = sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
+    if (p.done >= 200) stop = true;
+  });
+  CHECK_FALSE(r1.complete);
+  CHECK(r1.done >= 200);
+  CHECK(r1.done < ref_summary["pairs"].get<std::uint64_t>());
+  CHECK_FALSE(path_exists(f.summary_path));
+  resume_to_end(f, e);
+}
+
+TEST_CASE_METHOD(resume_fixture, "sweep: resume after a crash drops the rows written past the last checkpoint", "[sweep]") {
+  sweep_files f;
+  f.rows_path = d / "c.jsonl";
+  f.rows_format = sweep_format::jsonl;
+  f.summary_path = d / "c.json";
+  f.checkpoint_seconds = 1e-9;  // a checkpoint after every block
+  auto e = engine(1, 10);
+  int blocks = 0;
+  CHECK_THROWS_AS(sweep_to_files<double>(c, f, e,
+                                         [&](const sweep_progress_info&) {
+                                           if (++blocks == 25) throw compute_error("simulated crash");
+                                         }),
+                  compute_error);
+  CHECK_FALSE(path_exists(f.rows_path));
+  CHECK_FALSE(path_exists(f.summary_path));
+  // Append junk, as a crash in the middle of a write would leave.
+  {
+    std::ofstream junk(f.rows_path + ".part", std::ios::app);
+    junk << "{\"tau\": 99, \"sigma\"";
   }
-  SECTION("a crash after checkpoints: rows written past the last checkpoint are dropped") {
-    sweep_files f;
-    f.rows_path = d / "c.jsonl";
-    f.rows_format = sweep_format::jsonl;
-    f.summary_path = d / "c.json";
-    f.checkpoint_seconds = 1e-9;  // a checkpoint after every block
-    auto e = engine(1, 10);
-    int blocks = 0;
-    CHECK_THROWS_AS(sweep_to_files<double>(c, f, e,
-                                           [&](const sweep_progress_info&) {
-                                             if (++blocks == 25) throw compute_error("simulated crash");
-                                           }),
-                    compute_error);
-    CHECK_FALSE(exists(f.rows_path));
-    CHECK_FALSE(exists(f.summary_path));
-    // Append junk, as a crash in the middle of a write would leave.
-    {
-      std::ofstream junk(f.rows_path + ".part", std::ios::app);
-      junk << "{\"tau\": 99, \"sigma\"";
-    }
-    f.resume = true;
-    f.checkpoint_seconds = 300;
-    REQUIRE(sweep_to_files<double>(c, f, e).complete);
-    CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_sum);
-    // Same pairs as the CSV reference, in the same order.
-    auto in = sweep_read_rows(f.rows_path);
-    CHECK(in.acc.pairs == ref_sum["pairs"].get<std::uint64_t>());
-  }
-  SECTION("resume refuses a different sweep, and a missing state") {
-    sweep_files f;
-    f.summary_path = d / "e.json";
-    auto e = engine(1);
-    e.max_pairs = 50;
-    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
-    f.resume = true;
-    CHECK_THROWS_AS(sweep_to_files<double>(config(81), f, e), usage_error);
-    sweep_files g;
-    g.summary_path = d / "nothing.json";
-    g.resume = true;
-    CHECK_THROWS_AS(sweep_to_files<double>(c, g, e), usage_error);
-  }
+  f.checkpoint_seconds = 300;
+  resume_to_end(f, e);
+  // Same pairs as the CSV reference, in the same order.
+  auto in = sweep_read_rows(f.rows_path);
+  CHECK(in.acc.pairs == ref_summary["pairs"].get<std::uint64_t>());
+}
+
+TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[sweep]") {
+  temp_dir d("test_sweep");
+  const sweep_config c = config(80);
+  sweep_files f;
+  f.summary_path = d / "e.json";
+  auto e = engine(1);
+  e.max_pairs = 50;
+  REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+  f.resume = true;
+  CHECK_THROWS_AS(sweep_to_files<double>(config(81), f, e), usage_error);
+  sweep_files g;
+  g.summary_path = d / "nothing.json";
+  g.resume = true;
+  CHECK_THROWS_AS(sweep_to_files<double>(c, g, e), usage_error);
 }
 
 TEST_CASE("sweep: files are written atomically", "[sweep]") {
-  temp_dir d;
+  temp_dir d("test_sweep");
   const std::string p = d / "f.txt";
-  sweep_write_atomic(p, "one\n");
-  CHECK(read_all(p) == "one\n");
-  sweep_write_atomic(p, "two\n");
-  CHECK(read_all(p) == "two\n");
-  CHECK_FALSE(exists(p + ".part"));
-  // A directory that does not exist: nothing is created, compute_error.
-  CHECK_THROWS_AS(sweep_write_atomic(d / "no/such/dir.txt", "x"), compute_error);
-  CHECK_FALSE(exists(d / "no"));
+  write_file_atomically(p, "one\n");
+  CHECK(read_text(p) == "one\n");
+  write_file_atomically(p, "two\n");
+  CHECK(read_text(p) == "two\n");
+  CHECK(file_names(d) == std::vector<std::string>{"f.txt"});  // no temporary file left behind
+  // A directory that does not exist: nothing is created; usage_error (the user named the path).
+  CHECK_THROWS_AS(write_file_atomically(d / "no/such/dir.txt", "x"), usage_error);
+  CHECK_FALSE(path_exists(d / "no"));
   // A sweep whose summary cannot be written leaves no partial summary and no final rows.
   sweep_files f;
   f.rows_path = d / "rows.csv";
   f.summary_path = d / "missing/summary.json";
-  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), compute_error);
-  CHECK_FALSE(exists(f.summary_path));
-  CHECK_FALSE(exists(f.summary_path + ".part"));
-  CHECK_FALSE(exists(f.rows_path));
+  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  CHECK_FALSE(path_exists(f.summary_path));
+  CHECK_FALSE(path_exists(f.summary_path + ".part"));
+  CHECK_FALSE(path_exists(d / "missing"));
+  CHECK_FALSE(path_exists(f.rows_path));
 }
 
 TEST_CASE("sweep: float128 agrees with double", "[sweep]") {

@@ -1,8 +1,12 @@
 // gyrores merge FILES... [--summary OUT] [--json]
 // Combines the outputs of the shards of one sweep (row files written with --out, or shard
 // summaries written with --summary, which come with SUMMARY.values) into the summary a single
-// run gives. See include/gyrores/sweep_io.hpp for what each file holds and what is checked.
-#include <gyrores/io/sweep_io.hpp>
+// run gives. What each file holds and what is checked: docs/formats.md (merge).
+#include <memory>
+
+#include <gyrores/io/files.hpp>
+#include <gyrores/io/sweep_merge.hpp>
+#include <gyrores/io/sweep_summary.hpp>
 
 #include "cli_output.hpp"
 #include "commands.hpp"
@@ -17,8 +21,8 @@ struct merge_args {
 };
 
 std::string run_merge(const merge_args& a) {
-  sweep_json s = sweep_merge(a.files);
-  if (!a.summary.empty()) sweep_write_atomic(a.summary, s.dump(2) + "\n");
+  json s = sweep_merge(a.files);
+  if (!a.summary.empty()) write_file_atomically(a.summary, s.dump(2) + "\n");
   if (a.json) return s.dump(2) + "\n";
   return sweep_summary_text(s);
 }

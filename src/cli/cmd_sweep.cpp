@@ -1,17 +1,17 @@
 // gyrores sweep --max-order M [--min-order m] [--check LIST] [--out FILE] [--format csv|jsonl]
 //               [--summary FILE] [--threads N] [--shard I/N] [--resume] [--digits D] [--json] ...
 // Visits every coprime pair with m <= tau + sigma <= M, checks the paper's claims per pair and
-// prints a summary; the engine and the file formats are in include/gyrores/sweep.hpp and
-// sweep_io.hpp (their header comments document rows, summary, resume state and merge).
+// prints a summary. The engine is include/gyrores/sweep/, the files io/sweep_files.hpp; what
+// the rows, summary, resume state and merge hold is in docs/formats.md.
 #include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
-#include <chrono>
 #include <cstdio>
-#include <iostream>
+#include <memory>
 
-#include <gyrores/io/sweep_io.hpp>
+#include <gyrores/io/sweep_files.hpp>
+#include <gyrores/io/sweep_summary.hpp>
 
 #include "cli_output.hpp"
 #include "commands.hpp"
@@ -152,7 +152,7 @@ template <class T> sweep_report run_typed(const sweep_config& cfg, const sweep_f
   return rep;
 }
 
-std::string run_sweep(const sweep_args& a) {
+sweep_config config_of(const sweep_args& a) {
   sweep_config cfg;
   cfg.max_order = a.max_order;
   cfg.min_order = a.min_order;
@@ -163,29 +163,38 @@ std::string run_sweep(const sweep_args& a) {
   if (a.digits < 1 || a.digits > 1000) throw usage_error("--digits must be in [1, 1000], got " + std::to_string(a.digits));
   cfg.digits = unsigned(a.digits);
   sweep_validate(cfg);
-  if (a.checkpoint < 0) throw usage_error("--checkpoint must be >= 0 seconds");
+  return cfg;
+}
 
+sweep_files files_of(const sweep_args& a) {
+  if (a.checkpoint < 0) throw usage_error("--checkpoint must be >= 0 seconds");
   sweep_files files;
   files.rows_path = a.out;
-  std::string format = a.format;
-  if (format.empty()) format = a.out.size() >= 6 && a.out.substr(a.out.size() - 6) == ".jsonl" ? "jsonl" : "csv";
-  files.rows_format = sweep_parse_format(format);
+  const bool jsonl_name = a.out.size() >= 6 && a.out.substr(a.out.size() - 6) == ".jsonl";
+  files.rows_format = sweep_parse_format(!a.format.empty() ? a.format : jsonl_name ? "jsonl" : "csv");
   files.summary_path = a.summary;
   files.state_path = a.state;
   files.resume = a.resume;
   files.checkpoint_seconds = a.checkpoint;
+  return files;
+}
 
+// The working type follows --digits: double up to 15, float128 up to 30, MPFR beyond.
+sweep_report run_at_precision(const sweep_args& a, const sweep_config& cfg, const sweep_files& files) {
   sweep_engine_options eo;
   eo.threads = a.threads;
   eo.max_pairs = a.max_pairs;
   eo.stop = &g_stop;
+  if (a.digits <= 15) return run_typed<double>(cfg, files, eo, a.quiet);
+  if (a.digits <= 30) return run_typed<float128>(cfg, files, eo, a.quiet);
+  return run_typed<mpfr_real>(cfg, files, eo, a.quiet);
+}
 
+std::string run_sweep(const sweep_args& a) {
+  const sweep_config cfg = config_of(a);
+  const sweep_files files = files_of(a);
   signal_scope signals;
-  sweep_report rep;
-  if (a.digits <= 15) rep = run_typed<double>(cfg, files, eo, a.quiet);
-  else if (a.digits <= 30) rep = run_typed<float128>(cfg, files, eo, a.quiet);
-  else rep = run_typed<mpfr_real>(cfg, files, eo, a.quiet);
-
+  const sweep_report rep = run_at_precision(a, cfg, files);
   if (!rep.complete) {
     std::string why = g_stop.load() ? "interrupted" : "stopped (--max-pairs)";
     throw compute_error(why + " after " + with_commas(rep.done) + (rep.total ? " of " + with_commas(rep.total) : "") +

@@ -1,0 +1,134 @@
+// A sweep with its files: the rows file (written as FILE.part, renamed when complete), the
+// summary (and the values file of a shard run), and the resume state written at checkpoints
+// and restored by `resume`. What each file holds and when it is written: docs/formats.md
+// (sweep rows, sweep summary, values file, resume state, atomicity).
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <gyrores/core/real.hpp>
+#include <gyrores/io/files.hpp>
+#include <gyrores/io/json.hpp>
+#include <gyrores/io/sweep_rows.hpp>
+#include <gyrores/io/sweep_run.hpp>
+#include <gyrores/sweep/sweep.hpp>
+
+namespace gyrores {
+
+struct sweep_files {
+  std::string rows_path;  // empty: no rows
+  sweep_format rows_format = sweep_format::csv;
+  std::string summary_path;  // empty: no summary file
+  std::string state_path;    // empty: derived (sweep_default_state_path)
+  bool resume = false;
+  double checkpoint_seconds = 300;  // periodic checkpoints (0: only when stopping early)
+};
+
+struct sweep_progress_info {
+  std::uint64_t done = 0, total = 0;  // pairs of the shard; total 0 when unknown
+  double seconds = 0;                 // this run
+  std::uint64_t done_this_run = 0;
+};
+using sweep_progress = std::function<void(const sweep_progress_info&)>;
+
+struct sweep_report {
+  json summary;             // complete runs only (null otherwise)
+  bool complete = false;
+  std::uint64_t done = 0;   // pairs of the shard done
+  std::uint64_t total = 0;  // pairs of the shard (0 if not counted)
+  std::string state_path;   // where the resume state is (incomplete runs)
+  unsigned threads = 1;
+  double seconds = 0;       // this run
+};
+
+// The resume state's path: state_path, else ROWS.resume, else SUMMARY.resume, else
+// gyrores-sweep.resume.
+std::string sweep_default_state_path(const sweep_files& f);
+
+namespace detail {
+
+// The files of one sweep_to_files call, from opening (fresh, or restored from the resume state)
+// through the blocks and checkpoints to the end. `cfg` is validated, min_order >= 3.
+class sweep_file_session {
+ public:
+  sweep_file_session(const sweep_config& cfg, const sweep_files& files, const json& run, const sweep_progress& progress);
+  std::uint64_t start() const { return start_; }  // pairs of the shard done before this run
+  void on_block(const sweep_block& b);
+  // Makes what was delivered so far durable and resumable (docs/formats.md, resume state).
+  void checkpoint();
+  // After the engine returned: a checkpoint if the shard is not done, else the summary, the
+  // values file (shard runs), the renamed rows file, and the state removed.
+  sweep_report finish(const sweep_outcome& out);
+
+ private:
+  void start_fresh();
+  void restore();
+  void restore_values(std::uint64_t count);
+  void finish_complete(unsigned threads, sweep_report& rep);
+  double elapsed() const;
+
+  const sweep_config& cfg_;
+  const sweep_files& files_;
+  const sweep_progress& progress_;
+  json run_, run_files_;
+  std::string state_, values_, rows_part_;
+  bool rows_;
+  append_file rows_file_;
+  sweep_accumulator acc_;
+  std::uint64_t total_ = 0, start_ = 0, done_ = 0;
+  std::uint64_t values_written_ = 0;  // values already in the values file
+  std::uint64_t rows_bytes_ = 0;      // bytes of rows_part holding whole, delivered blocks
+  double seconds_before_ = 0, last_checkpoint_ = 0;
+  sweep_pair_id last_{0, 0};
+  std::chrono::steady_clock::time_point t0_;
+};
+
+}  // namespace detail
+
+// Runs the sweep cfg with T as working type (MPFR: at cfg.digits + 8 digits), writing the files
+// named in `files`; progress, if set, is called after every block (on the calling thread).
+// Returns complete = false when eo.max_pairs or *eo.stop ended the run early (a checkpoint was
+// written: run again with files.resume to continue). usage_error for an invalid cfg, a file
+// that cannot be written or read, or a resume state that is missing or for another sweep; an
+// exception from the engine or from `progress` is rethrown after a checkpoint of the pairs done.
+template <class T>
+sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files, const sweep_engine_options& eo_in,
+                            const sweep_progress& progress = {}) {
+  sweep_config cfg = cfg_in;
+  if (cfg.min_order < 3) cfg.min_order = 3;
+  sweep_validate(cfg);
+  // MPFR: the working precision (digits + 8 guard digits) is set once, before any thread starts
+  // and before the run description (which names the precision) is formed.
+  std::optional<scoped_digits> digits_scope;
+  if constexpr (is_variable_precision_v<T>) digits_scope.emplace(cfg.digits + 8);
+  detail::sweep_file_session session(cfg, files, sweep_run_json<T>(cfg), progress);
+  sweep_row_formatter<T> format_row;
+  if (!files.rows_path.empty())
+    format_row = [f = files.rows_format, digits = cfg.digits](std::string& out, const sweep_row<T>& r) {
+      sweep_format_row(out, r, f, digits);
+    };
+  sweep_engine_options eo = eo_in;
+  eo.start = session.start();
+  sweep_outcome out;
+  try {
+    out = sweep_run<T>(cfg, eo, [&](sweep_block& b) { session.on_block(b); }, format_row);
+  } catch (...) {
+    try {
+      session.checkpoint();  // keep what is finished: the prefix delivered so far
+    } catch (...) {
+    }
+    throw;
+  }
+  return session.finish(out);
+}
+
+// Compiled once in src/io/sweep_files.cpp for the compiled reals (core/real.hpp).
+#define GYRORES_SWEEP_FILES_INSTANCES(PREFIX, T)                                                              \
+  PREFIX template sweep_report sweep_to_files<T>(const sweep_config&, const sweep_files&, const sweep_engine_options&, \
+                                                 const sweep_progress&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_FILES_INSTANCES, extern)
+
+}  // namespace gyrores

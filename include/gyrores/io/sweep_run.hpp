@@ -1,0 +1,37 @@
+// The run description of a sweep: the JSON object naming its configuration, which rows files,
+// summaries and resume states carry (docs/formats.md, `{run}`), and a finished output read back.
+// Inputs to a merge or a resume must agree on it (a merge: except the shard index).
+#pragma once
+#include <string>
+#include <type_traits>
+
+#include <gyrores/core/real.hpp>
+#include <gyrores/io/json.hpp>
+#include <gyrores/sweep/sweep.hpp>
+
+namespace gyrores {
+
+// {min_order (at least 3), max_order, shard, checks, cross_check_max_order, max_examples, type,
+// digits}; `type` is the working real type's name, `digits` the significant digits of its reals
+// in rows (17 for double).
+json sweep_run_json(const sweep_config& c, const std::string& type, unsigned digits);
+template <class T> json sweep_run_json(const sweep_config& c) {
+  return sweep_run_json(c, real_type_name<T>(), std::is_same_v<T, double> ? 17u : c.digits);
+}
+
+// The checks of a run description.
+sweep_check_set sweep_checks_of_run(const json& run);
+
+// The run description without what differs between the shards of one sweep or between a run
+// and its merge (shard, threads, complete, merged_shards).
+json sweep_run_identity(json run);
+
+// A finished sweep output read back (rows file or shard summary), for a merge.
+struct sweep_input {
+  std::string path;
+  json run;               // the run description (shard included)
+  sweep_accumulator acc;  // with every t_first/proxy value
+  double seconds = 0;
+};
+
+}  // namespace gyrores

@@ -1,0 +1,184 @@
+// include/gyrores/io/sweep_files.hpp: the rows file, checkpoints, the resume state, the end.
+#include <gyrores/io/sweep_files.hpp>
+
+#include <cstring>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/io/sweep_summary.hpp>
+
+namespace gyrores {
+
+GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_FILES_INSTANCES, )
+
+std::string sweep_default_state_path(const sweep_files& f) {
+  if (!f.state_path.empty()) return f.state_path;
+  if (!f.rows_path.empty()) return f.rows_path + ".resume";
+  if (!f.summary_path.empty()) return f.summary_path + ".resume";
+  return "gyrores-sweep.resume";
+}
+
+namespace detail {
+namespace {
+
+const char* const state_format = "gyrores-sweep-state";
+
+// The bytes of doubles, as the values files hold them (host byte order).
+std::string_view double_bytes(const double* v, std::size_t n) {
+  return std::string_view(reinterpret_cast<const char*>(v), n * sizeof(double));
+}
+
+// The state file's content, parsed and checked against this sweep's run description.
+json read_state(const std::string& state, const json& run_files) {
+  if (!file_exists(state))
+    throw usage_error("cannot resume: no resume state at '" + state +
+                      "' (nothing to resume, or a different rows, summary or state path)");
+  json st;
+  try {
+    st = json::parse(read_file(state));
+  } catch (const json::exception& e) {
+    throw usage_error("cannot resume: '" + state + "' is not a resume state: " + e.what());
+  }
+  if (st.value("format", "") != state_format) throw usage_error("cannot resume: '" + state + "' is not a resume state");
+  if (st.at("run") != run_files)
+    throw usage_error("cannot resume: the state at '" + state + "' is for another sweep: " + st.at("run").dump() +
+                      "; this one is " + run_files.dump());
+  return st;
+}
+
+}  // namespace
+
+sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_files& files, const json& run,
+                                       const sweep_progress& progress)
+    : cfg_(cfg),
+      files_(files),
+      progress_(progress),
+      run_(run),
+      run_files_(run),
+      state_(sweep_default_state_path(files)),
+      values_(state_ + ".values"),
+      rows_part_(files.rows_path + ".part"),
+      rows_(!files.rows_path.empty()) {
+  run_files_["rows"] = rows_ ? json({{"path", files.rows_path}, {"format", sweep_format_name(files.rows_format)}})
+                             : json(nullptr);
+  if (cfg.max_order <= sweep_count_limit)
+    total_ = sweep_shard_pairs(sweep_total_pairs(cfg.min_order, cfg.max_order), cfg.shard_index, cfg.shard_count);
+  acc_.max_examples = cfg.max_examples;
+  if (files.resume) restore();
+  else start_fresh();
+  done_ = start_;
+  t0_ = std::chrono::steady_clock::now();
+}
+
+double sweep_file_session::elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+}
+
+// A new sweep: an old state goes, the rows file starts with its header.
+void sweep_file_session::start_fresh() {
+  remove_file(state_);
+  remove_file(values_);
+  if (!rows_) return;
+  rows_file_ = append_file(rows_part_, append_file::mode::create);
+  const std::string h = sweep_rows_header(run_, files_.rows_format);
+  rows_file_.write(h);
+  rows_bytes_ = h.size();
+}
+
+// Continue from the last checkpoint: anything written after it is cut off and recomputed.
+void sweep_file_session::restore() {
+  const json st = read_state(state_, run_files_);
+  start_ = st.at("done").get<std::uint64_t>();
+  seconds_before_ = st.at("seconds").get<double>();
+  acc_ = sweep_accumulator_from_json(st.at("summary"), cfg_.max_examples);
+  restore_values(st.at("values_count").get<std::uint64_t>());
+  if (!rows_) return;
+  rows_bytes_ = st.at("rows_bytes").get<std::uint64_t>();
+  truncate_file(rows_part_, rows_bytes_);
+  rows_file_ = append_file(rows_part_, append_file::mode::append);
+}
+
+// The values file may hold more than recorded (a checkpoint interrupted before the state was
+// replaced): keep the recorded prefix.
+void sweep_file_session::restore_values(std::uint64_t count) {
+  const std::string bytes = read_file(values_);
+  if (bytes.size() / sizeof(double) < count)
+    throw usage_error("cannot resume: '" + values_ + "' is shorter than its state records");
+  acc_.t_ratios.resize(count);
+  std::memcpy(acc_.t_ratios.data(), bytes.data(), count * sizeof(double));
+  truncate_file(values_, count * sizeof(double));
+  values_written_ = count;
+}
+
+void sweep_file_session::on_block(const sweep_block& b) {
+  if (rows_ && !b.rows.empty()) rows_file_.write(b.rows);
+  rows_bytes_ += b.rows.size();
+  acc_.merge(b.summary);
+  done_ = b.first + b.count;
+  if (b.count) last_ = b.last;
+  if (progress_) progress_({done_, total_, elapsed(), done_ - start_});
+  if (files_.checkpoint_seconds > 0 && elapsed() - last_checkpoint_ >= files_.checkpoint_seconds) checkpoint();
+}
+
+void sweep_file_session::checkpoint() {
+  if (rows_) rows_file_.sync();
+  {
+    append_file vf(values_, append_file::mode::append);
+    vf.write(double_bytes(acc_.t_ratios.data() + values_written_, acc_.t_ratios.size() - values_written_));
+    vf.close();
+  }
+  json st;
+  st["format"] = state_format;
+  st["version"] = 1;
+  st["run"] = run_files_;
+  st["done"] = done_;
+  st["next_after"] = {last_.first, last_.second};
+  st["rows_bytes"] = rows_bytes_;
+  st["values_count"] = acc_.t_ratios.size();
+  st["seconds"] = seconds_before_ + elapsed();
+  st["summary"] = sweep_accumulator_json(acc_, sweep_all_checks);
+  write_file_atomically(state_, st.dump() + "\n");
+  values_written_ = acc_.t_ratios.size();
+  last_checkpoint_ = elapsed();
+}
+
+sweep_report sweep_file_session::finish(const sweep_outcome& out) {
+  sweep_report rep;
+  rep.state_path = state_;
+  rep.total = total_;
+  rep.threads = out.threads;
+  rep.done = out.done;
+  rep.seconds = elapsed();
+  if (out.complete) finish_complete(out.threads, rep);
+  else checkpoint();
+  return rep;
+}
+
+// The summary (and a shard's values file), the rows' end line and final name; the state goes.
+void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
+  const double seconds = seconds_before_ + elapsed();
+  json srun = run_;
+  srun["threads"] = threads;
+  srun["complete"] = true;
+  json summary = sweep_summary_json(acc_, srun, seconds);
+  if (!files_.summary_path.empty()) {
+    if (cfg_.shard_count > 1) {
+      const std::string vpath = files_.summary_path + ".values";
+      sweep_write_values_atomic(vpath, acc_.t_ratios);
+      auto slash = vpath.rfind('/');
+      summary["values_file"] = slash == std::string::npos ? vpath : vpath.substr(slash + 1);
+    }
+    write_file_atomically(files_.summary_path, summary.dump(2) + "\n");
+  }
+  if (rows_) {
+    rows_file_.write(sweep_rows_trailer(acc_.pairs, seconds, files_.rows_format));
+    rows_file_.close();
+    rename_file(rows_part_, files_.rows_path);
+  }
+  remove_file(state_);
+  remove_file(values_);
+  rep.complete = true;
+  rep.summary = summary;
+}
+
+}  // namespace detail
+}  // namespace gyrores

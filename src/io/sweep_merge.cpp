@@ -1,0 +1,83 @@
+// include/gyrores/io/sweep_merge.hpp: reading shard outputs, checking they belong together, merging.
+#include <gyrores/io/sweep_merge.hpp>
+
+#include <fstream>
+#include <set>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/io/sweep_rows.hpp>
+#include <gyrores/io/sweep_summary.hpp>
+
+namespace gyrores {
+namespace {
+
+std::int64_t shard_index(const sweep_input& x) { return x.run.at("shard").at(0).get<std::int64_t>(); }
+std::int64_t shard_count(const sweep_input& x) { return x.run.at("shard").at(1).get<std::int64_t>(); }
+std::string shard_text(std::int64_t i, std::int64_t n) { return std::to_string(i) + "/" + std::to_string(n); }
+
+// The inputs share one configuration and one shard count, and cover 0..N-1 exactly once.
+void check_one_complete_set(const std::vector<sweep_input>& in, const json& ident, std::int64_t n) {
+  std::set<std::int64_t> seen;
+  for (auto& x : in) {
+    if (sweep_run_identity(x.run) != ident)
+      throw usage_error("'" + x.path + "' comes from a different sweep (" + sweep_run_identity(x.run).dump() + " vs " +
+                        ident.dump() + ")");
+    if (shard_count(x) != n)
+      throw usage_error("'" + x.path + "' is a shard of " + std::to_string(shard_count(x)) + ", the others of " +
+                        std::to_string(n));
+    if (!seen.insert(shard_index(x)).second) throw usage_error("shard " + shard_text(shard_index(x), n) + " given twice");
+  }
+  for (std::int64_t i = 0; i < n; ++i)
+    if (!seen.count(i)) throw usage_error("shard " + shard_text(i, n) + " is missing");
+}
+
+// Each input holds exactly its shard's share of the pairs (counted when max_order <= sweep_count_limit).
+void check_shares(const std::vector<sweep_input>& in, const json& ident, std::int64_t n) {
+  const std::int64_t max_order = ident.at("max_order").get<std::int64_t>();
+  if (max_order > sweep_count_limit) return;
+  const std::uint64_t total = sweep_total_pairs(ident.at("min_order").get<std::int64_t>(), max_order);
+  for (auto& x : in) {
+    const std::uint64_t share = sweep_shard_pairs(total, shard_index(x), n);
+    if (x.acc.pairs != share)
+      throw usage_error("'" + x.path + "' holds " + std::to_string(x.acc.pairs) + " pairs, shard " +
+                        shard_text(shard_index(x), n) + " has " + std::to_string(share));
+  }
+}
+
+}  // namespace
+
+sweep_input sweep_read_output(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw usage_error("cannot read '" + path + "'");
+  std::string first;
+  std::getline(in, first);
+  in.close();
+  if (first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos)
+    return sweep_read_rows(path);
+  return sweep_read_summary(path);
+}
+
+json sweep_merge(const std::vector<std::string>& paths) {
+  if (paths.empty()) throw usage_error("merge needs at least one file");
+  std::vector<sweep_input> in;
+  for (auto& p : paths) in.push_back(sweep_read_output(p));
+  const json ident = sweep_run_identity(in[0].run);
+  const std::int64_t n = shard_count(in[0]);
+  check_one_complete_set(in, ident, n);
+  check_shares(in, ident, n);
+  sweep_accumulator acc;
+  acc.max_examples = ident.at("max_examples").get<std::size_t>();
+  double seconds = 0;
+  for (auto& x : in) {
+    acc.merge(x.acc);
+    seconds += x.seconds;
+  }
+  json run = ident;
+  run["shard"] = {0, 1};
+  run["threads"] = nullptr;
+  run["complete"] = true;
+  run["merged_shards"] = n;
+  return sweep_summary_json(acc, run, seconds);
+}
+
+}  // namespace gyrores

@@ -1,0 +1,33 @@
+// include/gyrores/io/sweep_run.hpp: the run description of a sweep.
+#include <gyrores/io/sweep_run.hpp>
+
+namespace gyrores {
+
+json sweep_run_json(const sweep_config& c, const std::string& type, unsigned digits) {
+  json j;
+  j["min_order"] = c.min_order < 3 ? 3 : c.min_order;
+  j["max_order"] = c.max_order;
+  j["shard"] = {c.shard_index, c.shard_count};
+  j["checks"] = sweep_check_names(c.checks);
+  j["cross_check_max_order"] = c.cross_check_max_order;
+  j["max_examples"] = c.max_examples;
+  j["type"] = type;
+  j["digits"] = digits;
+  return j;
+}
+
+sweep_check_set sweep_checks_of_run(const json& run) {
+  sweep_check_set checks = 0;
+  for (auto& n : run.at("checks")) checks |= sweep_parse_checks(n.get<std::string>());
+  return checks;
+}
+
+json sweep_run_identity(json run) {
+  run.erase("shard");
+  run.erase("threads");
+  run.erase("complete");
+  run.erase("merged_shards");
+  return run;
+}
+
+}  // namespace gyrores

@@ -1,0 +1,258 @@
+// include/gyrores/io/sweep_summary.hpp: summary JSON and text, accumulator <-> JSON, values file.
+#include <gyrores/io/sweep_summary.hpp>
+
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/io/files.hpp>
+
+namespace gyrores {
+namespace {
+
+json pairs_json(const std::vector<sweep_pair_id>& v) {
+  json a = json::array();
+  for (auto& p : v) a.push_back({p.first, p.second});
+  return a;
+}
+
+std::vector<sweep_pair_id> pairs_from_json(const json& a) {
+  std::vector<sweep_pair_id> v;
+  for (auto& p : a) v.push_back({p.at(0).get<std::int64_t>(), p.at(1).get<std::int64_t>()});
+  return v;
+}
+
+json extreme_json(const sweep_extreme& e) {
+  if (!e.set) return nullptr;
+  json j;
+  j["value"] = e.str();
+  j["pair"] = {e.pair.first, e.pair.second};
+  return j;
+}
+
+sweep_extreme extreme_from_json(const json& j) {
+  sweep_extreme e;
+  if (j.is_null()) return e;
+  e.set = true;
+  e.text = j.at("value").get<std::string>();
+  e.value = sweep_text_double(e.text);
+  if (sweep_double_text(e.value) == e.text) e.text.clear();
+  e.pair = {j.at("pair").at(0).get<std::int64_t>(), j.at("pair").at(1).get<std::int64_t>()};
+  return e;
+}
+
+json quantiles_json(sweep_accumulator& a) {
+  const auto q = a.quantiles();
+  json tq;
+  tq["count"] = q.count;
+  const std::pair<const char*, double> values[] = {{"min", q.min},       {"p01", q.p01}, {"p10", q.p10},
+                                                   {"median", q.median}, {"p90", q.p90}, {"p99", q.p99},
+                                                   {"max", q.max}};
+  for (const auto& [key, v] : values) {
+    if (q.count) tq[key] = sweep_double_text(v);
+    else tq[key] = nullptr;
+  }
+  return tq;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The text rendering, one block of lines per step.
+
+// " (tau,sigma)"
+void put_pair(std::ostream& os, const json& p) {
+  os << " (" << p.at(0).get<std::int64_t>() << "," << p.at(1).get<std::int64_t>() << ")";
+}
+
+void text_run_line(std::ostream& os, const json& run) {
+  os << "gyrores sweep: orders " << run.at("min_order").get<std::int64_t>() << ".." << run.at("max_order").get<std::int64_t>();
+  const auto& shard = run.at("shard");
+  if (shard.at(1).get<std::int64_t>() > 1)
+    os << ", shard " << shard.at(0).get<std::int64_t>() << "/" << shard.at(1).get<std::int64_t>();
+  if (run.contains("merged_shards")) os << ", merged from " << run.at("merged_shards").get<std::int64_t>() << " shards";
+  os << "; " << run.at("type").get<std::string>();
+  if (run.contains("threads") && !run.at("threads").is_null()) {
+    const unsigned t = run.at("threads").get<unsigned>();
+    os << ", " << t << (t == 1 ? " thread" : " threads");
+  }
+  os << "\n";
+}
+
+void text_counts(std::ostream& os, const json& s) {
+  const double sec = s.at("seconds").get<double>();
+  const auto pairs = s.at("pairs").get<std::uint64_t>();
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%.2f s (%.0f pairs/s)", sec, sec > 0 ? double(pairs) / sec : 0.0);
+  os << "  pairs visited       " << pairs << "  in " << buf << "\n";
+  os << "  degenerate pairs    " << s.at("degenerate").get<std::uint64_t>() << "  (delta = 2 mod 4)\n";
+  const auto& err = s.at("errors");
+  if (err.at("count").get<std::uint64_t>() > 0) {
+    os << "  ERRORS              " << err.at("count").get<std::uint64_t>() << " pairs could not be computed, first:";
+    for (auto& p : err.at("examples")) put_pair(os, p);
+    os << "\n";
+  }
+}
+
+void text_checks(std::ostream& os, const json& s) {
+  os << "  checks              violations / pairs checked   (first violating pairs)\n";
+  for (auto& [name, t] : s.at("checks").items()) {
+    std::string label = "    " + name;
+    label.resize(24, ' ');
+    os << label << t.at("violations").get<std::uint64_t>() << " / " << t.at("checked").get<std::uint64_t>();
+    if (!t.at("examples").empty()) {
+      os << "   ";
+      for (auto& p : t.at("examples")) put_pair(os, p);
+    }
+    if (name == "cross-check") os << "   [orders <= " << s.at("run").at("cross_check_max_order").get<std::int64_t>() << "]";
+    if (name == "asy-bound") os << "   [x < 1/2]";
+    if (name == "paper-node") os << "   [non-degenerate]";
+    os << "\n";
+  }
+}
+
+void text_extreme(std::ostream& os, const json& e, const char* label) {
+  os << label;
+  if (e.is_null()) os << "n/a\n";
+  else {
+    os << e.at("value").get<std::string>() << "  at";
+    put_pair(os, e.at("pair"));
+    os << "\n";
+  }
+}
+
+void text_ratios(std::ostream& os, const json& s) {
+  const auto& q = s.at("t_first_over_proxy");
+  os << "  t_first/(pi/|n|)    over " << q.at("count").get<std::uint64_t>() << " non-degenerate pairs";
+  if (q.at("count").get<std::uint64_t>() > 0) {
+    const char* sep = ": ";
+    for (const char* k : {"min", "p01", "p10", "median", "p90", "p99", "max"}) {
+      os << sep << k << " " << q.at(k).get<std::string>();
+      sep = ", ";
+    }
+  }
+  os << "\n";
+  os << "  first minimiser in the paper's lobe k = round(a/(2b)): " << s.at("first_at_paper_node").get<std::uint64_t>()
+     << " non-degenerate pairs\n";
+}
+
+}  // namespace
+
+json sweep_accumulator_json(const sweep_accumulator& a, sweep_check_set checks) {
+  json j;
+  j["pairs"] = a.pairs;
+  j["degenerate"] = a.degenerate;
+  json cj = json::object();
+  for (int i = 0; i < sweep_check_count; ++i) {
+    if (!((checks >> i) & 1u)) continue;
+    json t;
+    t["violations"] = a.checks[i].violations;
+    t["examples"] = pairs_json(a.checks[i].examples);
+    t["checked"] = a.checks[i].checked;
+    cj[sweep_check_name(i)] = t;
+  }
+  j["checks"] = cj;
+  j["asy_ratio_max"] = extreme_json(a.asy_ratio_max);
+  j["sharp_constant"] = extreme_json(a.sharp_constant);
+  j["first_at_paper_node"] = a.first_at_paper_node;
+  j["errors"] = {{"count", a.errors.violations}, {"examples", pairs_json(a.errors.examples)}};
+  return j;
+}
+
+sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_examples) {
+  sweep_accumulator a;
+  a.max_examples = max_examples;
+  a.pairs = j.at("pairs").get<std::uint64_t>();
+  a.degenerate = j.at("degenerate").get<std::uint64_t>();
+  for (int i = 0; i < sweep_check_count; ++i) {
+    auto f = j.at("checks").find(sweep_check_name(i));
+    if (f == j.at("checks").end()) continue;
+    a.checks[i].violations = f->at("violations").get<std::uint64_t>();
+    a.checks[i].checked = f->at("checked").get<std::uint64_t>();
+    a.checks[i].examples = pairs_from_json(f->at("examples"));
+  }
+  a.asy_ratio_max = extreme_from_json(j.at("asy_ratio_max"));
+  a.sharp_constant = extreme_from_json(j.at("sharp_constant"));
+  a.first_at_paper_node = j.at("first_at_paper_node").get<std::uint64_t>();
+  a.errors.violations = j.at("errors").at("count").get<std::uint64_t>();
+  a.errors.examples = pairs_from_json(j.at("errors").at("examples"));
+  return a;
+}
+
+json sweep_summary_json(sweep_accumulator& a, const json& run, double seconds) {
+  json acc = sweep_accumulator_json(a, sweep_checks_of_run(run));
+  json j;
+  j["format"] = "gyrores-sweep-summary";
+  j["version"] = 1;
+  for (const char* k : {"pairs", "degenerate", "checks", "asy_ratio_max", "sharp_constant"}) j[k] = acc[k];
+  j["t_first_over_proxy"] = quantiles_json(a);
+  j["first_at_paper_node"] = acc["first_at_paper_node"];
+  j["errors"] = acc["errors"];
+  j["seconds"] = seconds;
+  j["run"] = run;
+  j["values_file"] = nullptr;
+  return j;
+}
+
+json sweep_summary_core(json j) {
+  j.erase("seconds");
+  j.erase("run");
+  j.erase("values_file");
+  return j;
+}
+
+std::string sweep_summary_text(const json& s) {
+  std::ostringstream os;
+  text_run_line(os, s.at("run"));
+  text_counts(os, s);
+  text_checks(os, s);
+  text_extreme(os, s.at("asy_ratio_max"), "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) = ");
+  text_extreme(os, s.at("sharp_constant"), "  sharp constant      sup |theta_c - theta_asy| a/x^2 = ");
+  text_ratios(os, s);
+  return os.str();
+}
+
+void sweep_write_values_atomic(const std::string& path, const std::vector<double>& v) {
+  std::string content = "GYRVAL01";
+  const std::uint64_t n = v.size();
+  content.append(reinterpret_cast<const char*>(&n), sizeof n);
+  content.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+  write_file_atomically(path, content);
+}
+
+std::vector<double> sweep_read_values(const std::string& path) {
+  const std::string c = read_file(path);
+  std::uint64_t n = 0;
+  if (c.size() < 16 || c.compare(0, 8, "GYRVAL01") != 0) throw usage_error("'" + path + "' is not a gyrores values file");
+  std::memcpy(&n, c.data() + 8, sizeof n);
+  if (c.size() != 16 + n * sizeof(double)) throw usage_error("'" + path + "' is truncated");
+  std::vector<double> v(n);
+  std::memcpy(v.data(), c.data() + 16, n * sizeof(double));
+  return v;
+}
+
+sweep_input sweep_read_summary(const std::string& path) {
+  sweep_input r;
+  r.path = path;
+  json j;
+  try {
+    j = json::parse(read_file(path));
+  } catch (const json::exception& e) {
+    throw usage_error("'" + path + "' is not JSON: " + e.what());
+  }
+  if (j.value("format", "") != "gyrores-sweep-summary") throw usage_error("'" + path + "' is not a gyrores sweep summary");
+  r.run = j.at("run");
+  if (!r.run.value("complete", false)) throw usage_error("'" + path + "' is the summary of an unfinished sweep");
+  r.seconds = j.at("seconds").get<double>();
+  r.acc = sweep_accumulator_from_json(j, r.run.at("max_examples").get<std::size_t>());
+  if (j.at("values_file").is_null())
+    throw usage_error("'" + path + "' has no values file (only shard runs write one); merge the row files instead");
+  std::string vf = j.at("values_file").get<std::string>();
+  if (vf.find('/') == std::string::npos) {
+    auto slash = path.rfind('/');
+    if (slash != std::string::npos) vf = path.substr(0, slash + 1) + vf;
+  }
+  r.acc.t_ratios = sweep_read_values(vf);
+  return r;
+}
+
+}  // namespace gyrores

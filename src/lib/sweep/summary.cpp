@@ -1,0 +1,120 @@
+// include/gyrores/sweep/summary.hpp: the mergeable accumulator and its exact quantiles.
+#include <gyrores/sweep/summary.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gyrores {
+namespace {
+
+// Keeps the k earliest examples; input may come out of order (merging shards).
+void add_example(sweep_tally& t, const sweep_pair_id& p, std::size_t k) {
+  if (t.examples.size() < k) {
+    t.examples.push_back(p);
+    return;
+  }
+  if (k > 0 && sweep_pair_before(p, t.examples.back())) {
+    t.examples.back() = p;
+    std::sort(t.examples.begin(), t.examples.end(), sweep_pair_before);
+  }
+}
+
+void merge_tally(sweep_tally& t, const sweep_tally& o, std::size_t k) {
+  t.checked += o.checked;
+  t.violations += o.violations;
+  std::vector<sweep_pair_id> all = t.examples;
+  all.insert(all.end(), o.examples.begin(), o.examples.end());
+  std::sort(all.begin(), all.end(), sweep_pair_before);
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  if (all.size() > k) all.resize(k);
+  t.examples = std::move(all);
+}
+
+// The value at index floor(num/den * (n-1)) of the sorted v (v non-empty; reorders v).
+double order_statistic(std::vector<double>& v, std::uint64_t num, std::uint64_t den) {
+  const std::uint64_t n1 = v.size() - 1;
+  // floor(num/den * (n-1)) without overflow for n < 2^53
+  const std::uint64_t i = std::uint64_t((unsigned __int128)n1 * num / den);
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(i), v.end());
+  return v[i];
+}
+
+}  // namespace
+
+bool sweep_pair_before(const sweep_pair_id& x, const sweep_pair_id& y) {
+  std::int64_t ax = x.first + x.second, ay = y.first + y.second;
+  return ax != ay ? ax < ay : x.second < y.second;
+}
+
+std::string sweep_extreme::str() const { return text.empty() ? sweep_double_text(value) : text; }
+
+void sweep_extreme::offer(double v, const std::string& t, const sweep_pair_id& p) {
+  if (std::isnan(v)) return;
+  if (!set || v > value || (v == value && sweep_pair_before(p, pair))) {
+    set = true;
+    value = v;
+    text = t;
+    pair = p;
+  }
+}
+
+void sweep_extreme::merge(const sweep_extreme& o) {
+  if (o.set) offer(o.value, o.text, o.pair);
+}
+
+bool sweep_extreme::operator==(const sweep_extreme& o) const {
+  return set == o.set && (!set || (value == o.value && pair == o.pair && str() == o.str()));
+}
+
+void sweep_accumulator::add(const sweep_record& r) {
+  const sweep_pair_id id{r.tau, r.sigma};
+  ++pairs;
+  if (r.delta_mod4 == 2) ++degenerate;
+  if (r.failed) {
+    ++errors.violations;
+    add_example(errors, id, max_examples);
+    return;
+  }
+  for (int i = 0; i < sweep_check_count; ++i) {
+    if (r.status[i] == sweep_status::none) continue;
+    ++checks[i].checked;
+    if (r.status[i] == sweep_status::fail) {
+      ++checks[i].violations;
+      add_example(checks[i], id, max_examples);
+    }
+  }
+  if (r.first_at_paper_node == 1) ++first_at_paper_node;
+  if (r.has_ratio) t_ratios.push_back(r.t_ratio);
+  if (r.has_asy) {
+    asy_ratio_max.offer(r.asy_ratio, r.asy_ratio_text, id);
+    sharp_constant.offer(r.asy_constant, r.asy_constant_text, id);
+  }
+}
+
+void sweep_accumulator::merge(const sweep_accumulator& o) {
+  pairs += o.pairs;
+  degenerate += o.degenerate;
+  first_at_paper_node += o.first_at_paper_node;
+  for (int i = 0; i < sweep_check_count; ++i) merge_tally(checks[i], o.checks[i], max_examples);
+  merge_tally(errors, o.errors, max_examples);
+  asy_ratio_max.merge(o.asy_ratio_max);
+  sharp_constant.merge(o.sharp_constant);
+  t_ratios.insert(t_ratios.end(), o.t_ratios.begin(), o.t_ratios.end());
+}
+
+sweep_quantiles sweep_accumulator::quantiles() {
+  sweep_quantiles q;
+  auto& v = t_ratios;
+  q.count = v.size();
+  if (v.empty()) return q;
+  q.min = *std::min_element(v.begin(), v.end());
+  q.max = *std::max_element(v.begin(), v.end());
+  q.p01 = order_statistic(v, 1, 100);
+  q.p10 = order_statistic(v, 10, 100);
+  q.median = order_statistic(v, 1, 2);
+  q.p90 = order_statistic(v, 90, 100);
+  q.p99 = order_statistic(v, 99, 100);
+  return q;
+}
+
+}  // namespace gyrores
