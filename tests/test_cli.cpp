@@ -4,52 +4,20 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <vector>
 #include <string>
-#include <sys/wait.h>
+#include <vector>
 
 #include <gyrores/gyrores.hpp>
 
-#ifndef GYRORES_CLI_PATH
-#define GYRORES_CLI_PATH ""
-#endif
+#include "testing/cli_run.hpp"
+
+using gyrores::test::cli_available;
+using gyrores::test::cli_run;
+using gyrores::test::count_lines;
 
 namespace {
-
-struct run_result {
-  int status;
-  std::string out, err;
-};
-
-run_result run(const std::string& args) {
-  std::string errfile = "/tmp/gyrores_test_cli_stderr_" + std::to_string(::getpid());
-  std::string cmd = std::string(GYRORES_CLI_PATH) + " " + args + " 2>" + errfile;
-  FILE* p = ::popen(cmd.c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::string out;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = ::pclose(p);
-  std::string err;
-  if (FILE* f = std::fopen(errfile.c_str(), "r")) {
-    while ((n = std::fread(buf.data(), 1, buf.size(), f)) > 0) err.append(buf.data(), n);
-    std::fclose(f);
-  }
-  std::remove(errfile.c_str());
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out, err};
-}
-
-int count_lines(const std::string& s) {
-  int c = 0;
-  for (char ch : s) c += ch == '\n';
-  return c;
-}
 
 // Significant digits in "d.ddd...e+XX".
 int mantissa_digits(const std::string& s) {
@@ -64,8 +32,8 @@ int mantissa_digits(const std::string& s) {
 }  // namespace
 
 TEST_CASE("pair --json has the documented schema", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
-  auto r = run("pair 6 5 --json --digits 30");
+  if (!cli_available()) return;
+  auto r = cli_run("pair 6 5 --json --digits 30");
   REQUIRE(r.status == 0);
   REQUIRE(r.err.empty());
   auto j = nlohmann::json::parse(r.out);
@@ -93,10 +61,10 @@ TEST_CASE("pair --json has the documented schema", "[cli]") {
 }
 
 TEST_CASE("pair digits are all correct (against the library at 60 digits)", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  if (!cli_available()) return;
   using namespace gyrores;
   for (auto [tau, sigma, digits] : {std::tuple{6, 5, 30}, {9, 4, 17}, {5, 1, 11}, {1000, 1, 40}, {101, 100, 25}}) {
-    auto r = run("pair " + std::to_string(tau) + " " + std::to_string(sigma) + " --json --digits " +
+    auto r = cli_run("pair " + std::to_string(tau) + " " + std::to_string(sigma) + " --json --digits " +
                  std::to_string(digits));
     INFO("pair " << tau << " " << sigma << " digits " << digits);
     REQUIRE(r.status == 0);
@@ -113,8 +81,8 @@ TEST_CASE("pair digits are all correct (against the library at 60 digits)", "[cl
 }
 
 TEST_CASE("huge pairs print exact integers and a lattice result", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
-  auto r = run("pair 1000000000000000000000000000001 1000000000000000000000000000000 --json --digits 40");
+  if (!cli_available()) return;
+  auto r = cli_run("pair 1000000000000000000000000000001 1000000000000000000000000000000 --json --digits 40");
   REQUIRE(r.status == 0);
   // Integers beyond 64 bits stay JSON numbers.
   CHECK(r.out.find("\"tau\": 1000000000000000000000000000001,") != std::string::npos);
@@ -125,8 +93,8 @@ TEST_CASE("huge pairs print exact integers and a lattice result", "[cli]") {
 }
 
 TEST_CASE("integers with leading zeros are decimal, not octal", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
-  auto r = run("pair 011 09 --json --digits 5");
+  if (!cli_available()) return;
+  auto r = cli_run("pair 011 09 --json --digits 5");
   REQUIRE(r.status == 0);
   auto j = nlohmann::json::parse(r.out);
   CHECK(j["tau"] == 11);
@@ -134,8 +102,8 @@ TEST_CASE("integers with leading zeros are decimal, not octal", "[cli]") {
 }
 
 TEST_CASE("degenerate pairs: r_res is exactly zero, first zero at pi/2", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
-  auto r = run("pair 11 9 --json");
+  if (!cli_available()) return;
+  auto r = cli_run("pair 11 9 --json");
   REQUIRE(r.status == 0);
   auto j = nlohmann::json::parse(r.out);
   CHECK(j["degenerate"] == true);
@@ -147,7 +115,7 @@ TEST_CASE("degenerate pairs: r_res is exactly zero, first zero at pi/2", "[cli]"
 }
 
 TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
+  if (!cli_available()) return;
   struct row {
     const char* args;
     int status;
@@ -174,7 +142,7 @@ TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli
            row{"pair 200001 2 --method global", 3, "global search is limited"},
        }) {
     INFO(args);
-    auto r = run(args);
+    auto r = cli_run(args);
     CHECK(r.status == status);
     CHECK(r.out.empty());
     CHECK(count_lines(r.err) == 1);
@@ -183,26 +151,22 @@ TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli
 }
 
 TEST_CASE("certify writes a certificate that check accepts; tampering and corruption are rejected", "[cli]") {
-  if (std::string(GYRORES_CLI_PATH).empty()) return;
-  std::string dir = "/tmp/gyrores_test_cli_cert_" + std::to_string(::getpid());
-  REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+  if (!cli_available()) return;
+  gyrores::test::temp_dir tmp("cli_cert");
+  const std::string dir = tmp.path();
   std::string file = dir + "/c.json";
-  auto r = run("certify 6 5 --digits 50 --out " + file);
+  auto r = cli_run("certify 6 5 --digits 50 --out " + file);
   REQUIRE(r.status == 0);
   CHECK(r.out.empty());
   // No temporary left beside the file (written atomically).
   std::vector<std::string> names;
   for (auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
   CHECK(names == std::vector<std::string>{"c.json"});
-  auto ok = run("check " + file);
+  auto ok = cli_run("check " + file);
   CHECK(ok.status == 0);
   CHECK(ok.out.find("holds") != std::string::npos);
 
-  std::string text;
-  {
-    std::ifstream in(file);
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
+  const std::string text = gyrores::test::read_text(file);
   auto j = nlohmann::json::parse(text);
   CHECK(j["format"] == "gyrores-certificate/1");
   CHECK(j["claims"]["r_res"][0].get<std::string>().substr(0, 10) == "5.07458057");
@@ -214,24 +178,23 @@ TEST_CASE("certify writes a certificate that check accepts; tampering and corrup
   // A claim that does not hold: exit 1, naming it.
   auto t1 = j;
   t1["claims"]["r_res"][1] = t1["claims"]["r_res"][0];
-  auto bad = run("check " + write("narrow.json", t1.dump()));
+  auto bad = cli_run("check " + write("narrow.json", t1.dump()));
   CHECK(bad.status == 1);
   CHECK(bad.err.find("r_res") != std::string::npos);
   auto t2 = j;
   t2["tau"] = 7;
-  CHECK(run("check " + write("pair.json", t2.dump())).status == 1);
+  CHECK(cli_run("check " + write("pair.json", t2.dump())).status == 1);
   auto t3 = j;
   t3["obligations"].erase(t3["obligations"].begin());
-  CHECK(run("check " + write("drop.json", t3.dump())).status == 1);
+  CHECK(cli_run("check " + write("drop.json", t3.dump())).status == 1);
   // Unreadable or malformed: exit 2.
-  CHECK(run("check " + write("trunc.json", text.substr(0, text.size() / 2))).status == 2);
-  CHECK(run("check " + write("garbage.json", "not json")).status == 2);
+  CHECK(cli_run("check " + write("trunc.json", text.substr(0, text.size() / 2))).status == 2);
+  CHECK(cli_run("check " + write("garbage.json", "not json")).status == 2);
   auto t4 = j;
   t4.erase("claims");
-  CHECK(run("check " + write("noclaims.json", t4.dump())).status == 2);
-  CHECK(run("check " + dir + "/missing.json").status == 2);
+  CHECK(cli_run("check " + write("noclaims.json", t4.dump())).status == 2);
+  CHECK(cli_run("check " + dir + "/missing.json").status == 2);
   // Bad input to certify.
-  CHECK(run("certify 6 4").status == 2);
-  CHECK(run("certify 6 5 --digits 0").status == 2);
-  std::system(("rm -rf " + dir).c_str());
+  CHECK(cli_run("certify 6 4").status == 2);
+  CHECK(cli_run("certify 6 5 --digits 0").status == 2);
 }

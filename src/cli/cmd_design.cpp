@@ -1,14 +1,16 @@
 // gyrores design absorb|contain --tmax T [--beat B] [--max-order M] [--exclude-low L]
 //                                [--delta D] [--proxy] [--candidates K] [--digits D] [--json]
 // The paper's design problems (eqs. design-absorb, design-contain) over resonant pairs up to
-// order M: see include/gyrores/design.hpp. No feasible pair: one line on stderr, exit 3.
+// order M: see include/gyrores/design/design.hpp. No feasible pair: one line on stderr, exit 3.
 #include <sstream>
 
 #include <gyrores/design/design.hpp>
+#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/io/json.hpp>
 
-#include "cli_output.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
-#include "verified_pair.hpp"
+#include "pair_output.hpp"
 
 namespace gyrores::cli {
 namespace {
@@ -20,6 +22,9 @@ struct design_args {
   bool proxy = false, json = false;
 };
 
+// The ranked pairs with their verified values (verified for the reported pairs only).
+using design_rows = std::vector<std::pair<resonant_pair<big_int>, verified_pair_values>>;
+
 std::string constraint_text(const design_args& a, const design_options& o) {
   std::ostringstream os;
   os << (o.time == design_time::first_hit ? "t_first" : "pi/|n|") << " <= " << a.tmax;
@@ -30,60 +35,65 @@ std::string constraint_text(const design_args& a, const design_options& o) {
   return os.str();
 }
 
-std::string run_design(const design_args& a) {
+design_problem parse_problem(const std::string& text) {
+  if (text == "absorb") return design_problem::absorb;
+  if (text == "contain") return design_problem::contain;
+  throw usage_error("the design problem must be 'absorb' or 'contain', got '" + text + "'");
+}
+
+// The options of the design problem from the flags (usage_error naming the flag).
+design_options design_options_of(const design_args& a) {
   design_options o;
-  if (a.problem == "absorb") o.problem = design_problem::absorb;
-  else if (a.problem == "contain") o.problem = design_problem::contain;
-  else throw usage_error("the design problem must be 'absorb' or 'contain', got '" + a.problem + "'");
-  if (a.digits < 1 || a.digits > 1000) throw usage_error("--digits must be in [1, 1000], got " + std::to_string(a.digits));
-  o.tmax = parse_rational(a.tmax, "--tmax");
-  if (!(o.tmax > 0)) throw usage_error("--tmax must be > 0, got " + a.tmax);
-  if (!a.beat.empty()) {
-    o.filter.beat_min = parse_rational(a.beat, "--beat");
-    if (!(*o.filter.beat_min > 0)) throw usage_error("--beat must be > 0, got " + a.beat);
-  }
+  o.problem = parse_problem(a.problem);
+  check_digits_flag(a.digits, 1, 1000);
+  o.tmax = parse_positive_flag(a.tmax, "--tmax");
+  if (!a.beat.empty()) o.filter.beat_min = parse_positive_flag(a.beat, "--beat");
   if (a.exclude_low < 0) throw usage_error("--exclude-low must be >= 0");
   if (a.delta < 0) throw usage_error("--delta must be >= 1");
-  if (a.candidates < 0 || a.candidates > 1000) throw usage_error("--candidates must be in [0, 1000]");
+  check_flag_range(a.candidates, 0, 1000, "--candidates");
   o.filter.exclude_low = a.exclude_low;
   if (a.delta > 0) o.filter.delta = a.delta;
   o.time = a.proxy ? design_time::proxy : design_time::first_hit;
   o.max_order = a.max_order;
   o.candidates = std::size_t(a.candidates);
-  auto catalogue = design_catalogue(a.max_order);
-  auto res = design_solve(catalogue, o);
-  if (!res.feasible_any())
-    throw compute_error("no resonant pair meets the constraints (" + constraint_text(a, o) + "; " +
-                        std::to_string(res.examined) + " pairs examined); nothing chosen");
+  check_max_order_flag(a.max_order);
+  return o;
+}
 
-  // Verified digits for the reported pairs only.
-  std::vector<std::pair<resonant_pair<big_int>, pair_values>> rows;
-  for (const auto& p : res.ranked) {
-    resonant_pair<big_int> bp(big_int(p.tau), big_int(p.sigma));
-    rows.push_back({bp, pair_values_verified(bp, unsigned(a.digits))});
-  }
-  const auto& chosen = res.ranked.front();
-  const bool exact_exceeds = a.proxy && !design_time_within(chosen, design_time::first_hit, o.tmax);
+std::string design_json(const design_args& a, const design_result& res, const design_rows& rows, bool exact_exceeds) {
+  json j;
+  j["problem"] = a.problem;
+  j["tmax"] = a.tmax;
+  j["time"] = a.proxy ? "proxy" : "t_first";
+  j["beat"] = a.beat.empty() ? json(nullptr) : json(a.beat);
+  j["max_order"] = a.max_order;
+  j["exclude_low"] = a.exclude_low;
+  j["delta"] = a.delta > 0 ? json(a.delta) : json(nullptr);
+  j["examined"] = res.examined;
+  j["feasible"] = res.feasible;
+  j["chosen"] = pair_values_json(rows[0].first, rows[0].second);
+  j["chosen_t_first_exceeds_tmax"] = exact_exceeds;
+  json c = json::array();
+  for (std::size_t i = 1; i < rows.size(); ++i) c.push_back(pair_values_json(rows[i].first, rows[i].second));
+  j["candidates"] = c;
+  j["digits"] = a.digits;
+  return json_dump(j) + "\n";
+}
 
-  if (a.json) {
-    json j;
-    j["problem"] = a.problem;
-    j["tmax"] = a.tmax;
-    j["time"] = a.proxy ? "proxy" : "t_first";
-    j["beat"] = a.beat.empty() ? json(nullptr) : json(a.beat);
-    j["max_order"] = a.max_order;
-    j["exclude_low"] = a.exclude_low;
-    j["delta"] = a.delta > 0 ? json(a.delta) : json(nullptr);
-    j["examined"] = res.examined;
-    j["feasible"] = res.feasible;
-    j["chosen"] = pair_values_json(rows[0].first, rows[0].second);
-    j["chosen_t_first_exceeds_tmax"] = exact_exceeds;
-    json c = json::array();
-    for (std::size_t i = 1; i < rows.size(); ++i) c.push_back(pair_values_json(rows[i].first, rows[i].second));
-    j["candidates"] = c;
-    j["digits"] = a.digits;
-    return json_dump(j) + "\n";
+void runners_up_text(std::ostringstream& os, const design_rows& rows) {
+  if (rows.size() <= 1) return;
+  os << "next best:\n";
+  os << "  rank  pair          n                 r_res             t_first           pi/|n|\n";
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& w = rows[i].second;
+    std::string pr = rows[i].first.str();
+    os << "  " << i + 1 << std::string(i + 1 < 10 ? 5 : 4, ' ') << pr << std::string(pr.size() < 14 ? 14 - pr.size() : 1, ' ')
+       << w.n << "  " << w.r_res << "  " << w.t_first << "  " << w.t_min_paper << "\n";
   }
+}
+
+std::string design_text(const design_args& a, const design_options& o, const design_result& res, const design_rows& rows,
+                        bool exact_exceeds) {
   std::ostringstream os;
   os << "design " << a.problem << ": " << (o.problem == design_problem::absorb ? "minimise" : "maximise")
      << " r_res (qdot0 = 1) subject to " << constraint_text(a, o) << "\n"
@@ -99,19 +109,25 @@ std::string run_design(const design_args& a) {
   if (exact_exceeds)
     os << "  note: the exact first-hit time exceeds --tmax " << a.tmax
        << ": the proxy chose a pair that does not meet the time constraint\n";
-  if (rows.size() > 1) {
-    os << "next best:\n";
-    os << "  rank  pair          n                 r_res             t_first           pi/|n|\n";
-    for (std::size_t i = 1; i < rows.size(); ++i) {
-      const auto& w = rows[i].second;
-      std::string pr = rows[i].first.str();
-      os << "  " << i + 1 << std::string(i + 1 < 10 ? 5 : 4, ' ') << pr << std::string(pr.size() < 14 ? 14 - pr.size() : 1, ' ')
-         << w.n << "  " << w.r_res << "  " << w.t_first << "  " << w.t_min_paper << "\n";
-    }
-  }
+  runners_up_text(os, rows);
   os << "  ranking: objective, then smaller time, then smaller order; " << a.digits
      << " digits, each verified (lattice method, cross-checked against the global search)\n";
   return os.str();
+}
+
+std::string run_design(const design_args& a) {
+  const design_options o = design_options_of(a);
+  const auto res = design_solve(design_catalogue(a.max_order), o);
+  if (!res.feasible_any())
+    throw compute_error("no resonant pair meets the constraints (" + constraint_text(a, o) + "; " +
+                        std::to_string(res.examined) + " pairs examined); nothing chosen");
+  design_rows rows;
+  for (const auto& p : res.ranked) {
+    resonant_pair<big_int> bp(big_int(p.tau), big_int(p.sigma));
+    rows.push_back({bp, verify_pair_values(bp, unsigned(a.digits))});
+  }
+  const bool exact_exceeds = a.proxy && !design_time_within(res.ranked.front(), design_time::first_hit, o.tmax);
+  return a.json ? design_json(a, res, rows, exact_exceeds) : design_text(a, o, res, rows, exact_exceeds);
 }
 
 command_runner install_design(CLI::App& app) {
@@ -125,8 +141,8 @@ command_runner install_design(CLI::App& app) {
   sub->add_option("--delta", a->delta, "only pairs with tau - sigma = D (follows the paper's Case A)");
   sub->add_flag("--proxy", a->proxy, "use the paper's proxy pi/|n| instead of the exact first-hit time");
   sub->add_option("--candidates", a->candidates, "runners-up to report")->capture_default_str();
-  sub->add_option("--digits", a->digits, "significant digits of every real printed")->capture_default_str();
-  sub->add_flag("--json", a->json, "one JSON object on stdout");
+  add_digits_option(sub, a->digits);
+  add_json_flag(sub, a->json);
   return [a] { return run_design(*a); };
 }
 

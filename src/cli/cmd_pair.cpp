@@ -1,11 +1,15 @@
 // gyrores pair TAU SIGMA [--digits D] [--qdot0 V] [--json] [--method lattice|global]
+// The report of inscribed/verified_pair.hpp (verify_pair), as JSON or text.
 #include <sstream>
 
-#include <gyrores/gyrores.hpp>
+#include <gyrores/core/verified_digits.hpp>
+#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/io/json.hpp>
 
-#include "cli_output.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
-#include "precision.hpp"
+#include "pair_output.hpp"
 
 namespace gyrores::cli {
 namespace {
@@ -16,208 +20,129 @@ struct pair_args {
   bool json = false;
 };
 
-// All real fields of the pair report in T, as exact MPFR copies.
-template <class T, pair_integer I>
-real_fields pair_fields(const resonant_pair<I>& p, const pair_args& args, solver_choice solver, bool cross_check) {
-  T v = real_from_decimal<T>(args.qdot0, "--qdot0");
-  analysis_options opt;
-  opt.solver = solver;
-  if (!cross_check) opt.cross_check_max_order = 0;
-  auto a = analyse_pair<T>(p, v, opt);
-  real_fields f;
-  auto put = [&](const char* name, const T& x) { f[name] = {real_to_mpfr(x)}; };
-  put("beat_ratio", a.beat_ratio);
-  put("n", a.n);
-  put("omega1", a.omega1);
-  put("omega2", a.omega2);
-  put("rho0", a.rho0);
-  put("qdot0", a.qdot0);
-  put("r_res", a.inscribed.r_res);
-  put("h_min", a.inscribed.h_min);
-  put("h_z_max", a.inscribed.h_z_max);
-  put("theta_first", a.inscribed.theta_first);
-  put("t_first", a.inscribed.t_first);
-  for (auto& m : a.inscribed.minimisers) f["minimisers"].push_back(real_to_mpfr(m));
-  put("t_min_paper", a.t_min_paper);
-  const auto& asy = a.asymptotic;
-  for (std::size_t i = 0; i < asy.lobes.size(); ++i) {
-    const auto& lo = asy.lobes[i];
-    std::string pre = "asy." + std::to_string(i) + ".";
-    for (auto [name, val] : {std::pair{"s", &lo.s}, {"u_asy", &lo.u_asy}, {"theta_asy", &lo.theta_asy},
-                             {"theta_c", &lo.theta_c}, {"error", &lo.error}, {"bound", &lo.bound}, {"ratio", &lo.ratio}})
-      f[pre + name] = {real_to_mpfr(*val)};
-  }
-  if (asy.applicable) {
-    put("r_res_asy", asy.r_res_asy);
-    put("r_res_asy_rel_error", asy.r_res_asy_rel_error);
-  }
-  return f;
+solver_choice parse_method(const std::string& method) {
+  if (method == "lattice") return solver_choice::lattice;
+  if (method == "global") return solver_choice::global_search;
+  throw usage_error("--method must be 'lattice' or 'global', got '" + method + "'");
 }
 
-// The integer and boolean parts of the asymptotic block (precision independent).
-struct asymptotic_exact {
-  bool applicable = false;
-  std::string reason;
-  std::vector<std::tuple<std::string, std::string, bool>> lobes;  // k, m, holds_global_min
-};
+// The pair's integers as JSON: tau, sigma, delta, its residue and 2-adic valuation, order.
+json pair_integers_json(const resonant_pair<big_int>& p) {
+  json j = pair_json(p);
+  j["delta"] = json_integer(big_int(p.delta()).str());
+  j["delta_mod4"] = p.delta_mod4();
+  j["v2_delta"] = p.v2_delta();
+  j["degenerate"] = p.degenerate();
+  j["order"] = json_integer(p.order().str());
+  return j;
+}
 
-template <pair_integer I> asymptotic_exact asymptotic_exact_of(const resonant_pair<I>& p) {
-  auto rep = paper_asymptotics<double>(p, 1.0);
-  asymptotic_exact e;
-  e.applicable = rep.applicable;
-  e.reason = rep.reason;
-  for (auto& lo : rep.lobes) e.lobes.emplace_back(lo.k.str(), lo.m.str(), lo.holds_global_min);
-  return e;
+json asymptotic_json(const verified_pair_report& r) {
+  json asy;
+  asy["applicable"] = r.asymptotic_applicable;
+  asy["reason"] = r.asymptotic_reason;
+  json lobes = json::array();
+  for (const auto& l : r.lobes) {
+    json lo;
+    lo["k"] = json_integer(l.k);
+    lo["m"] = json_integer(l.m);
+    for (auto [name, value] : {std::pair{"s", &l.s}, {"u_asy", &l.u_asy}, {"theta_asy", &l.theta_asy},
+                               {"theta_c", &l.theta_c}, {"error", &l.error}, {"bound", &l.bound}, {"ratio", &l.ratio}})
+      lo[name] = *value;
+    lo["holds_global_min"] = l.holds_global_min;
+    lobes.push_back(lo);
+  }
+  asy["lobes"] = lobes;
+  return asy;
+}
+
+std::string pair_report_json(const resonant_pair<big_int>& p, const verified_pair_report& r) {
+  json j = pair_integers_json(p);
+  for (auto [name, value] : {std::pair{"beat_ratio", &r.beat_ratio}, {"n", &r.n}, {"omega1", &r.omega1},
+                             {"omega2", &r.omega2}, {"rho0", &r.rho0}, {"qdot0", &r.qdot0}, {"r_res", &r.r_res},
+                             {"h_min", &r.h_min}, {"h_z_max", &r.h_z_max}, {"theta_first", &r.theta_first},
+                             {"t_first", &r.t_first}})
+    j[name] = *value;
+  j["minimisers"] = r.minimisers;
+  j["t_min_paper"] = r.t_min_paper;
+  j["asymptotic"] = asymptotic_json(r);
+  j["r_res_asy"] = r.asymptotic_applicable ? json(r.r_res_asy.value()) : json(nullptr);
+  j["r_res_asy_rel_error"] = r.asymptotic_applicable ? json(r.r_res_asy_rel_error.value()) : json(nullptr);
+  j["method"] = r.method;
+  j["cross_checked"] = r.cross_checked;
+  j["digits"] = r.digits;
+  j["working_precision"] = {{"type", r.working_precision.name()}, {"bits", r.working_precision.bits}};
+  return json_dump(j) + "\n";
+}
+
+// "  <key padded to 14 columns><value>".
+void text_line(std::ostringstream& os, const std::string& key, const std::string& value) {
+  os << "  " << key << std::string(14 - std::min<std::size_t>(13, key.size()), ' ') << value << "\n";
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pair_report& r) {
+  std::ostringstream os;
+  os << "pair " << p.str() << "  (order " << p.order().str() << ", delta " << big_int(p.delta()).str() << " = "
+     << p.delta_mod4() << " mod 4, v2(delta) = " << p.v2_delta() << ")\n";
+  text_line(os, "coupling n", r.n);
+  text_line(os, "W1, W2", r.omega1 + ", " + r.omega2);
+  text_line(os, "qdot0", r.qdot0);
+  text_line(os, "rho0", r.rho0);
+  text_line(os, "r_res", r.r_res + (p.degenerate() ? "  (exact: delta = 2 mod 4)" : ""));
+  text_line(os, "H_q min", r.h_min);
+  text_line(os, "H_z max", r.h_z_max);
+  text_line(os, "theta_first", r.theta_first);
+  text_line(os, "t_first", r.t_first);
+  text_line(os, "pi/|n|", r.t_min_paper + "  (the paper's proxy for the first-hit time)");
+  text_line(os, "minimisers", joined(r.minimisers));
+  if (r.r_res_asy)
+    text_line(os, "r_res_asy", *r.r_res_asy + "  (observed closed form v x |sin u* tan u*|; rel. error " +
+                                   *r.r_res_asy_rel_error + ")");
+  for (std::size_t i = 0; i < r.lobes.size(); ++i) {
+    const auto& l = r.lobes[i];
+    text_line(os, i == 0 ? "paper lobe" : "",
+              "theta_asy " + l.theta_asy + ", theta_c " + l.theta_c + ", |error| " + l.error + " <= bound " + l.bound);
+  }
+  os << "  method " << r.method << (r.cross_checked ? " (cross-checked against the global search)" : "") << "; "
+     << r.digits << " digits, each verified; working precision " << r.working_precision.name() << " ("
+     << r.working_precision.bits << " bits)\n";
+  return os.str();
 }
 
 std::string run_pair(const pair_args& args) {
-  if (args.digits < 1 || args.digits > 10000)
-    throw usage_error("--digits must be in [1, 10000], got " + std::to_string(args.digits));
-  big_int tau = parse_big_int(args.tau, "TAU"), sigma = parse_big_int(args.sigma, "SIGMA");
-  resonant_pair<big_int> p(tau, sigma);
-  {
-    // Reject a non-positive or malformed amplitude before any work.
-    scoped_digits d(30);
-    mpfr_real v = real_from_decimal<mpfr_real>(args.qdot0, "--qdot0");
-    if (!(v > 0)) throw usage_error("--qdot0 must be > 0, got " + args.qdot0);
-  }
-  solver_choice solver;
-  if (args.method == "lattice") solver = solver_choice::lattice;
-  else if (args.method == "global") solver = solver_choice::global_search;
-  else throw usage_error("--method must be 'lattice' or 'global', got '" + args.method + "'");
-  if (solver == solver_choice::global_search && p.order() > big_int(global_search_options{}.max_order))
-    throw compute_error("the global search is limited to order tau + sigma <= " +
-                        std::to_string(global_search_options{}.max_order) + "; use --method lattice for " + p.str());
-
-  const bool needs_mpfr = boost::multiprecision::msb(p.order()) > 900;
-  const bool small = pair_fits_int64(p);
-  bool cross_checked = false;
-  auto compute = [&](const precision_plan& plan) {
-    // Cross-check once (it runs in double, whatever the plan).
-    bool do_check = !cross_checked;
-    real_fields f = with_real_type(plan, [&](auto tag) {
-      using T = decltype(tag);
-      if (small) return pair_fields<T>(pair_cast<std::int64_t>(p), args, solver, do_check);
-      return pair_fields<T>(p, args, solver, do_check);
-    });
-    if (do_check && solver == solver_choice::lattice && !p.degenerate() &&
-        p.order() <= big_int(cross_check_default_max_order))
-      cross_checked = true;
-    return f;
-  };
-  verified_run run = compute_verified(unsigned(args.digits), needs_mpfr, compute);
-
-  const std::string method = p.degenerate() ? "degenerate-exact"
-                             : solver == solver_choice::lattice ? "lattice" : "global-search";
-  if (args.json) {
-    json j;
-    j["tau"] = json_integer(p.tau().str());
-    j["sigma"] = json_integer(p.sigma().str());
-    j["delta"] = json_integer(big_int(p.delta()).str());
-    j["delta_mod4"] = p.delta_mod4();
-    j["v2_delta"] = p.v2_delta();
-    j["degenerate"] = p.degenerate();
-    j["order"] = json_integer(p.order().str());
-    auto one = [&](const char* k) { j[k] = run.fields.at(k).at(0); };
-    one("beat_ratio");
-    one("n");
-    one("omega1");
-    one("omega2");
-    one("rho0");
-    one("qdot0");
-    one("r_res");
-    one("h_min");
-    one("h_z_max");
-    one("theta_first");
-    one("t_first");
-    j["minimisers"] = run.fields.at("minimisers");
-    one("t_min_paper");
-    {
-      asymptotic_exact e = needs_mpfr ? asymptotic_exact{} : small ? asymptotic_exact_of(pair_cast<std::int64_t>(p))
-                                                                   : asymptotic_exact_of(p);
-      if (needs_mpfr) {
-        scoped_digits sd(40);
-        auto rep = paper_asymptotics<mpfr_real>(p, mpfr_real(1));
-        e.applicable = rep.applicable;
-        e.reason = rep.reason;
-        for (auto& lo : rep.lobes) e.lobes.emplace_back(lo.k.str(), lo.m.str(), lo.holds_global_min);
-      }
-      json asy;
-      asy["applicable"] = e.applicable;
-      asy["reason"] = e.reason;
-      json lobes = json::array();
-      for (std::size_t i = 0; i < e.lobes.size(); ++i) {
-        json lo;
-        lo["k"] = json_integer(std::get<0>(e.lobes[i]));
-        lo["m"] = json_integer(std::get<1>(e.lobes[i]));
-        std::string pre = "asy." + std::to_string(i) + ".";
-        for (const char* name : {"s", "u_asy", "theta_asy", "theta_c", "error", "bound", "ratio"})
-          lo[name] = run.fields.at(pre + name).at(0);
-        lo["holds_global_min"] = std::get<2>(e.lobes[i]);
-        lobes.push_back(lo);
-      }
-      asy["lobes"] = lobes;
-      j["asymptotic"] = asy;
-      if (e.applicable) {
-        j["r_res_asy"] = run.fields.at("r_res_asy").at(0);
-        j["r_res_asy_rel_error"] = run.fields.at("r_res_asy_rel_error").at(0);
-      } else {
-        j["r_res_asy"] = nullptr;
-        j["r_res_asy_rel_error"] = nullptr;
-      }
-    }
-    j["method"] = method;
-    j["cross_checked"] = cross_checked;
-    j["digits"] = args.digits;
-    j["working_precision"] = {{"type", run.plan.name()}, {"bits", run.plan.bits}};
-    return json_dump(j) + "\n";
-  }
-  std::ostringstream os;
-  auto line = [&](const std::string& k, const std::string& v) { os << "  " << k << std::string(14 - std::min<std::size_t>(13, k.size()), ' ') << v << "\n"; };
-  os << "pair " << p.str() << "  (order " << p.order().str() << ", delta " << big_int(p.delta()).str() << " = "
-     << p.delta_mod4() << " mod 4, v2(delta) = " << p.v2_delta() << ")\n";
-  line("coupling n", run.fields.at("n")[0]);
-  line("W1, W2", run.fields.at("omega1")[0] + ", " + run.fields.at("omega2")[0]);
-  line("qdot0", run.fields.at("qdot0")[0]);
-  line("rho0", run.fields.at("rho0")[0]);
-  line("r_res", run.fields.at("r_res")[0] + (p.degenerate() ? "  (exact: delta = 2 mod 4)" : ""));
-  line("H_q min", run.fields.at("h_min")[0]);
-  line("H_z max", run.fields.at("h_z_max")[0]);
-  line("theta_first", run.fields.at("theta_first")[0]);
-  line("t_first", run.fields.at("t_first")[0]);
-  line("pi/|n|", run.fields.at("t_min_paper")[0] + "  (the paper's proxy for the first-hit time)");
-  std::string mins;
-  for (auto& m : run.fields.at("minimisers")) mins += (mins.empty() ? "" : ", ") + m;
-  line("minimisers", mins);
-  if (run.fields.count("r_res_asy"))
-    line("r_res_asy", run.fields.at("r_res_asy")[0] + "  (observed closed form v x |sin u* tan u*|; rel. error " +
-                          run.fields.at("r_res_asy_rel_error")[0] + ")");
-  for (std::size_t i = 0; run.fields.count("asy." + std::to_string(i) + ".theta_asy"); ++i) {
-    std::string pre = "asy." + std::to_string(i) + ".";
-    line(i == 0 ? "paper lobe" : "", "theta_asy " + run.fields.at(pre + "theta_asy")[0] + ", theta_c " +
-                                         run.fields.at(pre + "theta_c")[0] + ", |error| " +
-                                         run.fields.at(pre + "error")[0] + " <= bound " + run.fields.at(pre + "bound")[0]);
-  }
-  os << "  method " << method << (cross_checked ? " (cross-checked against the global search)" : "")
-     << "; " << args.digits << " digits, each verified; working precision " << run.plan.name() << " ("
-     << run.plan.bits << " bits)\n";
-  return os.str();
+  check_digits_flag(args.digits, 1, int(verified_digits_max));
+  const resonant_pair<big_int> p = parse_pair_arguments(args.tau, args.sigma);
+  check_qdot0_text(args.qdot0, "--qdot0");  // before any work
+  verified_pair_options opt;
+  opt.digits = unsigned(args.digits);
+  opt.qdot0 = args.qdot0;
+  opt.solver = parse_method(args.method);
+  const std::int64_t global_limit = global_search_options{}.max_order;
+  if (opt.solver == solver_choice::global_search && p.order() > big_int(global_limit))
+    throw compute_error("the global search is limited to order tau + sigma <= " + std::to_string(global_limit) +
+                        "; use --method lattice for " + p.str());
+  const verified_pair_report r = verify_pair(p, opt);
+  return args.json ? pair_report_json(p, r) : pair_report_text(p, r);
 }
 
 command_runner install_pair(CLI::App& app) {
   auto args = std::make_shared<pair_args>();
   auto* sub = app.add_subcommand("pair", "Inscribed radius, minimisers and first-hit time of a resonant pair");
-  sub->add_option("TAU", args->tau, "tau (integer > sigma; any size)")->required();
-  sub->add_option("SIGMA", args->sigma, "sigma (integer >= 1, coprime to tau)")->required();
-  sub->add_option("--digits", args->digits, "significant digits of every real printed (1..10000)")->capture_default_str();
+  add_pair_arguments(sub, args->tau, args->sigma);
+  add_digits_option(sub, args->digits, "significant digits of every real printed (1..10000)");
   sub->add_option("--qdot0", args->qdot0, "impulse amplitude qdot0 > 0 (decimal)")->capture_default_str();
   sub->add_option("--method", args->method, "lattice (any pair, cross-checked up to order 20000) or global (order <= 1e5)")->capture_default_str();
-  sub->add_flag("--json", args->json, "one JSON object on stdout");
+  add_json_flag(sub, args->json);
   return [args] { return run_pair(*args); };
 }
 
 const command_registration registration{"pair", install_pair};
 
 }  // namespace
-
 }  // namespace gyrores::cli

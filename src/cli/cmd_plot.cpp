@@ -6,12 +6,12 @@
 // gnuplot is missing the command says so and still writes both (exit 0).
 #include <sstream>
 
-#include <gyrores/core/decimal.hpp>
 #include <gyrores/design/coupling.hpp>
 #include <gyrores/design/design.hpp>
 #include <gyrores/design/figures.hpp>
+#include <gyrores/model/resonant.hpp>
 
-#include "cli_output.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "plots.hpp"
 
@@ -39,7 +39,7 @@ plot_subject subject_of(const plot_args& a) {
   std::optional<resonant_pair<big_int>> bp;
   if (have_pair) {
     if (a.tau.empty() || a.sigma.empty()) throw usage_error("a pair needs both TAU and SIGMA");
-    bp = resonant_pair<big_int>(parse_big_int(a.tau, "TAU"), parse_big_int(a.sigma, "SIGMA"));
+    bp = parse_pair_arguments(a.tau, a.sigma);
   } else {
     auto spec = !a.n.empty() ? coupling_spec::from_n(parse_rational(a.n, "--n")) : coupling_spec::from_n2(parse_rational(a.n2, "--n2"));
     bp = coupling_resonant_pair(spec);
@@ -49,9 +49,7 @@ plot_subject subject_of(const plot_args& a) {
       return s;
     }
   }
-  if (!pair_fits_int64(*bp) || bp->order() > big_int(figure_max_order))
-    throw usage_error("figures sample pairs up to order " + std::to_string(figure_max_order) + ", got " + bp->str());
-  s.pair = pair_cast<std::int64_t>(*bp);
+  s.pair = figure_pair_of(*bp);
   s.n = resonant_constants_of<double>(*s.pair, 1.0).n;
   s.label = "pair " + s.pair->str();
   return s;
@@ -59,9 +57,7 @@ plot_subject subject_of(const plot_args& a) {
 
 double tmax_of(const plot_args& a) {
   if (a.tmax.empty()) return 0;
-  auto t = parse_rational(a.tmax, "--tmax");
-  if (!(t > 0)) throw usage_error("--tmax must be > 0, got " + a.tmax);
-  return t.convert_to<double>();
+  return parse_positive_flag(a.tmax, "--tmax").convert_to<double>();
 }
 
 std::string files_text(const figure_output& f) {
@@ -120,19 +116,16 @@ std::string run_energy(const plot_args& a) {
 }
 
 std::string run_pareto_plot(const plot_args& a) {
-  pareto_orientation o;
-  if (a.orientation == "absorb") o = pareto_orientation::absorb;
-  else if (a.orientation == "contain") o = pareto_orientation::contain;
-  else throw usage_error("--orientation must be 'absorb' or 'contain', got '" + a.orientation + "'");
+  const pareto_orientation o = parse_orientation_flag(a.orientation);
   auto spec = figure_spec_from_out(a.out.empty() ? "pareto.svg" : a.out, a.size, 900, 640);
+  check_max_order_flag(a.max_order);
   auto cat = design_catalogue(a.max_order);
   std::vector<design_point> pts;
   for (auto& p : cat)
     if (!a.exclude_degenerate || !p.degenerate) pts.push_back(p);
   const design_time which = a.proxy ? design_time::proxy : design_time::first_hit;
   auto front = pareto_front(pts, o, which);
-  std::string title = "Pareto front, tau+sigma <= " + std::to_string(a.max_order) + " (" +
-                      (o == pareto_orientation::absorb ? "absorb: min r_res, min time" : "contain: max r_res, min time") +
+  std::string title = "Pareto front, tau+sigma <= " + std::to_string(a.max_order) + " (" + pareto_orientation_caption(o) +
                       (a.exclude_degenerate ? ", degenerate pairs excluded" : "") + ")";
   auto f = write_pareto_figure(spec, pts, front, which, title);
   return std::to_string(front.size()) + " front points of " + std::to_string(pts.size()) + " pairs\n" + files_text(f);
@@ -142,14 +135,17 @@ command_runner install_plot(CLI::App& app) {
   auto a = std::make_shared<plot_args>();
   auto* sub = app.add_subcommand("plot", "Figures with gnuplot (SVG or PNG), data and script kept beside each");
   sub->require_subcommand(1);
+  auto image = [&](CLI::App* s) {
+    s->add_option("--out", a->out, "output FILE.svg or FILE.png");
+    add_size_option(s, a->size, "image size WxH in pixels");
+  };
   auto common = [&](CLI::App* s, const char* what) {
     s->add_option("TAU", a->tau, "tau of a resonant pair");
     s->add_option("SIGMA", a->sigma, "sigma of a resonant pair");
     s->add_option("--n", a->n, "any coupling n (decimal or fraction)");
     s->add_option("--n2", a->n2, "n^2 as a fraction (e.g. 1/12)");
     s->add_option("--tmax", a->tmax, what);
-    s->add_option("--out", a->out, "output FILE.svg or FILE.png");
-    s->add_option("--size", a->size, "image size WxH in pixels");
+    image(s);
   };
   auto* phase = sub->add_subcommand("phase", "Phase portrait (q, q') with envelope, inscribed and maximal circles");
   common(phase, "time span for a non-resonant n (default 200 pi/n, as the paper's Fig. 1)");
@@ -160,8 +156,7 @@ command_runner install_plot(CLI::App& app) {
   pareto->add_option("--orientation", a->orientation, "absorb or contain")->capture_default_str();
   pareto->add_flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");
   pareto->add_flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs");
-  pareto->add_option("--out", a->out, "output FILE.svg or FILE.png");
-  pareto->add_option("--size", a->size, "image size WxH in pixels");
+  image(pareto);
   return [a, phase, energy, pareto] {
     if (phase->parsed()) return run_phase(*a);
     if (energy->parsed()) return run_energy(*a);

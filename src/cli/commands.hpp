@@ -1,4 +1,4 @@
-// Subcommands of the gyrores CLI. Each src/cmd_<name>.cpp registers itself through a static
+// Subcommands of the gyrores CLI. Each src/cli/cmd_<name>.cpp registers itself through a static
 // command_registration object: it adds its options to the app and returns the function that
 // runs it. A run returns the text for stdout, printed only on success (so a failing command
 // writes nothing to stdout).

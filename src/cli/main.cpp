@@ -1,4 +1,4 @@
-// gyrores: the command-line front end. It only parses, chooses precision and prints; the
+// gyrores: the command-line front end. It only parses, calls the library and prints; the
 // mathematics lives in include/gyrores/. Errors: one line on stderr, nothing on stdout,
 // exit 2 for bad input, 3 when a result could not be computed honestly.
 #include <CLI/CLI.hpp>

@@ -29,26 +29,32 @@
 // Each root is solved by TOMS 748 (roots.hpp) in T; H_q is q^2/2 at a q' root (q' = 0 there;
 // R is stationary, see resonant.hpp) and (q^2 + q'^2)/2 at a z' root. Cost: about 2 W1 T/pi
 // root solves. Accuracy: the phases W1 t are formed in T, so the absolute phase error grows
-// like T * eps(T); the CLI proves its digits by recomputing at higher precision.
+// like T * eps(T); coupling_report.hpp verifies printed digits by recomputing at higher
+// precision (core/verified_digits.hpp).
 // Infimum over all time: for non-resonant n the line (W1 t, W2 t) is dense on the torus and
 // passes arbitrarily close to P+ = (pi/2, -pi/2), where q = q' = 0 (docs/mathematics.md §3): inf H_q = 0,
 // not attained. For resonant n it is the pair's H_min = r_res^2/2, first attained at t_first.
 #pragma once
 #include <boost/multiprecision/gmp.hpp>
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <gyrores/model/model.hpp>
-#include <gyrores/model/pair.hpp>
+#include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/core/roots.hpp>
+#include <gyrores/model/model.hpp>
+#include <gyrores/model/pair.hpp>
 
 namespace gyrores {
+
+// q in T: numerator and denominator rounded to T, then divided (real_from_ratio).
+template <class T> T real_from_rational(const big_rational& q) {
+  return real_from_ratio<T>(big_int(boost::multiprecision::numerator(q)), big_int(boost::multiprecision::denominator(q)));
+}
 
 // A coupling given exactly: n^2 (always rational here) and, when known, n itself (rational).
 // n = 0 is rejected (no coupling: H_q is constant). The sign of n is kept for messages only.
@@ -56,19 +62,13 @@ struct coupling_spec {
   big_rational n2;                 // n^2 > 0, exact
   std::optional<big_rational> n;   // n when given as a rational (its sign as given)
 
-  static coupling_spec from_n(const big_rational& n) {
-    if (n == 0) throw usage_error("n = 0 means no coupling: H_q = qdot0^2/2 for all t (nothing to analyse)");
-    return {n * n, n};
-  }
-  static coupling_spec from_n2(const big_rational& n2) {
-    if (n2 < 0) throw usage_error("n^2 must be > 0, got " + rational_str(n2));
-    if (n2 == 0) throw usage_error("n^2 = 0 means no coupling: H_q = qdot0^2/2 for all t (nothing to analyse)");
-    return {n2, std::nullopt};
-  }
-  big_int P() const { return boost::multiprecision::numerator(n2); }
-  big_int Q() const { return boost::multiprecision::denominator(n2); }
+  // Throw usage_error for n = 0, n^2 <= 0.
+  static coupling_spec from_n(const big_rational& n);
+  static coupling_spec from_n2(const big_rational& n2);
+  big_int P() const;  // numerator of n^2
+  big_int Q() const;  // denominator of n^2
   // D = P (P + 4Q): W1/W2 is rational iff D is a perfect square.
-  big_int discriminant() const { return P() * (P() + 4 * Q()); }
+  big_int discriminant() const;
 
   // |n| in T: |num|/den for a rational n, else sqrt(P/Q) (correctly rounded parts).
   template <class T> T abs_n() const {
@@ -83,11 +83,7 @@ struct coupling_spec {
 };
 
 // The resonant pair of a coupling, decided exactly; std::nullopt when W1/W2 is irrational.
-inline std::optional<resonant_pair<big_int>> coupling_resonant_pair(const coupling_spec& c) {
-  big_int root;
-  if (!int_is_square(c.discriminant(), root)) return std::nullopt;
-  return pair_from_ratio(c.P() + 2 * c.Q() + root, 2 * c.Q());
-}
+std::optional<resonant_pair<big_int>> coupling_resonant_pair(const coupling_spec& c);
 
 // One convergent p/q of W1/W2 with its resonant pair (p > q) and the partial quotient a_k.
 struct ratio_convergent {
@@ -97,54 +93,7 @@ struct ratio_convergent {
 
 // The first `max_terms` convergents of W1/W2 (all of them when the ratio is rational, i.e. the
 // coupling is resonant: the last is then W1/W2 itself). Exact integer arithmetic throughout.
-inline std::vector<ratio_convergent> coupling_convergents(const coupling_spec& c, std::size_t max_terms) {
-  std::vector<ratio_convergent> out;
-  big_int P = c.P(), Q = c.Q(), D = c.discriminant();
-  big_int m = P + 2 * Q, d = 2 * Q;  // W1/W2 = (m + sqrt D)/d
-  big_int sq;
-  bool rational = int_is_square(D, sq);
-  big_int p_prev = 1, p_prev2 = 0, q_prev = 0, q_prev2 = 1;  // p_{-1}, p_{-2}, q_{-1}, q_{-2}
-  if (rational) {
-    // Plain Euclid on the reduced fraction (m + sq)/d.
-    big_int num = m + sq, den = d;
-    big_int g = int_gcd(num, den);
-    num /= g;
-    den /= g;
-    while (den != 0 && out.size() < max_terms) {
-      big_int a = num / den;  // num, den > 0
-      big_int r = num - a * den;
-      big_int p = a * p_prev + p_prev2, q = a * q_prev + q_prev2;
-      out.push_back({a, p, q});
-      p_prev2 = p_prev; p_prev = p; q_prev2 = q_prev; q_prev = q;
-      num = den;
-      den = r;
-    }
-    return out;
-  }
-  // Quadratic irrational (m + sqrt D)/d with d | D - m^2 (here D - m^2 = -4 Q^2 and d = 2Q).
-  while (out.size() < max_terms) {
-    // a = floor((m + sqrt D)/d); with D non-square, floor((m + isqrt D)/d) for d > 0 and
-    // floor((m + isqrt D + 1)/d) - ... for d < 0; handle both signs exactly.
-    big_int a;
-    if (d > 0) {
-      a = (m + sq);
-      a = a >= 0 ? big_int(a / d) : big_int(-((-a + d - 1) / d));
-    } else {
-      // (m + sqrt D)/d with d < 0: floor = floor((-(m) - sqrt D)/(-d)); -(m + sqrt D) lies in
-      // (-(m + sq + 1), -(m + sq)), so floor((-(m + sq + 1))/(-d)) rounded as below.
-      big_int num = -(m + sq + 1), den = -d;
-      a = num >= 0 ? big_int(num / den) : big_int(-((-num + den - 1) / den));
-    }
-    big_int p = a * p_prev + p_prev2, q = a * q_prev + q_prev2;
-    out.push_back({a, p, q});
-    p_prev2 = p_prev; p_prev = p; q_prev2 = q_prev; q_prev = q;
-    big_int m_next = a * d - m;
-    big_int d_next = (D - m_next * m_next) / d;
-    m = m_next;
-    d = d_next;
-  }
-  return out;
-}
+std::vector<ratio_convergent> coupling_convergents(const coupling_spec& c, std::size_t max_terms);
 
 // Result of horizon_minimum: min of H_q over [0, T] and the first time it is attained.
 template <class T> struct horizon_min_result {
@@ -160,101 +109,136 @@ template <class T> struct horizon_min_result {
 // usage_error (asks for a shorter horizon).
 inline constexpr std::size_t horizon_max_critical_points = 4000000;
 
+namespace detail {
+
+// q/rho0, q'/rho0 and z'/rho0 of the impulse response (model.hpp) at t.
+template <class T> struct horizon_motion {
+  T W1, W2;
+  T qdot(const T& t) const {
+    using std::cos;
+    return T(W1 * cos(W1 * t) + W2 * cos(W2 * t));
+  }
+  T zdot(const T& t) const {
+    using std::sin;
+    return T(W1 * sin(W1 * t) - W2 * sin(W2 * t));
+  }
+  T qpos(const T& t) const {
+    using std::sin;
+    return T(sin(W1 * t) + sin(W2 * t));
+  }
+};
+
+// The running minimum of H_q over the critical points examined. Every candidate within a
+// relative tie band of the running minimum is kept; at the end the earliest of them is the first
+// time the minimum is attained.
+template <class T> class horizon_min_tracker {
+ public:
+  explicit horizon_min_tracker(const T& tie_rel) : tie_rel_(tie_rel) {}
+  void consider(const T& t, const T& h, const T& q, const T& qdot, bool end) {
+    ++count_;
+    if (!have_ || h < best_) {
+      best_ = h;
+      have_ = true;
+      std::erase_if(near_, [&](const candidate& c) { return c.h > best_ * (1 + tie_rel_); });
+    }
+    if (h <= best_ * (1 + tie_rel_)) near_.push_back({t, h, q, qdot, end});
+  }
+  // Precondition: consider() was called at least once.
+  void finish(horizon_min_result<T>& r) const {
+    const candidate* first = &near_.front();
+    for (const auto& c : near_)
+      if (c.t < first->t) first = &c;
+    r.h_min = best_;
+    r.t_min = first->t;
+    r.q = first->q;
+    r.qdot = first->qdot;
+    r.at_horizon_end = first->end;
+    r.critical_points = count_;
+  }
+
+ private:
+  struct candidate {
+    T t, h, q, qdot;
+    bool end;
+  };
+  T tie_rel_;
+  T best_ = 0;
+  bool have_ = false;
+  std::size_t count_ = 0;
+  std::vector<candidate> near_;
+};
+
+// The root of f in [lo, min(hi, horizon)], or nullopt for an interval clipped by the horizon in
+// which f does not change sign (an unclipped interval always holds exactly one root: header
+// comment). Adds the evaluations of f.
+template <class T, class F>
+std::optional<T> horizon_root(const F& f, const T& lo, T hi, const T& horizon, const T& tol_floor, const char* what,
+                              std::uintmax_t& evaluations) {
+  const bool clipped = hi > horizon;
+  if (clipped) hi = horizon;
+  const T flo = f(lo), fhi = f(hi);
+  if (clipped && (flo < 0) == (fhi < 0) && fhi != 0) return std::nullopt;
+  evaluations += 2;
+  auto root = root_bracketed(f, lo, hi, flo, fhi, default_root_tolerance<T>(tol_floor), what);
+  evaluations += root.evaluations;
+  return root.root;
+}
+
+}  // namespace detail
+
 // min of H_q = (q^2 + q'^2)/2 over [0, horizon] for coupling n != 0 (|n| is used) and impulse
 // v > 0, by the exact bracketing of the critical points described in the header comment.
-// Preconditions (checked, usage_error): v > 0, horizon >= 0, n != 0.
+// Preconditions (checked, usage_error): v > 0, horizon >= 0, n != 0, at most
+// horizon_max_critical_points critical points.
 template <class T> horizon_min_result<T> horizon_minimum(const T& n_in, const T& v, const T& horizon) {
-  using std::cos;
   using std::fabs;
   using std::floor;
   using std::ldexp;
-  using std::sin;
   if (!(v > 0)) throw usage_error("the impulse amplitude qdot0 must be > 0");
   if (!(horizon >= 0)) throw usage_error("the horizon must be >= 0");
   if (n_in == 0) throw usage_error("n = 0 means no coupling: H_q is constant");
   const T n = fabs(n_in);
   const auto w = modal_frequencies_of(n);
-  const T W1 = w.omega1, W2 = w.omega2, rho0 = impulse_rho0(n, v), pi = real_pi<T>();
-  const T step = pi / W1;
-  {
-    T count = 2 * horizon / step;
-    if (count > T(double(horizon_max_critical_points)))
-      throw usage_error("the horizon is too long: about " + std::to_string(static_cast<long long>(static_cast<double>(count))) +
-                        " critical points (limit " + std::to_string(horizon_max_critical_points) + ")");
-  }
-  auto qdot = [&](const T& t) { return T(W1 * cos(W1 * t) + W2 * cos(W2 * t)); };  // / rho0
-  auto zdot = [&](const T& t) { return T(W1 * sin(W1 * t) - W2 * sin(W2 * t)); };
-  auto qpos = [&](const T& t) { return T(sin(W1 * t) + sin(W2 * t)); };
-
+  const detail::horizon_motion<T> m{w.omega1, w.omega2};
+  const T rho0 = impulse_rho0(n, v), pi = real_pi<T>();
+  const T step = pi / m.W1;
+  if (T count = 2 * horizon / step; count > T(double(horizon_max_critical_points)))
+    throw usage_error("the horizon is too long: about " + std::to_string(static_cast<long long>(static_cast<double>(count))) +
+                      " critical points (limit " + std::to_string(horizon_max_critical_points) + ")");
+  auto qdot = [&m](const T& t) { return m.qdot(t); };
+  auto zdot = [&m](const T& t) { return m.zdot(t); };
   horizon_min_result<T> r;
-  // Keep every candidate within a relative 2^(-3 bits/4) of the running minimum (the tie band);
-  // at the end the earliest of them is the first time the minimum is attained.
-  const T tie_rel = ldexp(T(1), -int(3 * real_bits<T>() / 4));
-  struct candidate {
-    T t, h, q, qdot;
-    bool end;
-  };
-  std::vector<candidate> near;
-  T best = 0;
-  bool have = false;
-  auto consider = [&](const T& t, const T& h, const T& qv, const T& qd, bool end) {
-    ++r.critical_points;
-    if (!have || h < best) {
-      best = h;
-      have = true;
-      std::erase_if(near, [&](const candidate& c) { return c.h > best * (1 + tie_rel); });
-    }
-    if (h <= best * (1 + tie_rel)) near.push_back({t, h, qv, qd, end});
-  };
-  // t = 0: the z' root of the first interval (H_q(0) = v^2/2).
-  consider(T(0), v * v / 2, T(0), v, false);
+  detail::horizon_min_tracker<T> best(ldexp(T(1), -int(3 * real_bits<T>() / 4)));
+  best.consider(T(0), v * v / 2, T(0), v, false);  // t = 0: the z' root of the first interval
   const T tol_floor = step / 1024;
-  auto solve = [&](auto&& f, const T& lo, const T& hi, const char* what) {
-    T flo = f(lo), fhi = f(hi);
-    r.evaluations += 2;
-    auto root = root_bracketed(f, lo, hi, flo, fhi, default_root_tolerance<T>(tol_floor), what);
-    r.evaluations += root.evaluations;
-    return root.root;
-  };
   // Roots of q' in [i step, (i+1) step] and of z' in [(i+1/2) step, (i+3/2) step], clipped to T.
   const long long intervals = static_cast<long long>(static_cast<double>(floor(horizon / step))) + 1;
   for (long long i = 0; i < intervals; ++i) {
-    T lo = step * T(i), hi = step * T(i + 1);
+    const T lo = step * T(i);
     if (lo > horizon) break;
-    bool clipped = hi > horizon;
-    if (clipped) hi = horizon;
-    T flo = qdot(lo), fhi = qdot(hi);
-    if (!clipped || (flo < 0) != (fhi < 0) || fhi == 0) {
-      T t = solve(qdot, lo, hi, "horizon minimum (q' = 0)");
-      T qv = rho0 * qpos(t);
-      consider(t, qv * qv / 2, qv, T(0), false);
+    if (auto t = detail::horizon_root(qdot, lo, T(step * T(i + 1)), horizon, tol_floor, "horizon minimum (q' = 0)",
+                                      r.evaluations)) {
+      T qv = rho0 * m.qpos(*t);
+      best.consider(*t, qv * qv / 2, qv, T(0), false);
     }
-    T zlo = step * (T(i) + T(0.5)), zhi = step * (T(i) + T(1.5));
-    if (zlo <= horizon) {
-      bool zclipped = zhi > horizon;
-      if (zclipped) zhi = horizon;
-      T glo = zdot(zlo), ghi = zdot(zhi);
-      if (!zclipped || (glo < 0) != (ghi < 0) || ghi == 0) {
-        T t = solve(zdot, zlo, zhi, "horizon minimum (z' = 0)");
-        T qv = rho0 * qpos(t), qd = rho0 * qdot(t);
-        consider(t, (qv * qv + qd * qd) / 2, qv, qd, false);
-      }
+    const T zlo = step * (T(i) + T(0.5));
+    if (zlo > horizon) continue;
+    if (auto t = detail::horizon_root(zdot, zlo, T(step * (T(i) + T(1.5))), horizon, tol_floor,
+                                      "horizon minimum (z' = 0)", r.evaluations)) {
+      T qv = rho0 * m.qpos(*t), qd = rho0 * m.qdot(*t);
+      best.consider(*t, (qv * qv + qd * qd) / 2, qv, qd, false);
     }
   }
   // The end point t = T (counted among the critical points).
-  {
-    T qv = rho0 * qpos(horizon), qd = rho0 * qdot(horizon);
-    consider(horizon, (qv * qv + qd * qd) / 2, qv, qd, true);
-  }
-  const candidate* first = &near.front();
-  for (const auto& c : near)
-    if (c.t < first->t) first = &c;
-  r.h_min = best;
-  r.t_min = first->t;
-  r.q = first->q;
-  r.qdot = first->qdot;
-  r.at_horizon_end = first->end;
+  const T qv = rho0 * m.qpos(horizon), qd = rho0 * m.qdot(horizon);
+  best.consider(horizon, (qv * qv + qd * qd) / 2, qv, qd, true);
+  best.finish(r);
   return r;
 }
+
+// Compiled once in src/lib/design/ for double, long double, float128 and mpfr_real.
+#define GYRORES_HORIZON_MINIMUM_INSTANCES(PREFIX, T) \
+  PREFIX template horizon_min_result<T> horizon_minimum<T>(const T&, const T&, const T&);
+GYRORES_FOR_COMPILED_REALS(GYRORES_HORIZON_MINIMUM_INSTANCES, extern)
 
 }  // namespace gyrores

@@ -1,0 +1,56 @@
+// src/cli/cli_options.hpp
+#include "cli_options.hpp"
+
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/core/error.hpp>
+
+namespace gyrores::cli {
+
+void add_pair_arguments(CLI::App* sub, std::string& tau, std::string& sigma) {
+  sub->add_option("TAU", tau, "tau (integer > sigma; any size)")->required();
+  sub->add_option("SIGMA", sigma, "sigma (integer >= 1, coprime to tau)")->required();
+}
+
+resonant_pair<big_int> parse_pair_arguments(const std::string& tau, const std::string& sigma) {
+  big_int t = parse_big_int(tau, "TAU"), s = parse_big_int(sigma, "SIGMA");
+  return resonant_pair<big_int>(t, s);
+}
+
+void add_digits_option(CLI::App* sub, int& digits, const std::string& help) {
+  sub->add_option("--digits", digits, help)->capture_default_str();
+}
+
+void add_json_flag(CLI::App* sub, bool& json) { sub->add_flag("--json", json, "one JSON object on stdout"); }
+
+void add_size_option(CLI::App* sub, std::string& size, const std::string& help) { sub->add_option("--size", size, help); }
+
+void check_digits_flag(int digits, int lo, int hi) {
+  if (digits < lo || digits > hi)
+    throw usage_error("--digits must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                      std::to_string(digits));
+}
+
+void check_flag_range(std::int64_t value, std::int64_t lo, std::int64_t hi, const std::string& flag) {
+  if (value < lo || value > hi)
+    throw usage_error(flag + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+void check_max_order_flag(std::int64_t max_order) {
+  if (max_order < 3) throw usage_error("--max-order must be >= 3 (the smallest pair (2, 1) has order 3)");
+  if (max_order > design_max_order_limit)
+    throw usage_error("--max-order must be <= " + std::to_string(design_max_order_limit) + ", got " + std::to_string(max_order));
+}
+
+big_rational parse_positive_flag(const std::string& text, const std::string& flag) {
+  big_rational v = parse_rational(text, flag);
+  if (!(v > 0)) throw usage_error(flag + " must be > 0, got " + text);
+  return v;
+}
+
+pareto_orientation parse_orientation_flag(const std::string& text) {
+  if (text == "absorb") return pareto_orientation::absorb;
+  if (text == "contain") return pareto_orientation::contain;
+  throw usage_error("--orientation must be 'absorb' or 'contain', got '" + text + "'");
+}
+
+}  // namespace gyrores::cli

@@ -1,0 +1,28 @@
+// The report's closing sections: the list of files, and the notes on figures not drawn.
+#include <sstream>
+
+#include "report.hpp"
+
+namespace gyrores::cli::report {
+
+std::string files_section(const figure_set& figs) {
+  std::ostringstream md;
+  md << "## Files\n\n";
+  for (const auto& [stem, have] : figs.drawn) {
+    md << "- " << stem << ": ";
+    if (have.first) md << "[png](figures/" << stem << ".png) ";
+    if (have.second) md << "[svg](figures/" << stem << ".svg) ";
+    md << "[data](figures/" << stem << ".dat) [script](figures/" << stem << ".gp)\n";
+  }
+  md << "- [pareto-front.csv](pareto-front.csv)\n\n"
+     << "Restyle a figure: edit its `.gp` file, then `cd figures && gnuplot -e \"outfile='NAME.svg'\" NAME.gp`.\n\n";
+  if (!figs.notes.empty()) {
+    md << "## Notes\n\n";
+    for (auto& n : figs.notes) md << "- " << n << "\n";
+    md << "\n";
+  }
+  return md.str();
+}
+
+}  // namespace gyrores::cli::report
+

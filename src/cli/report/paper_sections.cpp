@@ -1,0 +1,60 @@
+// The report's introduction and Section 1 (the paper's Figure 1: n = 2 and n = 1/sqrt(12)).
+#include <sstream>
+
+#include <gyrores/core/real.hpp>
+#include <gyrores/design/coupling.hpp>
+#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/design/figures.hpp>
+
+#include "report.hpp"
+
+namespace gyrores::cli::report {
+
+std::string intro_section(unsigned digits) {
+  std::ostringstream md;
+  md << "# gyrores report\n\n"
+     << "Recomputes the examples of *Shaping Energy Exchange with Gyroscopic Interconnections* (Juchem and "
+        "Loccufier), Sections IV-V and Figures 1-4, with gyrores. All values are for the impulse qdot0 = 1 "
+        "(r_res is proportional to qdot0; times do not depend on it). Every real number printed here has "
+     << digits << " significant digits, each verified by recomputation at higher precision (the `gyrores pair` "
+        "contract); `r_res = 0` for delta = 2 mod 4 is exact (integer arithmetic). Certified enclosures: not in "
+        "this report (interval proofs of single pairs: `gyrores certify TAU SIGMA`).\n\n"
+     << "Conventions: `t_first` is the exact first time H_q reaches its minimum; `pi/n` is the paper's proxy "
+        "T_min ~ pi/|n| (a heuristic). The inscribed radius comes from the lattice method, cross-checked against "
+        "the global search (all critical points) for every pair printed.\n\n";
+  return md.str();
+}
+
+std::string figure1_section(context& c) {
+  std::ostringstream md;
+  md << "## 1. Figure 1: n = 2 and n = 1/sqrt(12)\n\n";
+  const auto s2 = coupling_spec::from_n(big_rational(2));
+  const auto p2 = coupling_resonant_pair(s2);
+  const auto p12 = coupling_resonant_pair(coupling_spec::from_n2(big_rational(1, 12)));
+  const double span = 200 * real_pi<double>() / 2;
+  // min of H_q over the paper's span [0, 200 pi/n] = [0, 100 pi], verified
+  const auto h = verify_horizon_minimum(s2, exact_horizon{big_rational(100), true}, c.digits);
+  md << claims_table_head
+     << "| n = 2 is not resonant (dense trajectory, Fig. 1a) | n^2 (n^2 + 4) = 32 is not a rational square: "
+     << (p2 ? "resonant" : "not resonant") << " | " << verdict(!p2) << " |\n"
+     << "| n = 1/sqrt(12) is the pair (4, 3) (Fig. 1b) | n^2 (n^2 + 4) = 49/144 = (7/12)^2: "
+     << (p12 ? "resonant, pair " + p12->str() : "not resonant") << " | "
+     << verdict(p12 && p12->tau() == 4 && p12->sigma() == 3) << " |\n\n";
+  md << "For n = 2 the infimum of H_q over all time is 0 (the torus line is dense and passes arbitrarily close to "
+        "the zero of (q, q')), never attained. Over the paper's span t in [0, 200 pi/n] the minimum is H_q = "
+     << h.h_min << " (radius " << h.r_min << "), first at t = " << h.t_min
+     << " (exact critical points of H_q: roots of q' and z'; `gyrores coupling 2 --horizon " << span << "`).\n\n";
+  const auto v43 = c.values(4, 3);
+  md << "For (4, 3): n = " << v43.n << ", r_res = " << v43.r_res << ", H_q min = " << v43.h_min << ", t_first = " << v43.t_first
+     << ", proxy pi/n = " << v43.t_min_paper << " (`gyrores coupling --n2 1/12`).\n\n";
+  c.figs.record("fig1a-phase-n2", write_phase_figure(c.figs.spec("fig1a-phase-n2", 1200, 640), phase_portrait_of_coupling(2.0, 1.0, span),
+                                                      "Fig. 1a: n = 2 (not resonant), t in [0, 200 pi/n]"));
+  c.figs.record("fig1b-phase-4-3", write_phase_figure(c.figs.spec("fig1b-phase-4-3", 1200, 640),
+                                                       phase_portrait_of_pair(resonant_pair<std::int64_t>(4, 3)),
+                                                       "Fig. 1b: n = 1/sqrt(12), the pair (4, 3)"));
+  md << c.figs.md("fig1a-phase-n2", "Figure 1a: n = 2, trajectory over [0, 200 pi/n], envelope x_d, maximal circle; the zoom shows the smallest radius reached on that span.")
+     << c.figs.md("fig1b-phase-4-3", "Figure 1b: n = 1/sqrt(12), the closed Lissajous curve of (4, 3) with its inscribed circle.");
+  return md.str();
+}
+
+}  // namespace gyrores::cli::report

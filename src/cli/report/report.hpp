@@ -1,0 +1,76 @@
+// `gyrores report`, in sections: each section of REPORT.md is one function (one file each)
+// that returns its markdown and records the figures it draws. cmd_report.cpp runs them in
+// order and writes the files.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gyrores/design/design.hpp>
+#include <gyrores/inscribed/verified_pair.hpp>
+
+#include "../plots.hpp"
+
+namespace gyrores::cli::report {
+
+// The figures of the report (DIR/figures): which were drawn, and the notes when one was not.
+struct figure_set {
+  fs::path dir;
+  std::vector<std::string> notes;
+  std::map<std::string, std::pair<bool, bool>> drawn;  // stem -> (png exists, svg exists)
+
+  // A PNG and an SVG of the figure `stem`, w x h pixels.
+  figure_spec spec(const std::string& stem, int w, int h) const;
+  void record(const std::string& stem, const figure_output& o);
+  // Markdown for one figure: embedded PNG, links to SVG, data and script (only files that exist).
+  std::string md(const std::string& stem, const std::string& caption) const;
+};
+
+// The two figures of a paper case for one pair: (a) its phase portrait, (b) its energy exchange.
+struct case_figures {
+  std::string phase_stem, phase_title, phase_caption;
+  std::string energy_stem, energy_title, energy_caption;
+};
+
+// What every section shares.
+struct context {
+  unsigned digits;                       // of every verified real printed
+  fs::path dir;                          // the output directory
+  figure_set figs;
+  std::vector<design_point> catalogue;   // every pair up to max(Pareto order, 200), for sections 2-5
+
+  // The first k pairs of the catalogue (enumeration order) with tau - sigma = delta and beat >= 10.
+  std::vector<design_point> smallest(std::int64_t delta, std::size_t k) const;
+  // The catalogue's entry for (t, s) (computed if the catalogue does not reach it).
+  design_point find(std::int64_t t, std::int64_t s) const;
+  // verify_pair_values(t, s, digits).
+  verified_pair_values values(std::int64_t t, std::int64_t s) const;
+};
+
+// Draws both figures of a case (recorded in c.figs) and returns their markdown.
+std::string draw_case_figures(context& c, const resonant_pair<std::int64_t>& p, const case_figures& f);
+
+// "(t, s)".
+std::string pair_name(std::int64_t t, std::int64_t s);
+// Whether our value agrees with a number the paper prints, to its last printed digit.
+bool agrees_with_printed(const std::string& paper, double ours);
+// Same, for one of our verified decimal strings.
+bool agrees_with_printed(const std::string& paper, const std::string& ours);
+// "agrees" or "**differs**".
+std::string verdict(bool ok);
+// The table head of the claims tables: "| claim (paper) | gyrores | verdict |".
+extern const char* const claims_table_head;
+
+std::string intro_section(unsigned digits);
+std::string figure1_section(context& c);
+std::string case_a_section(context& c);
+std::string case_b_section(context& c);
+std::string design_section(context& c);
+std::string pareto_section(context& c, std::int64_t max_order);
+std::string sweep_section(std::int64_t max_order);
+std::string files_section(const figure_set& figs);
+
+}  // namespace gyrores::cli::report

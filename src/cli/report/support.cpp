@@ -1,0 +1,104 @@
+// src/cli/report/report.hpp: what the sections share.
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include <gyrores/design/figures.hpp>
+
+#include "report.hpp"
+
+namespace gyrores::cli::report {
+
+figure_spec figure_set::spec(const std::string& stem, int w, int h) const {
+  figure_spec s;
+  s.dir = dir;
+  s.stem = stem;
+  s.width = w;
+  s.height = h;
+  s.images = {stem + ".png", stem + ".svg"};
+  return s;
+}
+
+void figure_set::record(const std::string& stem, const figure_output& o) {
+  bool png = false, svg = false;
+  for (auto& im : o.images) {
+    if (im.extension() == ".png") png = true;
+    if (im.extension() == ".svg") svg = true;
+  }
+  drawn[stem] = {png, svg};
+  if (!o.message.empty()) notes.push_back(stem + ": " + o.message);
+}
+
+std::string figure_set::md(const std::string& stem, const std::string& caption) const {
+  std::ostringstream os;
+  auto it = drawn.find(stem);
+  bool png = it != drawn.end() && it->second.first, svg = it != drawn.end() && it->second.second;
+  if (png) os << "![" << caption << "](figures/" << stem << ".png)\n\n";
+  os << "*" << caption << "* Files: ";
+  if (svg) os << "[SVG](figures/" << stem << ".svg), ";
+  if (png) os << "[PNG](figures/" << stem << ".png), ";
+  os << "[data](figures/" << stem << ".dat), [gnuplot script](figures/" << stem << ".gp)";
+  if (!png && !svg) os << " (image not drawn: see the notes at the end)";
+  os << "\n\n";
+  return os.str();
+}
+
+std::vector<design_point> context::smallest(std::int64_t delta, std::size_t k) const {
+  pair_filter f;
+  f.delta = delta;
+  f.beat_min = big_rational(10);
+  std::vector<design_point> out;
+  for (const auto& p : catalogue)
+    if (out.size() < k && pair_filter_accepts(f, p)) out.push_back(p);
+  return out;
+}
+
+design_point context::find(std::int64_t t, std::int64_t s) const {
+  for (const auto& p : catalogue)
+    if (p.tau == t && p.sigma == s) return p;
+  return design_point_of(resonant_pair<std::int64_t>(t, s));
+}
+
+verified_pair_values context::values(std::int64_t t, std::int64_t s) const { return verify_pair_values(t, s, digits); }
+
+std::string draw_case_figures(context& c, const resonant_pair<std::int64_t>& p, const case_figures& f) {
+  c.figs.record(f.phase_stem, write_phase_figure(c.figs.spec(f.phase_stem, 1200, 640), phase_portrait_of_pair(p), f.phase_title));
+  c.figs.record(f.energy_stem, write_energy_figure(c.figs.spec(f.energy_stem, 900, 500), energy_of_pair(p), f.energy_title,
+                                                   "exact t_{first}"));
+  return c.figs.md(f.phase_stem, f.phase_caption) + c.figs.md(f.energy_stem, f.energy_caption);
+}
+
+std::string pair_name(std::int64_t t, std::int64_t s) {
+  std::string out = "(";  // appended step by step: "(" + std::to_string(t) trips a GCC 12 -Wrestrict false positive
+  out += std::to_string(t);
+  out += ", ";
+  out += std::to_string(s);
+  return out + ")";
+}
+
+// |ours - paper| <= half a unit of the paper's last printed digit (plus a relative 1e-12 for the
+// decimal conversion).
+bool agrees_with_printed(const std::string& paper, double ours) {
+  std::string mant = paper;
+  int exp10 = 0;
+  auto e = mant.find_first_of("eE");
+  if (e != std::string::npos) {
+    exp10 = std::stoi(mant.substr(e + 1));
+    mant = mant.substr(0, e);
+  }
+  auto dot = mant.find('.');
+  int decimals = dot == std::string::npos ? 0 : int(mant.size() - dot - 1);
+  double unit = std::pow(10.0, exp10 - decimals);
+  double p = std::strtod(paper.c_str(), nullptr);
+  return std::fabs(ours - p) <= 0.5 * unit * (1 + 1e-9) + 1e-12 * std::fabs(p);
+}
+
+bool agrees_with_printed(const std::string& paper, const std::string& ours) {
+  return agrees_with_printed(paper, std::strtod(ours.c_str(), nullptr));
+}
+
+std::string verdict(bool ok) { return ok ? "agrees" : "**differs**"; }
+
+const char* const claims_table_head = "| claim (paper) | gyrores | verdict |\n|---|---|---|\n";
+
+}  // namespace gyrores::cli::report

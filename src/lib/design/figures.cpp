@@ -1,0 +1,174 @@
+// include/gyrores/design/figures.hpp
+#include <gyrores/design/figures.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/real.hpp>
+#include <gyrores/design/coupling.hpp>
+#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/model/resonant.hpp>
+
+namespace gyrores {
+namespace {
+
+// at(span * i / samples) for i = 0, ..., samples.
+template <class F> auto sample_uniform(double span, std::size_t samples, F&& at) {
+  std::vector<decltype(at(0.0))> out;
+  out.reserve(samples + 1);
+  for (std::size_t i = 0; i <= samples; ++i) out.push_back(at(span * double(i) / double(samples)));
+  return out;
+}
+
+// at(center + half_width * i / 1000) for i = -1000, ..., 1000: the dense samples of the zoom
+// around a minimiser.
+template <class F> std::vector<plane_point<double>> sample_near(double center, double half_width, F&& at) {
+  std::vector<plane_point<double>> seg;
+  for (int i = -1000; i <= 1000; ++i) seg.push_back(at(center + half_width * double(i) / 1000));
+  return seg;
+}
+
+// Max(4000, want) samples; usage_error when want exceeds figure_max_samples.
+std::size_t sample_count(double want, const std::string& too_long) {
+  if (want > double(figure_max_samples)) throw usage_error(too_long);
+  return std::size_t(std::max(4000.0, want));
+}
+
+[[noreturn]] void throw_figure_order(const std::string& pair) {
+  throw usage_error("figures sample pairs up to order " + std::to_string(figure_max_order) + ", got " + pair);
+}
+
+// p, after checking that figures sample it (order <= figure_max_order; usage_error otherwise).
+const resonant_pair<std::int64_t>& figure_pair(const resonant_pair<std::int64_t>& p) {
+  if (p.order() > figure_max_order) throw_figure_order(p.str());
+  return p;
+}
+
+void check_figure_coupling(double n, double span) {
+  if (!(n > 0)) throw usage_error("the coupling n must be > 0 for a figure");
+  if (!(span > 0)) throw usage_error("the time span must be > 0");
+}
+
+// A pair's constants and inscribed radius (double, lattice method), and its state at theta.
+// Throws usage_error beyond figure_max_order.
+struct pair_figure_basis {
+  resonant_constants<double> c;
+  inscribed_result<double> r;
+  double a, b;  // tau + sigma, tau - sigma
+  pair_figure_basis(const resonant_pair<std::int64_t>& p, double v)
+      : c(resonant_constants_of<double>(figure_pair(p), v)), r(inscribed_lattice<double>(p, v)),
+        a(double(p.order())), b(double(p.delta())) {}
+  auto state(double theta) const { return resonant_state_at(c, a, b, theta); }
+  plane_point<double> point(double theta) const {
+    auto s = state(theta);
+    return {s.q, s.qdot};
+  }
+};
+
+plane_point<double> impulse_point(double n, double v, double t) {
+  auto s = impulse_response(n, v, t);
+  return {s.q, s.qdot};
+}
+
+}  // namespace
+
+resonant_pair<std::int64_t> figure_pair_of(const resonant_pair<big_int>& p) {
+  if (!pair_fits_int64(p) || p.order() > big_int(figure_max_order)) throw_figure_order(p.str());
+  return pair_cast<std::int64_t>(p);
+}
+
+std::vector<plane_point<double>> envelope_curve(double n, double v, std::size_t samples) {
+  return sample_uniform(2 * real_pi<double>(), samples, [&](double phi) { return envelope_boundary(n, v, phi); });
+}
+
+phase_portrait phase_portrait_of_pair(const resonant_pair<std::int64_t>& p, double v) {
+  const pair_figure_basis f0(p, v);
+  const auto& c = f0.c;
+  phase_portrait f;
+  f.n = c.n;
+  f.qdot0 = v;
+  f.resonant = true;
+  f.tau = p.tau();
+  f.sigma = p.sigma();
+  const double two_pi = 2 * c.pi;
+  f.t_span = two_pi * c.sqrt_ts;
+  const std::size_t samples = std::size_t(std::max<double>(4000, 64 * f0.a));
+  f.trajectory = sample_uniform(two_pi, samples, [&](double th) { return f0.point(th); });
+  f.envelope = envelope_curve(c.n, v, 2000);
+  f.r_inscribed = f0.r.r_res;
+  f.inscribed_is_infimum = true;
+  f.r_max = v;
+  f.first_min = f0.point(f0.r.theta_first);
+  f.t_first = f0.r.t_first;
+  f.t_proxy = c.pi / c.n;
+  for (double th0 : f0.r.minimisers)
+    f.near_minimisers.push_back(sample_near(th0, c.pi / f0.a, [&](double th) { return f0.point(th); }));
+  return f;
+}
+
+phase_portrait phase_portrait_of_coupling(double n, double v, double t_span) {
+  check_figure_coupling(n, t_span);
+  auto w = modal_frequencies_of(n);
+  const double per_fast = 2 * real_pi<double>() / w.omega1;
+  const double want = 64 * t_span / per_fast;
+  const std::size_t samples =
+      sample_count(want, "the time span is too long to sample (" + std::to_string(static_cast<long long>(want)) +
+                             " points, limit " + std::to_string(figure_max_samples) + ")");
+  phase_portrait f;
+  f.n = n;
+  f.qdot0 = v;
+  f.t_span = t_span;
+  f.trajectory = sample_uniform(t_span, samples, [&](double t) { return impulse_point(n, v, t); });
+  f.envelope = envelope_curve(n, v, 2000);
+  auto hm = horizon_minimum<double>(n, v, t_span);
+  f.r_inscribed = std::sqrt(2 * hm.h_min);
+  f.first_min = {hm.q, hm.qdot};
+  f.t_first = hm.t_min;
+  f.r_max = v;
+  f.t_proxy = real_pi<double>() / n;
+  f.near_minimisers.push_back(sample_near(hm.t_min, per_fast / 2, [&](double t) { return impulse_point(n, v, t); }));
+  return f;
+}
+
+energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v, double t_end) {
+  const pair_figure_basis f0(p, v);
+  const auto& c = f0.c;
+  energy_series e;
+  e.t_end = t_end > 0 ? t_end : 2 * c.pi * c.sqrt_ts;
+  e.n = c.n;
+  e.qdot0 = v;
+  const double theta_end = e.t_end / c.sqrt_ts;
+  const std::size_t samples = sample_count(64 * f0.a * theta_end / (2 * c.pi), "the time span is too long to sample");
+  e.samples = sample_uniform(theta_end, samples, [&](double th) {
+    auto s = f0.state(th);
+    return energy_sample{th * c.sqrt_ts, (s.q * s.q + s.qdot * s.qdot) / 2, (s.z * s.z + s.zdot * s.zdot) / 2};
+  });
+  e.t_first = f0.r.t_first;
+  e.h_min = f0.r.h_min;
+  e.t_proxy = c.pi / c.n;
+  return e;
+}
+
+energy_series energy_of_coupling(double n, double v, double t_end) {
+  check_figure_coupling(n, t_end);
+  auto w = modal_frequencies_of(n);
+  const std::size_t samples =
+      sample_count(64 * t_end * w.omega1 / (2 * real_pi<double>()), "the time span is too long to sample");
+  energy_series e;
+  e.n = n;
+  e.qdot0 = v;
+  e.t_end = t_end;
+  e.samples = sample_uniform(t_end, samples, [&](double t) {
+    auto s = impulse_response(n, v, t);
+    return energy_sample{t, energy_q(s), energy_z(s)};
+  });
+  auto hm = horizon_minimum<double>(n, v, t_end);
+  e.t_first = hm.t_min;
+  e.h_min = hm.h_min;
+  e.t_proxy = real_pi<double>() / n;
+  return e;
+}
+
+}  // namespace gyrores

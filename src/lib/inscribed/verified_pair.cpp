@@ -1,0 +1,223 @@
+// include/gyrores/inscribed/verified_pair.hpp
+#include <gyrores/inscribed/verified_pair.hpp>
+
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/verified_digits.hpp>
+
+namespace gyrores {
+namespace {
+
+// Beyond 2^900 the pair's integers leave double's (and float128's) exponent range.
+bool pair_needs_mpfr(const resonant_pair<big_int>& p) { return boost::multiprecision::msb(p.order()) > 900; }
+
+// f(p) with p as 64-bit integers when they fit (the fast path), else as big integers.
+template <class F> auto with_pair_integer(const resonant_pair<big_int>& p, F&& f) {
+  if (pair_fits_int64(p)) return f(pair_cast<std::int64_t>(p));
+  return f(p);
+}
+
+// Which fields a run reports: all of analyse_pair's, or the verified_pair_values subset.
+enum class field_set { values, full };
+
+template <class T> void put_asymptotic_fields(real_fields& f, const asymptotic_report<T>& asy) {
+  for (std::size_t i = 0; i < asy.lobes.size(); ++i) {
+    const auto& lo = asy.lobes[i];
+    const std::string pre = "asy." + std::to_string(i) + ".";
+    for (auto [name, val] : {std::pair{"s", &lo.s}, {"u_asy", &lo.u_asy}, {"theta_asy", &lo.theta_asy},
+                             {"theta_c", &lo.theta_c}, {"error", &lo.error}, {"bound", &lo.bound}, {"ratio", &lo.ratio}})
+      put_field(f, pre + name, *val);
+  }
+  if (asy.applicable) {
+    put_field(f, "r_res_asy", asy.r_res_asy);
+    put_field(f, "r_res_asy_rel_error", asy.r_res_asy_rel_error);
+  }
+}
+
+template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_set set) {
+  real_fields f;
+  put_field(f, "n", a.n);
+  put_field(f, "r_res", a.inscribed.r_res);
+  put_field(f, "h_min", a.inscribed.h_min);
+  put_field(f, "theta_first", a.inscribed.theta_first);
+  put_field(f, "t_first", a.inscribed.t_first);
+  put_field(f, "t_min_paper", a.t_min_paper);
+  if (set == field_set::values) return f;
+  put_field(f, "beat_ratio", a.beat_ratio);
+  put_field(f, "omega1", a.omega1);
+  put_field(f, "omega2", a.omega2);
+  put_field(f, "rho0", a.rho0);
+  put_field(f, "qdot0", a.qdot0);
+  put_field(f, "h_z_max", a.inscribed.h_z_max);
+  for (const auto& m : a.inscribed.minimisers) f["minimisers"].push_back(real_to_mpfr(m));
+  put_asymptotic_fields(f, a.asymptotic);
+  return f;
+}
+
+// analyse_pair in each plan's type, verified. The cross-check (it runs in double whatever the
+// plan) is done in the first run only; cross_checked says whether it was.
+verified_run verified_analysis(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0,
+                               const analysis_options& opt, field_set set, bool& cross_checked) {
+  bool first = true;
+  auto compute = [&](const precision_plan& plan) {
+    analysis_options o = opt;
+    if (!first) o.cross_check_max_order = 0;
+    real_fields f = with_real_type(plan, [&](auto tag) {
+      using T = decltype(tag);
+      const T v = real_from_decimal<T>(qdot0, "qdot0");
+      return with_pair_integer(p, [&](const auto& pp) {
+        auto a = analyse_pair<T>(pp, v, o);
+        if (first && a.cross_checked) cross_checked = true;
+        return analysis_fields(a, set);
+      });
+    });
+    first = false;
+    return f;
+  };
+  return compute_verified(digits, pair_needs_mpfr(p), compute);
+}
+
+// The integer and boolean parts of the asymptotics (precision independent): in double, or in
+// MPFR at 40 digits beyond double's range.
+struct asymptotic_exact {
+  bool applicable = false;
+  std::string reason;
+  std::vector<verified_asymptotic_lobe> lobes;  // k, m, holds_global_min only
+};
+
+template <class T> asymptotic_exact exact_part(const asymptotic_report<T>& rep) {
+  asymptotic_exact e;
+  e.applicable = rep.applicable;
+  e.reason = rep.reason;
+  for (const auto& lo : rep.lobes) {
+    verified_asymptotic_lobe l;
+    l.k = lo.k.str();
+    l.m = lo.m.str();
+    l.holds_global_min = lo.holds_global_min;
+    e.lobes.push_back(l);
+  }
+  return e;
+}
+
+asymptotic_exact asymptotic_exact_of(const resonant_pair<big_int>& p) {
+  if (pair_needs_mpfr(p)) {
+    scoped_digits sd(40);
+    return exact_part(paper_asymptotics<mpfr_real>(p, mpfr_real(1)));
+  }
+  return with_pair_integer(p, [](const auto& pp) { return exact_part(paper_asymptotics<double>(pp, 1.0)); });
+}
+
+const std::string& first_value(const verified_run& run, const std::string& name) { return run.fields.at(name).at(0); }
+
+// The lobes' verified reals ("asy.<i>.<name>") merged into their exact parts.
+std::vector<verified_asymptotic_lobe> merged_lobes(const verified_run& run, std::vector<verified_asymptotic_lobe> lobes) {
+  std::size_t count = 0;
+  while (run.fields.count("asy." + std::to_string(count) + ".theta_asy")) ++count;
+  if (count != lobes.size())
+    throw compute_error("the asymptotic lobes differ between double (" + std::to_string(lobes.size()) +
+                        ") and the working precision (" + std::to_string(count) + ")");
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string pre = "asy." + std::to_string(i) + ".";
+    auto& l = lobes[i];
+    for (auto [name, val] : {std::pair{"s", &l.s}, {"u_asy", &l.u_asy}, {"theta_asy", &l.theta_asy},
+                             {"theta_c", &l.theta_c}, {"error", &l.error}, {"bound", &l.bound}, {"ratio", &l.ratio}})
+      *val = first_value(run, pre + name);
+  }
+  return lobes;
+}
+
+void fill_pair_report(verified_pair_report& r, const verified_run& run) {
+  for (auto [name, val] : {std::pair{"beat_ratio", &r.beat_ratio}, {"n", &r.n}, {"omega1", &r.omega1},
+                           {"omega2", &r.omega2}, {"rho0", &r.rho0}, {"qdot0", &r.qdot0}, {"r_res", &r.r_res},
+                           {"h_min", &r.h_min}, {"h_z_max", &r.h_z_max}, {"theta_first", &r.theta_first},
+                           {"t_first", &r.t_first}, {"t_min_paper", &r.t_min_paper}})
+    *val = first_value(run, name);
+  r.minimisers = run.fields.at("minimisers");
+  if (run.fields.count("r_res_asy")) {
+    r.r_res_asy = first_value(run, "r_res_asy");
+    r.r_res_asy_rel_error = first_value(run, "r_res_asy_rel_error");
+  }
+}
+
+std::string method_of(const resonant_pair<big_int>& p, solver_choice solver) {
+  if (p.degenerate()) return method_name(inscribed_method::degenerate_exact);
+  return method_name(solver == solver_choice::lattice ? inscribed_method::lattice : inscribed_method::global_search);
+}
+
+template <class T, pair_integer I> real_fields paper_lobe_fields(const resonant_pair<I>& p, const big_int& k) {
+  real_fields f;
+  const auto rep = paper_asymptotics<T>(p, T(1));
+  const auto c = resonant_constants_of<T>(p, T(1));
+  for (const auto& l : rep.lobes) {
+    if (l.k != k) continue;
+    put_field(f, "u_asy", l.u_asy);
+    put_field(f, "theta_asy", l.theta_asy);
+    put_field(f, "qdot_asy", l.qdot_asy);
+    put_field(f, "qdot_asy_rho0", T(l.qdot_asy / c.rho0));
+    put_field(f, "error", l.error);
+    put_field(f, "bound", l.bound);
+    put_field(f, "theta_c", l.theta_c);
+    put_field(f, "r_c", l.r_c);
+  }
+  return f;
+}
+
+}  // namespace
+
+void check_qdot0_text(const std::string& text, const std::string& what) {
+  scoped_digits d(30);
+  const mpfr_real v = real_from_decimal<mpfr_real>(text, what);
+  if (!(v > 0)) throw usage_error(what + " must be > 0, got " + text);
+}
+
+verified_pair_report verify_pair(const resonant_pair<big_int>& p, const verified_pair_options& opt) {
+  check_verified_digits(opt.digits);
+  check_qdot0_text(opt.qdot0, "qdot0");
+  analysis_options analysis;
+  analysis.solver = opt.solver;
+  analysis.cross_check_max_order = opt.cross_check_max_order;
+  verified_pair_report r;
+  const verified_run run = verified_analysis(p, opt.digits, opt.qdot0, analysis, field_set::full, r.cross_checked);
+  fill_pair_report(r, run);
+  asymptotic_exact exact = asymptotic_exact_of(p);
+  r.asymptotic_applicable = exact.applicable;
+  r.asymptotic_reason = exact.reason;
+  r.lobes = merged_lobes(run, std::move(exact.lobes));
+  r.degenerate = p.degenerate();
+  r.method = method_of(p, opt.solver);
+  r.digits = opt.digits;
+  r.working_precision = run.plan;
+  return r;
+}
+
+verified_pair_values verify_pair_values(const resonant_pair<big_int>& p, unsigned digits) {
+  check_verified_digits(digits);
+  verified_pair_values v;
+  const verified_run run = verified_analysis(p, digits, "1", analysis_options{}, field_set::values, v.cross_checked);
+  for (auto [name, val] : {std::pair{"n", &v.n}, {"r_res", &v.r_res}, {"h_min", &v.h_min}, {"t_first", &v.t_first},
+                           {"theta_first", &v.theta_first}, {"t_min_paper", &v.t_min_paper}})
+    *val = first_value(run, name);
+  v.degenerate = p.degenerate();
+  return v;
+}
+
+verified_pair_values verify_pair_values(std::int64_t tau, std::int64_t sigma, unsigned digits) {
+  return verify_pair_values(resonant_pair<big_int>(big_int(tau), big_int(sigma)), digits);
+}
+
+verified_paper_lobe verify_paper_lobe(const resonant_pair<big_int>& p, const big_int& k, unsigned digits) {
+  check_verified_digits(digits);
+  const verified_run run = compute_verified_per_type(digits, pair_needs_mpfr(p), [&](auto tag) {
+    using T = decltype(tag);
+    return with_pair_integer(p, [&](const auto& pp) { return paper_lobe_fields<T>(pp, k); });
+  });
+  if (run.fields.empty()) throw compute_error("pair " + p.str() + " has no asymptotic lobe k = " + k.str());
+  verified_paper_lobe l;
+  for (auto [name, val] : {std::pair{"u_asy", &l.u_asy}, {"theta_asy", &l.theta_asy}, {"qdot_asy", &l.qdot_asy},
+                           {"qdot_asy_rho0", &l.qdot_asy_over_rho0}, {"error", &l.error}, {"bound", &l.bound},
+                           {"theta_c", &l.theta_c}, {"r_c", &l.r_c}})
+    *val = first_value(run, name);
+  return l;
+}
+
+}  // namespace gyrores
