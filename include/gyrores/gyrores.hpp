@@ -7,7 +7,10 @@
 #include <gyrores/core/real.hpp>             // real types (double ... mpfr_real, mpfi_real), conversions
 #include <gyrores/core/decimal.hpp>          // exact decimal output, Ziv rounding test, decimal input
 #include <gyrores/core/interval.hpp>         // MPFI helpers with tri-state decisions
+#include <gyrores/core/rational.hpp>         // exact rationals: parsing, printing
 #include <gyrores/core/roots.hpp>            // the TOMS 748 wrapper, safeguarded Newton
+#include <gyrores/core/precision.hpp>        // the working type chosen from the digits asked
+#include <gyrores/core/verified_digits.hpp>  // the verified-digits contract (two runs, Ziv's test)
 // model: pairs, enumeration, the model for any n, resonant frames
 #include <gyrores/model/pair.hpp>            // resonant_pair<I>: number theory of (tau, sigma)
 #include <gyrores/model/enumerate.hpp>       // coprime_pairs: lazy enumeration by order
@@ -21,10 +24,12 @@
 #include <gyrores/inscribed/cross_check.hpp> // lattice vs global search
 #include <gyrores/inscribed/asymptotic.hpp>  // the paper's theta_asy, error bound, r_res_asy
 #include <gyrores/inscribed/pair_analysis.hpp>  // everything reported about one pair
+#include <gyrores/inscribed/verified_pair.hpp>  // that report with verified digits
 // certificates
 #include <gyrores/certify/certificate.hpp>   // interval certificates and their checker
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
+#include <gyrores/design/coupling_report.hpp>  // the coupling analysis with verified digits
 #include <gyrores/design/design.hpp>         // design problems (absorb/contain) and the Pareto front
 #include <gyrores/design/figures.hpp>        // data behind the figures (trajectory, envelope, circles, energies)
 #include <gyrores/sweep/sweep.hpp>           // sweeps over all pairs up to an order: checks, mergeable summary

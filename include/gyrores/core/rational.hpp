@@ -5,6 +5,7 @@
 #include <string>
 
 #include <gyrores/core/integer.hpp>
+#include <gyrores/core/real.hpp>
 
 namespace gyrores {
 
@@ -17,6 +18,12 @@ big_rational parse_rational(const std::string& text, const std::string& what);
 
 // Exact text of a rational: "P/Q", or "P" when Q = 1.
 std::string rational_str(const big_rational& r);
+
+// q in T: numerator and denominator rounded to T, then divided (real_from_ratio: relative
+// error <= 1.5 ulp; exact when both fit T's significand).
+template <class T> T real_from_rational(const big_rational& q) {
+  return real_from_ratio<T>(big_int(boost::multiprecision::numerator(q)), big_int(boost::multiprecision::denominator(q)));
+}
 
 // True when v >= 0 is a perfect square; root receives floor(sqrt(v)).
 bool int_is_square(const big_int& v, big_int& root);

@@ -51,11 +51,6 @@
 
 namespace gyrores {
 
-// q in T: numerator and denominator rounded to T, then divided (real_from_ratio).
-template <class T> T real_from_rational(const big_rational& q) {
-  return real_from_ratio<T>(big_int(boost::multiprecision::numerator(q)), big_int(boost::multiprecision::denominator(q)));
-}
-
 // A coupling given exactly: n^2 (always rational here) and, when known, n itself (rational).
 // n = 0 is rejected (no coupling: H_q is constant). The sign of n is kept for messages only.
 struct coupling_spec {
