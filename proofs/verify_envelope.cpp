@@ -78,133 +78,163 @@ std::pair<__int128, __int128> bezout(std::int64_t tau, std::int64_t sigma, std::
   return {-__int128(N) * s0, __int128(N) * t0};
 }
 
+// The pair in units of rho0 at the working precision: the ellipses' axes w1 = sqrt(tau/sigma),
+// w2 = 1/w1, the trajectory x(theta), the Prop.'s envelope x_d(phi), and F(phi).
+struct envelope_geometry {
+  env_pair P;
+  mpfi_real pi, two_pi, T, S, w1, w2;
+
+  envelope_geometry(const env_pair& p, const mpfi_real& pi_)
+      : P(p), pi(pi_), two_pi(2 * pi_), T(mpfi_real(p.tau)), S(mpfi_real(p.sigma)), w1(sqrt(T / S)), w2(sqrt(S / T)) {}
+
+  mpfi_real F(const mpfi_real& phi) const { return F_of<mpfi_real>(P, w1, w2, pi, phi); }
+  std::pair<mpfi_real, mpfi_real> x_traj(const mpfi_real& th) const {  // x(theta)/rho0
+    return std::pair{sin(T * th) + sin(S * th), w1 * cos(T * th) + w2 * cos(S * th)};
+  }
+  std::pair<mpfi_real, mpfi_real> x_env(const mpfi_real& phi) const {  // the Prop.'s x_d(phi)/rho0
+    mpfi_real c = cos(phi), s = sin(phi);
+    mpfi_real h1 = sqrt(c * c + w1 * w1 * s * s), h2 = sqrt(c * c + w2 * w2 * s * s);
+    return std::pair{c / h1 + c / h2, w1 * w1 * s / h1 + w2 * w2 * s / h2};
+  }
+  // N from ceil(-b/4) to ceil(-b/4) + b - 1 (exact integers): 2 pi N in [F(0), F(2 pi)).
+  std::int64_t first_N() const { return -(P.b / 4); }  // ceil(-b/4) for b >= 0
+};
+
+bool overlap(const mpfi_real& u, const mpfi_real& v) {
+  return !(interval_upper(u) < interval_lower(v) || interval_upper(v) < interval_lower(u));
+}
+
+// The touching directions F(phi) = 2 pi N: each bracketed in MPFI (or exact when 4 | b), and the
+// trajectory point there compared with x_d.
+struct touches {
+  std::int64_t found = 0;
+  bool consistent = true;
+  std::vector<double> phi;
+};
+
+// phi with F(phi) = 2 pi N as an enclosure (nullopt when not bracketed), and its double value.
+std::optional<std::pair<mpfi_real, double>> touching_phi(const envelope_geometry& G, std::int64_t N) {
+  const std::int64_t b = G.P.b;
+  if (b % 4 == 0 && (4 * N == -b)) return std::pair{mpfi_real(0), 0.0};  // F(0) = -b pi/2 = 2 pi N exactly
+  if (b % 4 == 0 && (4 * N == b)) return std::pair{G.pi, M_PI};          // F(pi) = b pi/2 = 2 pi N exactly
+  double phid = solve_F(G.P, 2 * M_PI * double(N), 0, 2 * M_PI);
+  double h = 1e-9 * (1 + phid);
+  mpfi_real lo = mpfi_real(phid - h), hi = mpfi_real(phid + h);
+  mpfi_real target = G.two_pi * mpfi_real(N);
+  if (!(phid - h > 0 && phid + h < 2 * M_PI && certainly_less(G.F(lo), target) && certainly_less(target, G.F(hi))))
+    return std::nullopt;
+  return std::pair{interval_hull(lo, hi), phid};
+}
+
+touches find_touches(const envelope_geometry& G) {
+  touches out;
+  const std::int64_t n0 = G.first_N();
+  for (std::int64_t N = n0; N < n0 + G.P.b; ++N) {
+    auto t = touching_phi(G, N);
+    if (!t) continue;
+    ++out.found;
+    out.phi.push_back(t->second);
+    // The trajectory point at theta = (theta_1* + 2 pi i)/tau, sigma i - tau k = -N.
+    auto [i, k] = bezout(G.P.tau, G.P.sigma, N);
+    (void)k;
+    mpfi_real th1 = G.pi / 2 - psi(G.w1, t->first);
+    mpfi_real th = (th1 + G.two_pi * real_from_int<mpfi_real>(to_big(i))) / G.T;
+    auto xt = G.x_traj(th);
+    auto xe = G.x_env(t->first);
+    if (!(overlap(xt.first, xe.first) && overlap(xt.second, xe.second))) out.consistent = false;
+  }
+  return out;
+}
+
+// The gap half-way between touches (F = 2 pi N + pi): Jordan lower bound and the upper bound,
+// relative to h_1 + h_2.
+struct gaps {
+  verdict v = verdict::proved;
+  mpfr_real lb_min = 10, lb_max = 0, ub_max = 0;
+};
+
+gaps half_way_gaps(const envelope_geometry& G) {
+  gaps out;
+  const std::int64_t b = G.P.b, n0 = G.first_N();
+  const mpfi_real &pi = G.pi, &T = G.T, &S = G.S;
+  for (std::int64_t N = n0 - 1; N < n0 + b; ++N) {
+    double target = 2 * M_PI * double(N) + M_PI;
+    if (target < -double(b) * M_PI / 2 || target >= -double(b) * M_PI / 2 + 2 * M_PI * double(b)) continue;
+    mpfi_real phi = mpfi_real(solve_F(G.P, target, 0, 2 * M_PI));
+    // d = dist(F, 2 pi Z) >= pi - |F - (2 pi N + pi)|
+    mpfi_real d = pi - interval_abs(G.F(phi) - (G.two_pi * mpfi_real(N) + pi));
+    mpfi_real c = cos(phi), s = sin(phi);
+    mpfi_real h1 = sqrt(c * c + G.w1 * G.w1 * s * s), h2 = sqrt(c * c + G.w2 * G.w2 * s * s);
+    mpfi_real lb = 2 / (pi * pi) * interval_sqr(d) / (S * S / h1 + T * T / h2);
+    mpfi_real rel = lb / (h1 + h2);
+    mpfi_real ub1 = h2 * (1 - cos(pi / T)), ub2 = h1 * (1 - cos(pi / S));
+    mpfi_real ub = (interval_upper(ub1) < interval_upper(ub2) ? ub1 : ub2) / (h1 + h2);
+    out.v = verdict_and(out.v, certainly_positive(d) ? decide_positive(lb) : verdict::undecided);
+    if (interval_lower(rel) < out.lb_min) out.lb_min = interval_lower(rel);
+    if (interval_lower(rel) > out.lb_max) out.lb_max = interval_lower(rel);
+    if (interval_upper(ub) > out.ub_max) out.ub_max = interval_upper(ub);
+  }
+  return out;
+}
+
+std::string log_line(const std::string& name, std::int64_t b, const touches& t, const gaps& g, verdict v_touch) {
+  std::string phis;
+  for (double f : t.phi) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, " %.6f", f);
+    phis += buf;
+  }
+  return name + " b=" + std::to_string(b) + " touch_phi=" + (b <= 8 ? phis : " (" + std::to_string(t.found) + ")") +
+         " | gap_lb_rel min " + format_scientific(g.lb_min, 4) + " max " + format_scientific(g.lb_max, 4) +
+         " | gap_ub_rel max " + format_scientific(g.ub_max, 4) + " | " + verdict_name(v_touch) + " " +
+         verdict_name(g.v);
+}
+
+int verify(const options& opt) {
+  run R("verify_envelope", "paper Prop. convexEnvelope (P2): trajectory vs the Minkowski-sum envelope", opt);
+  auto& c_touch = R.add_claim("P2.touch",
+                              "the trajectory touches the envelope x_d in b = tau - sigma directions (each bracketed; "
+                              "the trajectory point is consistent with x_d there)",
+                              true);
+  auto& c_gap = R.add_claim("P2.gap",
+                            "half-way between consecutive touching directions the trajectory stays strictly inside "
+                            "(Jordan lower bound on the support gap > 0)",
+                            true);
+  auto& c_lit = R.add_claim("P2.literal",
+                            "the Prop.'s x_d is the boundary of the convex hull of the trajectory (paper wording "
+                            "'boundary set')",
+                            false);
+  R.log("# per pair: (tau,sigma) b touches | gap lower bound rel. to h1+h2: min max over the b half-way directions | "
+        "gap upper bound rel. (max) | decisions");
+  scoped_digits sd(digits10_for_bits(128));
+  const mpfi_real pi = real_pi<mpfi_real>();
+  double worst_lb = 0;
+  std::string worst_pair;
+  for_each_pair(R, opt, [&](const resonant_pair<std::int64_t>& p) {
+    envelope_geometry G(env_pair{p.tau(), p.sigma(), p.delta()}, pi);
+    const std::string name = p.str();
+    const std::int64_t b = G.P.b;
+    touches t = find_touches(G);
+    verdict v_touch = t.found == b ? (t.consistent ? verdict::proved : verdict::refuted) : verdict::undecided;
+    c_touch.add(v_touch, name, t.found == b ? "" : "bracketed " + std::to_string(t.found) + " of " + std::to_string(b));
+    gaps g = half_way_gaps(G);
+    c_gap.add(g.v, name);
+    c_lit.add(g.v == verdict::proved ? verdict::refuted : verdict::undecided, name,
+              g.v == verdict::proved ? "the hull misses the envelope half-way between touches" : "");
+    if (double(g.lb_max) > worst_lb) {
+      worst_lb = double(g.lb_max);
+      worst_pair = name;
+    }
+    if (R.logging()) R.log(log_line(name, b, t, g, v_touch));
+  });
+  if (!worst_pair.empty())
+    R.note("largest proved relative gap lower bound: " + std::to_string(worst_lb) + " at " + worst_pair);
+  return R.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  return guarded_main("verify_envelope", [&] {
-    auto opt = parse_options(argc, argv);
-    run R("verify_envelope", "paper Prop. convexEnvelope (P2): trajectory vs the Minkowski-sum envelope", opt);
-    auto& c_touch = R.add_claim("P2.touch",
-                                "the trajectory touches the envelope x_d in b = tau - sigma directions (each bracketed; "
-                                "the trajectory point is consistent with x_d there)",
-                                true);
-    auto& c_gap = R.add_claim("P2.gap",
-                              "half-way between consecutive touching directions the trajectory stays strictly inside "
-                              "(Jordan lower bound on the support gap > 0)",
-                              true);
-    auto& c_lit = R.add_claim("P2.literal",
-                              "the Prop.'s x_d is the boundary of the convex hull of the trajectory (paper wording "
-                              "'boundary set')",
-                              false);
-    R.log("# per pair: (tau,sigma) b touches | gap lower bound rel. to h1+h2: min max over the b half-way directions | "
-          "gap upper bound rel. (max) | decisions");
-    scoped_digits sd(digits10_for_bits(128));
-    const mpfi_real pi = real_pi<mpfi_real>(), two_pi = 2 * pi;
-    double worst_lb = 0;
-    std::string worst_pair;
-    for (auto p : coprime_pairs(opt.min_order, opt.max_order)) {
-      R.count_pair();
-      env_pair P{p.tau(), p.sigma(), p.delta()};
-      const std::string name = p.str();
-      const mpfi_real T = mpfi_real(P.tau), S = mpfi_real(P.sigma);
-      const mpfi_real w1 = sqrt(T / S), w2 = sqrt(S / T);
-      auto F = [&](const mpfi_real& phi) { return F_of<mpfi_real>(P, w1, w2, pi, phi); };
-      auto x_traj = [&](const mpfi_real& th) {  // x(theta)/rho0
-        return std::pair{sin(T * th) + sin(S * th), w1 * cos(T * th) + w2 * cos(S * th)};
-      };
-      auto x_env = [&](const mpfi_real& phi) {  // the Prop.'s x_d(phi)/rho0
-        mpfi_real c = cos(phi), s = sin(phi);
-        mpfi_real h1 = sqrt(c * c + w1 * w1 * s * s), h2 = sqrt(c * c + w2 * w2 * s * s);
-        return std::pair{c / h1 + c / h2, w1 * w1 * s / h1 + w2 * w2 * s / h2};
-      };
-      auto overlap = [](const mpfi_real& u, const mpfi_real& v) {
-        return !(interval_upper(u) < interval_lower(v) || interval_upper(v) < interval_lower(u));
-      };
-      // Touching directions: 2 pi N in [F(0), F(2 pi)) = [-b pi/2, -b pi/2 + 2 pi b).
-      // N from ceil(-b/4) to ceil(-b/4) + b - 1 (exact integers).
-      const std::int64_t b = P.b;
-      const std::int64_t n0 = -(b / 4);  // ceil(-b/4) for b >= 0
-      std::int64_t found = 0;
-      bool consistent = true;
-      std::vector<double> touch_phi;
-      for (std::int64_t N = n0; N < n0 + b; ++N) {
-        mpfi_real phiI;
-        double phid;
-        if (b % 4 == 0 && (4 * N == -b)) {  // F(0) = -b pi/2 = 2 pi N exactly
-          phiI = mpfi_real(0);
-          phid = 0;
-        } else if (b % 4 == 0 && (4 * N == b)) {  // F(pi) = b pi/2 = 2 pi N exactly
-          phiI = pi;
-          phid = M_PI;
-        } else {
-          phid = solve_F(P, 2 * M_PI * double(N), 0, 2 * M_PI);
-          double h = 1e-9 * (1 + phid);
-          mpfi_real lo = mpfi_real(phid - h), hi = mpfi_real(phid + h);
-          mpfi_real target = two_pi * mpfi_real(N);
-          if (!(phid - h > 0 && phid + h < 2 * M_PI && certainly_less(F(lo), target) && certainly_less(target, F(hi))))
-            continue;
-          phiI = interval_hull(lo, hi);
-        }
-        ++found;
-        touch_phi.push_back(phid);
-        // The trajectory point at theta = (theta_1* + 2 pi i)/tau, sigma i - tau k = -N.
-        auto [i, k] = bezout(P.tau, P.sigma, N);
-        (void)k;
-        mpfi_real th1 = pi / 2 - psi(w1, phiI);
-        mpfi_real th = (th1 + two_pi * real_from_int<mpfi_real>(to_big(i))) / T;
-        auto xt = x_traj(th);
-        auto xe = x_env(phiI);
-        if (!(overlap(xt.first, xe.first) && overlap(xt.second, xe.second))) consistent = false;
-      }
-      verdict v_touch = found == b ? (consistent ? verdict::proved : verdict::refuted) : verdict::undecided;
-      c_touch.add(v_touch, name, found == b ? "" : "bracketed " + std::to_string(found) + " of " + std::to_string(b));
-
-      // Gaps half-way: F = 2 pi N + pi.
-      verdict v_gap = verdict::proved;
-      mpfr_real lb_min = 10, lb_max = 0, ub_max = 0;
-      for (std::int64_t N = n0 - 1; N < n0 + b; ++N) {
-        double target = 2 * M_PI * double(N) + M_PI;
-        if (target < -double(b) * M_PI / 2 || target >= -double(b) * M_PI / 2 + 2 * M_PI * double(b)) continue;
-        double phid = solve_F(P, target, 0, 2 * M_PI);
-        mpfi_real phi = mpfi_real(phid);
-        mpfi_real Fv = F(phi);
-        // d = dist(F, 2 pi Z) >= pi - |F - (2 pi N + pi)|
-        mpfi_real off = interval_abs(Fv - (two_pi * mpfi_real(N) + pi));
-        mpfi_real d = pi - off;
-        mpfi_real c = cos(phi), s = sin(phi);
-        mpfi_real h1 = sqrt(c * c + w1 * w1 * s * s), h2 = sqrt(c * c + w2 * w2 * s * s);
-        mpfi_real lb = 2 / (pi * pi) * interval_sqr(d) / (S * S / h1 + T * T / h2);
-        mpfi_real rel = lb / (h1 + h2);
-        mpfi_real ub1 = h2 * (1 - cos(pi / T)), ub2 = h1 * (1 - cos(pi / S));
-        mpfi_real ub = (interval_upper(ub1) < interval_upper(ub2) ? ub1 : ub2) / (h1 + h2);
-        verdict v = certainly_positive(d) ? decide_positive(lb) : verdict::undecided;
-        v_gap = verdict_and(v_gap, v);
-        if (interval_lower(rel) < lb_min) lb_min = interval_lower(rel);
-        if (interval_lower(rel) > lb_max) lb_max = interval_lower(rel);
-        if (interval_upper(ub) > ub_max) ub_max = interval_upper(ub);
-      }
-      c_gap.add(v_gap, name);
-      c_lit.add(v_gap == verdict::proved ? verdict::refuted : verdict::undecided, name,
-                v_gap == verdict::proved ? "the hull misses the envelope half-way between touches" : "");
-      if (double(lb_max) > worst_lb) {
-        worst_lb = double(lb_max);
-        worst_pair = name;
-      }
-      if (R.logging()) {
-        std::string t;
-        for (double f : touch_phi) {
-          char buf[32];
-          std::snprintf(buf, sizeof buf, " %.6f", f);
-          t += buf;
-        }
-        R.log(name + " b=" + std::to_string(b) + " touch_phi=" + (b <= 8 ? t : " (" + std::to_string(found) + ")") +
-              " | gap_lb_rel min " + format_scientific(lb_min, 4) + " max " + format_scientific(lb_max, 4) +
-              " | gap_ub_rel max " + format_scientific(ub_max, 4) + " | " + verdict_name(v_touch) + " " +
-              verdict_name(v_gap));
-      }
-    }
-    if (!worst_pair.empty())
-      R.note("largest proved relative gap lower bound: " + std::to_string(worst_lb) + " at " + worst_pair);
-    return R.finish();
-  });
+  CLI::App app{"verify_envelope: paper Prop. convexEnvelope (P2)", "verify_envelope"};
+  return run_program(app, argc, argv, verify);
 }

@@ -34,9 +34,12 @@
 //   cert.check   (with --check) gyrores::check_certificate re-proves the certificate.       [asserted]
 //
 // Options: --check (run the independent checker too, ~doubles the time); --digits D (default 6).
+#include <gyrores/certify/check.hpp>
+#include <gyrores/certify/certify.hpp>
+#include <gyrores/certify/proof_steps.hpp>
 #include <gyrores/inscribed/asymptotic.hpp>
-#include <gyrores/certify/certificate.hpp>
 
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -78,203 +81,269 @@ std::optional<big_int> certain_floor(const I& t) {
   return big_int(lo.convert_to<big_int>());
 }
 
+struct minimiser_claims {
+  claim &count, &m_min, &pass, &root, &lobe, &unimodal, &location, &first, &first_small_x;
+  claim* check;  // with --check only
+};
+
+minimiser_claims add_claims(run& R, bool check) {
+  return {R.add_claim("S.count", "2 global minimisers (delta odd), 4 (delta = 0 mod 4), 2 zeros (delta = 2 mod 4)", true),
+          R.add_claim("S.m_min", "min_N |a - 4N| = 0, 1, 2 for delta = 2 mod 4, odd, 0 mod 4", true),
+          R.add_claim("S.pass",
+                      "every global minimiser is a q' root in a frame with |m| = m_min, within half a fast lobe of the pass",
+                      true),
+          R.add_claim("P4.root", "min R is attained at a root of q' = 0 (Thm. globalMinimiser part 3)", true),
+          R.add_claim("P4.lobe", "the minimiser's q-lobe is envelope-minimising: a slow node is one of its ends (part 1)",
+                      true),
+          R.add_claim("P4.unimodal", "R decreases then increases in every envelope-minimising lobe (part 2, literal)", false),
+          R.add_claim("P5.location", "some global minimiser lies in the paper's lobe k0 = round(a/(2b)) around pi/b", false),
+          R.add_claim("P5.first", "the first global minimiser lies in the paper's lobe k0 (so t_first ~ pi/|n|)", false),
+          R.add_claim("P5.first.x<1/2", "P5.first for delta != 2 mod 4 and x < 1/2", false),
+          check ? &R.add_claim("cert.check", "check_certificate re-proves the certificate", true) : nullptr};
+}
+
+// One certified pair: the pair, its certificate and the paper's lobe indices k0.
+struct certified_pair {
+  resonant_pair<big_int> p;
+  std::string name;
+  big_int a, b;
+  certificate cert;
+  std::vector<big_int> ks;  // paper_lobe_indices
+
+  bool in_paper_lobe(const big_int& k) const {
+    for (auto& k0 : ks)
+      if (int_mod(k, a) == k0) return true;
+    return false;
+  }
+};
+
+// S.m_min: exact, min over N of |a - 4N| from a mod 4.
+verdict m_min_verdict(const resonant_pair<big_int>& p) {
+  big_int r = int_mod(p.order(), big_int(4));
+  int mm = int(r > 2 ? big_int(4 - r) : r);
+  int expect = p.delta_mod4() == 2 ? 0 : (p.delta_mod4() % 2 == 1 ? 1 : 2);
+  return decide_bool(mm == expect && mm == p.strand_offset_min());
+}
+
+// The certificate: "slow-nodes" cover for a > 8 b, "all-lobes" otherwise, at any order.
+certificate certify_for_run(const resonant_pair<big_int>& p, unsigned digits) {
+  certify_options copt;
+  copt.max_lobes = std::numeric_limits<std::int64_t>::max();
+  copt.max_nodes = p.order() > 8 * big_int(p.delta()) ? std::numeric_limits<std::int64_t>::max() : 0;
+  return certify_pair(p, digits, copt);
+}
+
+// P4.lobe: the neighbours of X among the q roots, u/pi in Z (fast) and (m + 2 N a)/(2 b) (slow);
+// proved when a slow node is one of the two ends. The detail names the ends.
+std::pair<verdict, std::string> lobe_verdict(const I& X, const I& pi, const big_int& a, const big_int& b,
+                                             const big_int& m) {
+  I t = X / pi;  // u*/pi
+  auto fl = certain_floor(t);
+  // slow nodes: (m + 2 N a)/(2b) < t  <=>  N < (2 b t - m)/(2a)
+  I ns = (2 * real_from_int<I>(b) * t - real_from_int<I>(m)) / (2 * real_from_int<I>(a));
+  auto nfl = certain_floor(ns);
+  if (!fl || !nfl) return {verdict::undecided, ""};
+  big_int Mleft = *fl, Mright = *fl + 1;
+  big_int Nleft = *nfl, Nright = *nfl + 1;
+  // slow node values as fractions over 2b: sl = m + 2 Nleft a, sr = m + 2 Nright a
+  big_int sl = m + 2 * Nleft * a, sr = m + 2 * Nright * a, den = 2 * b;
+  bool left_slow = sl > Mleft * den;  // slow node to the right of the fast one: nearer
+  bool right_slow = sr < Mright * den;
+  return {decide_bool(left_slow || right_slow),
+          std::string("lobe ends: ") + (left_slow ? "slow" : "fast") + "/" + (right_slow ? "slow" : "fast")};
+}
+
+// P4.unimodal (literal): the first node j with 0 < m_j < b decides it (refuted when its long
+// lobe shows the MPFI signs below); b = 1: holds (Lemma 4.2').
+std::pair<verdict, std::string> unimodal_verdict(const proof::constants& K, const big_int& a, const big_int& b) {
+  if (b == 1) return {verdict::proved, "b = 1: both lobes at each slow node are short (Lemma 4.2')"};
+  const I pi = K.c.pi, half_pi = pi / 2;
+  for (big_int jj = 0; jj < b; ++jj) {
+    big_int kj = int_floor_div(big_int((2 * jj + 1) * a + b), big_int(2 * b));
+    big_int mj = (2 * jj + 1) * a - 2 * kj * b;
+    if (!(mj > 0 && mj < b)) continue;
+    I mu = proof::mu_of(K, mj);
+    I s = pi * real_from_int<I>(mj) / (2 * real_from_int<I>(b));
+    bool neg_fs = certainly_negative(proof::f_of(K, mu, s));
+    bool pos_gs = certainly_positive(proof::g_of(K, mu, s));
+    bool neg_fh = certainly_negative(proof::f_of(K, mu, half_pi));
+    bool neg_gh = certainly_negative(proof::g_of(K, mu, half_pi));
+    bool pos_fp = certainly_positive(proof::f_of(K, mu, pi));
+    if (neg_fs && pos_gs && neg_fh && neg_gh && pos_fp)
+      return {verdict::refuted, "node j = " + jj.str() + ", frame k = " + kj.str() + ", m = " + mj.str() +
+                                    ": long lobe [s, pi], R increases after s, q' root in (pi/2, pi)"};
+    break;
+  }
+  return {verdict::undecided, ""};
+}
+
+// P5: the lobe (k mod a) of the first minimiser among the symmetry images of X, if the images'
+// thetas are separated and the first agrees with the certificate's theta_first; and whether
+// some image lies in the paper's lobe.
+struct first_minimiser {
+  bool some_in_paper_lobe = false;
+  verdict first_in_paper_lobe = verdict::undecided;
+  big_int k_first = -1;
+};
+
+first_minimiser locate_first(const certified_pair& c, const proof::constants& K, const I& X, const big_int& k,
+                             const big_int& j, const I& th_first) {
+  auto imgs = proof::images_of(K, k, j, c.p.strand_offset_min() == 2);
+  first_minimiser out;
+  std::vector<I> thetas;
+  for (auto& im : imgs) {
+    thetas.push_back(proof::theta_of(K, im.k, im.negate_u ? I(-X) : X));
+    if (c.in_paper_lobe(im.k)) out.some_in_paper_lobe = true;
+  }
+  std::optional<std::size_t> first;
+  for (std::size_t i = 0; i < thetas.size(); ++i) {
+    bool smallest = true;
+    for (std::size_t i2 = 0; i2 < thetas.size(); ++i2)
+      if (i2 != i && !certainly_less(thetas[i], thetas[i2])) smallest = false;
+    if (smallest) first = i;
+  }
+  if (!first) return out;
+  out.k_first = int_mod(imgs[*first].k, c.a);
+  out.first_in_paper_lobe = decide_bool(c.in_paper_lobe(out.k_first));
+  // Consistency with the certificate's theta_first (both enclose the same point; the
+  // certificate's is rounded outward to its printed digits, this one is computed from X).
+  if (certainly_less(thetas[*first], th_first) || certainly_less(th_first, thetas[*first]))
+    out.first_in_paper_lobe = verdict::undecided;
+  return out;
+}
+
+// The run: claims, the counterexamples' certificates logged once, the range of t_first/(pi/n).
+class minimisers_run {
+ public:
+  minimisers_run(run& R, bool check, unsigned digits) : R_(R), C_(add_claims(R, check)), digits_(digits) {}
+
+  void pair(const resonant_pair<big_int>& p);
+  std::string ratio_note() const {
+    return "t_first/(pi/|n|) = theta_first b/pi ranges over [" + format_scientific(ratio_lo_, 6) + ", " +
+           format_scientific(ratio_hi_, 6) + "] (the paper's proxy T_min ~ pi/|n| means ratio ~ 1)";
+  }
+
+ private:
+  void not_proved(const certified_pair& c);
+  void degenerate(const certified_pair& c);
+  void non_degenerate(const certified_pair& c, const proof::constants& K, const I& th_first, const I& ratio);
+  void print_cert_once(const claim& cl, const certified_pair& c);
+
+  run& R_;
+  minimiser_claims C_;
+  unsigned digits_;
+  std::set<std::string> printed_;
+  P ratio_lo_ = 1e9, ratio_hi_ = 0;
+};
+
+void minimisers_run::print_cert_once(const claim& cl, const certified_pair& c) {
+  if (cl.first_refuted.rfind(c.name, 0) == 0 && !printed_.count(cl.id)) {
+    printed_.insert(cl.id);
+    R_.log("# smallest counterexample to " + cl.id + ": " + cl.first_refuted + "\n" + cert_text(c.cert));
+  }
+}
+
+void minimisers_run::pair(const resonant_pair<big_int>& p) {
+  certified_pair c{p, p.str(), p.order(), big_int(p.delta()), {}, paper_lobe_indices(p)};
+  C_.m_min.add(m_min_verdict(p), c.name);
+  c.cert = certify_for_run(p, digits_);
+  if (C_.check) {
+    auto v = check_certificate(c.cert);
+    C_.check->add(v.holds ? verdict::proved : verdict::refuted, c.name, v.failure);
+  }
+  if (!c.cert.global_minimality) return not_proved(c);
+  scoped_digits sd(digits10_for_bits(c.cert.working_bits));
+  auto K = proof::constants_of(p);
+  // Ratio t_first/(pi/n) = theta_first b/pi.
+  I th_first = interval_from_decimal(c.cert.theta_first.first, c.cert.theta_first.second);
+  I ratio = th_first * real_from_int<I>(c.b) / K.c.pi;
+  if (interval_lower(ratio) < ratio_lo_) ratio_lo_ = interval_lower(ratio);
+  if (interval_upper(ratio) > ratio_hi_) ratio_hi_ = interval_upper(ratio);
+  if (p.degenerate()) return degenerate(c);
+  non_degenerate(c, K, th_first, ratio);
+}
+
+void minimisers_run::not_proved(const certified_pair& c) {
+  for (auto* cl : {&C_.count, &C_.pass, &C_.root, &C_.lobe, &C_.location, &C_.first, &C_.first_small_x})
+    cl->add(verdict::undecided, c.name, c.cert.global_minimality_note);
+  C_.unimodal.add(verdict::undecided, c.name);
+  R_.log(c.name + " | NOT PROVED: " + c.cert.global_minimality_note);
+}
+
+// Zeros pi/2 and 3 pi/2 (integer argument; verify_degenerate re-proves them by a cover).
+void minimisers_run::degenerate(const certified_pair& c) {
+  const auto& name = c.name;
+  C_.count.add(decide_bool(c.cert.minimiser_count == 2), name);
+  C_.pass.add(verdict::proved, name, "m = 0 frame (a/4, (b-2)/4)");
+  for (auto* cl : {&C_.root, &C_.lobe, &C_.unimodal, &C_.first_small_x}) cl->add(verdict::not_applicable, name);
+  big_int k_first = c.a / 4, k_second = 3 * c.a / 4;
+  bool loc = c.in_paper_lobe(k_first) || c.in_paper_lobe(k_second);
+  C_.location.add(decide_bool(loc), name, loc ? "" : "zeros in lobes a/4, 3a/4; paper lobe " + c.ks[0].str());
+  C_.first.add(decide_bool(c.in_paper_lobe(k_first)), name,
+               "first zero pi/2 in lobe " + k_first.str() + ", paper lobe " + c.ks[0].str());
+  print_cert_once(C_.first, c);
+  R_.log(name + " degenerate | r_res = 0 | theta_first = pi/2 | 2 zeros, lobes " + k_first.str() + " " +
+         k_second.str() + " k0 " + c.ks[0].str() + " | t_first/(pi/n) = b/2 = " + big_int(c.b / 2).str());
+}
+
+void minimisers_run::non_degenerate(const certified_pair& c, const proof::constants& K, const I& th_first,
+                                    const I& ratio) {
+  const auto& name = c.name;
+  const auto& lr = need(c.cert, "local-root");
+  const big_int k(lr.data.at("k")), j(lr.data.at("j")), m(lr.data.at("m"));
+  I X = interval_from_decimal(lr.data.at("X_lo"), lr.data.at("X_hi"));
+  std::size_t expect = (c.p.delta_mod4() % 2 == 1) ? 2 : 4;
+  C_.count.add(decide_bool(c.cert.minimiser_count == expect), name,
+               "count " + std::to_string(c.cert.minimiser_count) + ", expected " + std::to_string(expect));
+  // S.pass: |m| = m_min (images: mirror m -> -m, shift m -> m) and X inside (-pi/2, pi/2).
+  I half_pi = K.c.pi / 2;
+  bool inside = certainly_less(-half_pi, X) && certainly_less(X, half_pi);
+  bool mm = abs(m) == big_int(c.p.strand_offset_min());
+  C_.pass.add(verdict_and(decide_bool(mm), inside ? verdict::proved : verdict::undecided), name,
+              mm ? "" : "frame m = " + m.str());
+  C_.root.add(verdict::proved, name);  // local-root + cover: the minimum is |q| at the q' root
+  auto [v_lobe, lobe_info] = lobe_verdict(X, K.c.pi, c.a, c.b, m);
+  C_.lobe.add(v_lobe, name, v_lobe == verdict::proved ? "" : lobe_info);
+  auto [v_uni, uni_info] = unimodal_verdict(K, c.a, c.b);
+  C_.unimodal.add(v_uni, name, uni_info);
+  auto f = locate_first(c, K, X, k, j, th_first);
+  C_.location.add(decide_bool(f.some_in_paper_lobe), name);
+  std::string fi = "first minimiser in lobe " + f.k_first.str() + ", paper lobe " + c.ks[0].str() +
+                   (c.ks.size() > 1 ? "/" + c.ks[1].str() : "");
+  C_.first.add(f.first_in_paper_lobe, name, fi);
+  C_.first_small_x.add(2 * c.b < c.a ? f.first_in_paper_lobe : verdict::not_applicable, name,
+                       2 * c.b < c.a ? fi : "");
+  R_.log(name + " " + (c.a > 8 * c.b ? "slow-nodes" : "all-lobes") + " | r_res in [" + c.cert.r_res.first + ", " +
+         c.cert.r_res.second + "] | theta_first in [" + c.cert.theta_first.first + ", " + c.cert.theta_first.second +
+         "] | " + std::to_string(c.cert.minimiser_count) + " (" + k.str() + "," + j.str() + "," + m.str() + ") lobe " +
+         f.k_first.str() + " k0 " + c.ks[0].str() + " | " + enc(ratio, 6) + " | " +
+         verdict_name(decide_bool(c.cert.minimiser_count == expect)) + " " +
+         verdict_name(mm && inside ? verdict::proved : verdict::undecided) + " " + verdict_name(v_lobe) + " " +
+         verdict_name(v_uni) + " " + verdict_name(f.first_in_paper_lobe));
+  for (const claim* cl : {&C_.unimodal, &C_.first, &C_.first_small_x}) print_cert_once(*cl, c);
+}
+
+int verify(const options& opt, bool check, unsigned digits) {
+  run R("verify_minimisers",
+        "global minimisers: paper Thm. globalMinimiser (P4), first slow node (P5), docs/mathematics.md §3 structure", opt);
+  minimisers_run M(R, check, digits);
+  R.log("# per pair: (tau,sigma) strategy | r_res | theta_first | count frame(k,j,m) lobe(first) k0 | t_first/(pi/n) | "
+        "S.count S.pass P4.lobe P4.unimodal P5.first");
+  for_each_pair(R, opt, [&](const resonant_pair<std::int64_t>& p64) { M.pair(big_pair(p64)); });
+  R.note(M.ratio_note());
+  return R.finish();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  return guarded_main("verify_minimisers", [&] {
-    auto opt = parse_options(argc, argv, {"digits"}, {"check"});
-    const bool check = opt.extra.count("check") > 0;
-    const unsigned digits = opt.extra.count("digits") ? unsigned(std::stoul(opt.extra["digits"])) : 6u;
-    run R("verify_minimisers",
-          "global minimisers: paper Thm. globalMinimiser (P4), first slow node (P5), docs/mathematics.md §3 structure", opt);
-    auto& c_count = R.add_claim("S.count", "2 global minimisers (delta odd), 4 (delta = 0 mod 4), 2 zeros (delta = 2 mod 4)", true);
-    auto& c_mmin = R.add_claim("S.m_min", "min_N |a - 4N| = 0, 1, 2 for delta = 2 mod 4, odd, 0 mod 4", true);
-    auto& c_pass = R.add_claim("S.pass", "every global minimiser is a q' root in a frame with |m| = m_min, within half a fast lobe of the pass", true);
-    auto& c_root = R.add_claim("P4.root", "min R is attained at a root of q' = 0 (Thm. globalMinimiser part 3)", true);
-    auto& c_lobe = R.add_claim("P4.lobe", "the minimiser's q-lobe is envelope-minimising: a slow node is one of its ends (part 1)", true);
-    auto& c_uni = R.add_claim("P4.unimodal", "R decreases then increases in every envelope-minimising lobe (part 2, literal)", false);
-    auto& c_loc = R.add_claim("P5.location", "some global minimiser lies in the paper's lobe k0 = round(a/(2b)) around pi/b", false);
-    auto& c_first = R.add_claim("P5.first", "the first global minimiser lies in the paper's lobe k0 (so t_first ~ pi/|n|)", false);
-    auto& c_first_s = R.add_claim("P5.first.x<1/2", "P5.first for delta != 2 mod 4 and x < 1/2", false);
-    claim* c_check = check ? &R.add_claim("cert.check", "check_certificate re-proves the certificate", true) : nullptr;
-    R.log("# per pair: (tau,sigma) strategy | r_res | theta_first | count frame(k,j,m) lobe(first) k0 | t_first/(pi/n) | "
-          "S.count S.pass P4.lobe P4.unimodal P5.first");
-    std::set<std::string> printed;
-    auto print_cert_once = [&](const claim& c, const certificate& cert, const std::string& name) {
-      if (c.first_refuted.rfind(name, 0) == 0 && !printed.count(c.id)) {
-        printed.insert(c.id);
-        R.log("# smallest counterexample to " + c.id + ": " + c.first_refuted + "\n" + cert_text(cert));
-      }
-    };
-    P ratio_lo = 1e9, ratio_hi = 0;
-    for (auto p64 : coprime_pairs(opt.min_order, opt.max_order)) {
-      R.count_pair();
-      resonant_pair<big_int> p(p64.tau(), p64.sigma());
-      const std::string name = p.str();
-      const big_int a = p.order(), b = big_int(p.delta());
-      const bool deg = p.degenerate();
-      const int m_min = p.strand_offset_min();
-      // S.m_min: exact, min over N of |a - 4N| from a mod 4.
-      {
-        big_int r = int_mod(a, big_int(4));
-        int mm = int(r > 2 ? big_int(4 - r) : r);
-        int expect = p.delta_mod4() == 2 ? 0 : (p.delta_mod4() % 2 == 1 ? 1 : 2);
-        c_mmin.add(decide_bool(mm == expect && mm == m_min), name);
-      }
-      certify_options copt;
-      copt.max_lobes = std::numeric_limits<std::int64_t>::max();
-      copt.max_nodes = a > 8 * b ? std::numeric_limits<std::int64_t>::max() : 0;
-      certificate cert = certify_pair(p, digits, copt);
-      if (c_check) {
-        auto v = check_certificate(cert);
-        c_check->add(v.holds ? verdict::proved : verdict::refuted, name, v.failure);
-      }
-      const auto ks = paper_lobe_indices(p);
-      auto in_paper_lobe = [&](const big_int& k) {
-        for (auto& k0 : ks)
-          if (int_mod(k, a) == k0) return true;
-        return false;
-      };
-      if (!cert.global_minimality) {
-        for (auto* c : {&c_count, &c_pass, &c_root, &c_lobe, &c_loc, &c_first, &c_first_s})
-          c->add(verdict::undecided, name, cert.global_minimality_note);
-        c_uni.add(verdict::undecided, name);
-        R.log(name + " | NOT PROVED: " + cert.global_minimality_note);
-        continue;
-      }
-      scoped_digits sd(digits10_for_bits(cert.working_bits));
-      auto K = proof::constants_of(p);
-      const I pi = K.c.pi;
-      // Ratio t_first/(pi/n) = theta_first b/pi.
-      I th_first = interval_from_decimal(cert.theta_first.first, cert.theta_first.second);
-      I ratio = th_first * real_from_int<I>(b) / pi;
-      if (interval_lower(ratio) < ratio_lo) ratio_lo = interval_lower(ratio);
-      if (interval_upper(ratio) > ratio_hi) ratio_hi = interval_upper(ratio);
-      std::string line = name;
-      if (deg) {
-        // Zeros pi/2 and 3 pi/2 (integer argument; verify_degenerate re-proves them by a cover).
-        c_count.add(decide_bool(cert.minimiser_count == 2), name);
-        c_pass.add(verdict::proved, name, "m = 0 frame (a/4, (b-2)/4)");
-        for (auto* c : {&c_root, &c_lobe, &c_uni, &c_first_s}) c->add(verdict::not_applicable, name);
-        big_int k_first = a / 4, k_second = 3 * a / 4;
-        bool loc = in_paper_lobe(k_first) || in_paper_lobe(k_second);
-        c_loc.add(decide_bool(loc), name, loc ? "" : "zeros in lobes a/4, 3a/4; paper lobe " + ks[0].str());
-        c_first.add(decide_bool(in_paper_lobe(k_first)), name,
-                    "first zero pi/2 in lobe " + k_first.str() + ", paper lobe " + ks[0].str());
-        line += " degenerate | r_res = 0 | theta_first = pi/2 | 2 zeros, lobes " + k_first.str() + " " + k_second.str() +
-                " k0 " + ks[0].str() + " | t_first/(pi/n) = b/2 = " + big_int(b / 2).str();
-        print_cert_once(c_first, cert, name);
-        R.log(line);
-        continue;
-      }
-      const auto& lr = need(cert, "local-root");
-      const big_int k(lr.data.at("k")), j(lr.data.at("j")), m(lr.data.at("m"));
-      I X = interval_from_decimal(lr.data.at("X_lo"), lr.data.at("X_hi"));
-      const bool with_shift = m_min == 2;
-      // S.count
-      std::size_t expect = (p.delta_mod4() % 2 == 1) ? 2 : 4;
-      c_count.add(decide_bool(cert.minimiser_count == expect), name,
-                  "count " + std::to_string(cert.minimiser_count) + ", expected " + std::to_string(expect));
-      // S.pass: |m| = m_min (images: mirror m -> -m, shift m -> m) and X inside (-pi/2, pi/2).
-      I half_pi = pi / 2;
-      bool inside = certainly_less(-half_pi, X) && certainly_less(X, half_pi);
-      bool mm = abs(m) == big_int(m_min);
-      c_pass.add(verdict_and(decide_bool(mm), inside ? verdict::proved : verdict::undecided), name,
-                 mm ? "" : "frame m = " + m.str());
-      c_root.add(verdict::proved, name);  // local-root + cover: the minimum is |q| at the q' root
-      // P4.lobe: neighbours of X among the q roots u/pi in Z (fast) and (m + 2 N a)/(2 b) (slow).
-      verdict v_lobe = verdict::undecided;
-      std::string lobe_info;
-      {
-        I t = X / pi;  // u*/pi
-        auto fl = certain_floor(t);
-        // slow nodes: (m + 2 N a)/(2b) < t  <=>  N < (2 b t - m)/(2a)
-        I ns = (2 * real_from_int<I>(b) * t - real_from_int<I>(m)) / (2 * real_from_int<I>(a));
-        auto nfl = certain_floor(ns);
-        if (fl && nfl) {
-          big_int Mleft = *fl, Mright = *fl + 1;
-          big_int Nleft = *nfl, Nright = *nfl + 1;
-          // slow node values as fractions over 2b: sl = m + 2 Nleft a, sr = m + 2 Nright a
-          big_int sl = m + 2 * Nleft * a, sr = m + 2 * Nright * a, den = 2 * b;
-          bool left_slow = sl > Mleft * den;    // slow node to the right of the fast one: nearer
-          bool right_slow = sr < Mright * den;
-          v_lobe = decide_bool(left_slow || right_slow);
-          lobe_info = std::string("lobe ends: ") + (left_slow ? "slow" : "fast") + "/" + (right_slow ? "slow" : "fast");
-        }
-      }
-      c_lobe.add(v_lobe, name, v_lobe == verdict::proved ? "" : lobe_info);
-      // P4.unimodal (literal): a node with 0 < m_j < b refutes it; b = 1: holds (Lemma 4.2').
-      verdict v_uni = verdict::undecided;
-      std::string uni_info;
-      if (b == 1) {
-        v_uni = verdict::proved;
-        uni_info = "b = 1: both lobes at each slow node are short (Lemma 4.2')";
-      } else {
-        for (big_int jj = 0; jj < b; ++jj) {
-          big_int kj = int_floor_div(big_int((2 * jj + 1) * a + b), big_int(2 * b));
-          big_int mj = (2 * jj + 1) * a - 2 * kj * b;
-          if (!(mj > 0 && mj < b)) continue;
-          I mu = proof::mu_of(K, mj);
-          I s = pi * real_from_int<I>(mj) / (2 * real_from_int<I>(b));
-          bool neg_fs = certainly_negative(proof::f_of(K, mu, s));
-          bool pos_gs = certainly_positive(proof::g_of(K, mu, s));
-          bool neg_fh = certainly_negative(proof::f_of(K, mu, half_pi));
-          bool neg_gh = certainly_negative(proof::g_of(K, mu, half_pi));
-          bool pos_fp = certainly_positive(proof::f_of(K, mu, pi));
-          if (neg_fs && pos_gs && neg_fh && neg_gh && pos_fp) {
-            v_uni = verdict::refuted;
-            uni_info = "node j = " + jj.str() + ", frame k = " + kj.str() + ", m = " + mj.str() +
-                       ": long lobe [s, pi], R increases after s, q' root in (pi/2, pi)";
-          }
-          break;
-        }
-      }
-      c_uni.add(v_uni, name, uni_info);
-      // P5: lobes of the minimisers (exact k mod a) and of the first one.
-      auto imgs = proof::images_of(K, k, j, with_shift);
-      bool loc = false;
-      std::optional<std::size_t> first;
-      std::vector<I> thetas;
-      for (auto& im : imgs) {
-        thetas.push_back(proof::theta_of(K, im.k, im.negate_u ? I(-X) : X));
-        if (in_paper_lobe(im.k)) loc = true;
-      }
-      for (std::size_t i = 0; i < thetas.size(); ++i) {
-        bool smallest = true;
-        for (std::size_t i2 = 0; i2 < thetas.size(); ++i2)
-          if (i2 != i && !certainly_less(thetas[i], thetas[i2])) smallest = false;
-        if (smallest) first = i;
-      }
-      verdict v_first = verdict::undecided;
-      big_int k_first = -1;
-      if (first) {
-        k_first = int_mod(imgs[*first].k, a);
-        v_first = decide_bool(in_paper_lobe(k_first));
-        // Consistency with the certificate's theta_first (both enclose the same point; the
-        // certificate's is rounded outward to its printed digits, this one is computed from X).
-        if (certainly_less(thetas[*first], th_first) || certainly_less(th_first, thetas[*first]))
-          v_first = verdict::undecided;
-      }
-      c_loc.add(decide_bool(loc), name);
-      std::string fi = "first minimiser in lobe " + k_first.str() + ", paper lobe " + ks[0].str() +
-                       (ks.size() > 1 ? "/" + ks[1].str() : "");
-      c_first.add(v_first, name, fi);
-      if (2 * b < a) c_first_s.add(v_first, name, fi);
-      else c_first_s.add(verdict::not_applicable, name);
-      line += std::string(" ") + (copt.max_nodes > 0 ? "slow-nodes" : "all-lobes") + " | r_res in [" + cert.r_res.first +
-              ", " + cert.r_res.second + "] | theta_first in [" + cert.theta_first.first + ", " +
-              cert.theta_first.second + "] | " + std::to_string(cert.minimiser_count) + " (" + k.str() + "," + j.str() +
-              "," + m.str() + ") lobe " + k_first.str() + " k0 " + ks[0].str() + " | " + enc(ratio, 6) + " | " +
-              verdict_name(decide_bool(cert.minimiser_count == expect)) + " " +
-              verdict_name(mm && inside ? verdict::proved : verdict::undecided) + " " + verdict_name(v_lobe) + " " +
-              verdict_name(v_uni) + " " + verdict_name(v_first);
-      R.log(line);
-      print_cert_once(c_uni, cert, name);
-      print_cert_once(c_first, cert, name);
-      print_cert_once(c_first_s, cert, name);
-    }
-    R.note("t_first/(pi/|n|) = theta_first b/pi ranges over [" + format_scientific(ratio_lo, 6) + ", " +
-           format_scientific(ratio_hi, 6) + "] (the paper's proxy T_min ~ pi/|n| means ratio ~ 1)");
-    return R.finish();
-  });
+  CLI::App app{"verify_minimisers: global minimisers (P4, P5, docs/mathematics.md §3)", "verify_minimisers"};
+  bool check = false;
+  unsigned digits = 6;
+  app.add_flag("--check", check, "re-prove every certificate with check_certificate");
+  app.add_option("--digits", digits, "digits of every certificate")
+      ->type_name("D")
+      ->check(CLI::Range(1u, 10000u))
+      ->capture_default_str();
+  return run_program(app, argc, argv, [&](const options& opt) { return verify(opt, check, digits); });
 }

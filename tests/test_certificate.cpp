@@ -1,10 +1,18 @@
-// Certificates: enclosures contain independent references (tests/high_precision_reference.hpp,
+// Certificates: enclosures contain independent references (src/testing/high_precision_reference.hpp,
 // naive formulation in MPFR, no lobe-frame code), widths meet the digits, the checker accepts
-// honest certificates at 20, 100 and 1000 digits and rejects tampered ones.
+// honest certificates at 20, 100 and 1000 digits and rejects tampered ones; the JSON form reads
+// back to the same certificate; the cover the proof programs use.
 #include <catch2/catch.hpp>
 
-#include <gyrores/certify/certificate.hpp>
+#include <gyrores/certify/check.hpp>
+#include <gyrores/certify/certify.hpp>
+#include <gyrores/certify/cover.hpp>
+#include <gyrores/core/interval.hpp>
+#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/io/certificate_json.hpp>
 #include <gyrores/model/enumerate.hpp>
+
+#include <limits>
 
 #include "testing/high_precision_reference.hpp"
 
@@ -189,4 +197,75 @@ TEST_CASE("the checker rejects tampered certificates", "[certificate]") {
       CHECK_FALSE(v.holds);
     }
   }
+}
+
+TEST_CASE("certificate JSON: the text reads back to the same certificate; malformed text is a usage_error",
+          "[certificate]") {
+  for (auto [t, s] : {std::pair<const char*, const char*>{"6", "5"}, {"11", "9"}, {"1000004", "3"},
+                      {"1000000000000000000000000000001", "1000000000000000000000000000000"}}) {
+    resonant_pair<big_int> p{big_int(t), big_int(s)};
+    INFO(p.str());
+    const auto c = certify_pair(p, 20);
+    const std::string text = json_dump(certificate_to_json(c));
+    const auto back = certificate_from_text(text);
+    CHECK(json_dump(certificate_to_json(back)) == text);
+    CHECK(back.tau == c.tau);
+    CHECK(back.sigma == c.sigma);
+    CHECK(back.r_res == c.r_res);
+    CHECK(back.theta_first == c.theta_first);
+    CHECK(back.obligations.size() == c.obligations.size());
+    CHECK(check_certificate(back).holds);
+  }
+  const std::string good = json_dump(certificate_to_json(certify_pair(resonant_pair<big_int>(6, 5), 10)));
+  auto without = [&](const std::string& key) {
+    auto j = nlohmann::json::parse(good);
+    j.erase(key);
+    return j.dump();
+  };
+  CHECK_THROWS_AS(certificate_from_text("not json"), usage_error);
+  CHECK_THROWS_AS(certificate_from_text(good.substr(0, good.size() / 2)), usage_error);
+  for (const char* key : {"format", "tau", "digits", "claims", "minimiser_count", "obligations"})
+    CHECK_THROWS_AS(certificate_from_text(without(key)), usage_error);
+  auto j = nlohmann::json::parse(good);
+  j["tau"] = "6";
+  CHECK_THROWS_AS(certificate_from_text(j.dump()), usage_error);
+  j = nlohmann::json::parse(good);
+  j["claims"]["r_res"] = nlohmann::json::array({"1"});
+  CHECK_THROWS_AS(certificate_from_text(j.dump()), usage_error);
+}
+
+TEST_CASE("the proof steps used by the proofs: basins by lobe and the cover with bound 0", "[certificate]") {
+  // (7, 3): delta = 4, R > 0 everywhere (proofs/verify_degenerate.cpp, P3.positive).
+  resonant_pair<big_int> p(7, 3);
+  scoped_digits sd(digits10_for_bits(72));
+  auto K = proof::constants_of(p);
+  certify_options any;
+  any.max_lobes = any.max_nodes = std::numeric_limits<std::int64_t>::max();
+  auto all = proof::run_cover(K, {}, interval_point(mpfr_real(0)), any, "all-lobes", "");
+  CHECK(all.proved);
+  CHECK(all.strategy == "all-lobes");
+  CHECK(all.stats.lobes == 10u);
+  // A bound above r_res^2 cannot be proved without basins.
+  auto c = certify_pair(p, 10);
+  auto hi = interval_from_decimal(c.r_res.second, c.r_res.second);
+  auto fails = proof::run_cover(K, {}, interval_sqr(hi), any, "all-lobes", "");
+  CHECK_FALSE(fails.proved);
+  CHECK(fails.note.find("not proved") == 0);
+  CHECK_FALSE(proof::run_cover(K, {}, interval_point(mpfr_real(0)), any, "no-such", "").proved);
+  CHECK(proof::run_cover(K, {}, interval_point(mpfr_real(0)), any, "slow-nodes", "").proved);  // x = 0.4 < 1/2
+  auto K51 = proof::constants_of(resonant_pair<big_int>(5, 1));  // x = 2/3: no slow-nodes cover
+  auto slow = proof::run_cover(K51, {}, interval_point(mpfr_real(0)), any, "slow-nodes", "");
+  CHECK_FALSE(slow.proved);
+  CHECK(slow.note == "slow-nodes cover needs x < 1/2");
+  CHECK(proof::run_cover(K51, {}, interval_point(mpfr_real(0)), any, "", "").strategy == "all-lobes");
+  // Basins: one entry per image lobe k mod a, mirrored images negated.
+  auto imgs = proof::images_of(K, big_int(3), big_int(1), true);
+  auto basins = proof::basins_by_lobe(K, imgs, interval_of(mpfr_real("0.1"), mpfr_real("0.2")));
+  std::size_t n = 0;
+  for (auto& [k, ys] : basins) {
+    CHECK(k >= 0);
+    CHECK(k < K.a);
+    n += ys.size();
+  }
+  CHECK(n == imgs.size());
 }

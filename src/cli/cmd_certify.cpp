@@ -3,11 +3,12 @@
 #include <cstdlib>
 #include <iostream>
 
-#include <gyrores/gyrores.hpp>
-
+#include <gyrores/certify/check.hpp>
+#include <gyrores/certify/certify.hpp>
+#include <gyrores/io/certificate_json.hpp>
 #include <gyrores/io/files.hpp>
-#include "certificate_json.hpp"
-#include "cli_output.hpp"
+
+#include "cli_options.hpp"
 #include "commands.hpp"
 
 namespace gyrores::cli {
@@ -19,11 +20,9 @@ struct certify_args {
 };
 
 std::string run_certify(const certify_args& a) {
-  if (a.digits < 1 || a.digits > 10000)
-    throw usage_error("--digits must be in [1, 10000], got " + std::to_string(a.digits));
-  resonant_pair<big_int> p(parse_big_int(a.tau, "TAU"), parse_big_int(a.sigma, "SIGMA"));
-  certificate c = certify_pair(p, unsigned(a.digits));
-  std::string text = json_dump(certificate_to_json(c)) + "\n";
+  check_digits_flag(a.digits, 1, 10000);
+  auto p = parse_pair_arguments(a.tau, a.sigma);
+  std::string text = json_dump(certificate_to_json(certify_pair(p, unsigned(a.digits)))) + "\n";
   if (a.out.empty()) return text;
   write_file_atomically(a.out, text);
   return "";
@@ -32,50 +31,53 @@ std::string run_certify(const certify_args& a) {
 command_runner install_certify(CLI::App& app) {
   auto a = std::make_shared<certify_args>();
   auto* sub = app.add_subcommand("certify", "Interval certificate of r_res, theta_first and t_first (qdot0 = 1)");
-  sub->add_option("TAU", a->tau, "tau (integer > sigma; any size)")->required();
-  sub->add_option("SIGMA", a->sigma, "sigma (integer >= 1, coprime to tau)")->required();
-  sub->add_option("--digits", a->digits, "correct digits every enclosure must reach (1..10000)")->capture_default_str();
+  add_pair_arguments(sub, a->tau, a->sigma);
+  add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1..10000)");
   sub->add_option("--out", a->out, "write the certificate to FILE (atomically) instead of stdout");
   return [a] { return run_certify(*a); };
 }
 
-struct check_args {
-  std::string file;
+// What `gyrores check` ends with: its exit status (0 holds, 1 fails, 2 unreadable or malformed)
+// and its one line (stdout when it holds, stderr otherwise).
+struct check_outcome {
+  int status = 0;
+  std::string line;
 };
 
-std::string run_check(const check_args& a) {
-  std::string text;
+check_outcome check_file(const std::string& file) {
   certificate c;
   try {
-    text = read_file(a.file);
-    c = certificate_from_text(text);
+    c = certificate_from_text(read_file(file));
   } catch (const usage_error& e) {
-    std::cerr << "gyrores check: unreadable or malformed: " << e.what() << "\n";
-    std::exit(2);
+    return {2, std::string("gyrores check: unreadable or malformed: ") + e.what()};
   }
   check_verdict v;
   try {
     v = check_certificate(c);
   } catch (const usage_error& e) {
-    std::cerr << "gyrores check: malformed: " << e.what() << "\n";
-    std::exit(2);
+    return {2, std::string("gyrores check: malformed: ") + e.what()};
   } catch (const compute_error& e) {
     v = {false, e.what()};
   }
-  if (!v.holds) {
-    std::cerr << "gyrores check: FAILS: " << v.failure << "\n";
-    std::exit(1);
-  }
-  return "gyrores check: certificate holds: " + std::string(c.global_minimality ? "r_res, theta_first, t_first of "
-                                                                                 : "r_res <= upper bound of ") +
-         resonant_pair<big_int>(c.tau, c.sigma).str() + " to " + std::to_string(c.digits) + " digits\n";
+  if (!v.holds) return {1, "gyrores check: FAILS: " + v.failure};
+  return {0, "gyrores check: certificate holds: " +
+                 std::string(c.global_minimality ? "r_res, theta_first, t_first of " : "r_res <= upper bound of ") +
+                 resonant_pair<big_int>(c.tau, c.sigma).str() + " to " + std::to_string(c.digits) + " digits"};
 }
 
 command_runner install_check(CLI::App& app) {
-  auto a = std::make_shared<check_args>();
+  auto file = std::make_shared<std::string>();
   auto* sub = app.add_subcommand("check", "Re-prove a certificate independently (exit 0 holds, 1 fails, 2 malformed)");
-  sub->add_option("FILE", a->file, "certificate written by gyrores certify")->required();
-  return [a] { return run_check(*a); };
+  sub->add_option("FILE", *file, "certificate written by gyrores certify")->required();
+  return [file] {
+    auto out = check_file(*file);
+    if (out.status != 0) {
+      // main.cpp maps exceptions to 2 and 3 only; exit 1 (fails) is check's own status.
+      std::cerr << out.line << "\n";
+      std::exit(out.status);
+    }
+    return out.line + "\n";
+  };
 }
 
 const command_registration reg_certify{"certify", install_certify};
