@@ -7,6 +7,7 @@
 #include <gyrores/core/real.hpp>             // real types (double ... mpfr_real, mpfi_real), conversions
 #include <gyrores/core/decimal.hpp>          // exact decimal output, Ziv rounding test, decimal input
 #include <gyrores/core/interval.hpp>         // MPFI helpers with tri-state decisions
+#include <gyrores/core/interval_newton.hpp>  // the interval Newton that proves a unique root
 #include <gyrores/core/rational.hpp>         // exact rationals: parsing, printing
 #include <gyrores/core/roots.hpp>            // the TOMS 748 wrapper, safeguarded Newton
 #include <gyrores/core/precision.hpp>        // the working type chosen from the digits asked
@@ -26,7 +27,11 @@
 #include <gyrores/inscribed/pair_analysis.hpp>  // everything reported about one pair
 #include <gyrores/inscribed/verified_pair.hpp>  // that report with verified digits
 // certificates
-#include <gyrores/certify/certificate.hpp>   // interval certificates and their checker
+#include <gyrores/certify/certificate.hpp>   // certificate data and options
+#include <gyrores/certify/proof_steps.hpp>   // the interval proof steps
+#include <gyrores/certify/cover.hpp>         // R > bound away from the minimiser's basins
+#include <gyrores/certify/certify.hpp>       // the producer: certify_pair
+#include <gyrores/certify/check.hpp>         // the checker: check_certificate
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
 #include <gyrores/design/coupling_report.hpp>  // the coupling analysis with verified digits

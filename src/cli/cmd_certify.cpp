@@ -1,7 +1,5 @@
 // gyrores certify TAU SIGMA [--digits D] [--out FILE]
 // gyrores check FILE        (exit 0: holds; 1: a claim or obligation fails; 2: unreadable/malformed)
-#include <cstdlib>
-#include <iostream>
 
 #include <gyrores/certify/check.hpp>
 #include <gyrores/certify/certify.hpp>
@@ -71,11 +69,7 @@ command_runner install_check(CLI::App& app) {
   sub->add_option("FILE", *file, "certificate written by gyrores certify")->required();
   return [file] {
     auto out = check_file(*file);
-    if (out.status != 0) {
-      // main.cpp maps exceptions to 2 and 3 only; exit 1 (fails) is check's own status.
-      std::cerr << out.line << "\n";
-      std::exit(out.status);
-    }
+    if (out.status != 0) throw command_exit{out.status, out.line};
     return out.line + "\n";
   };
 }

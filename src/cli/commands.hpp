@@ -11,6 +11,13 @@
 namespace gyrores::cli {
 
 using command_runner = std::function<std::string()>;
+
+// Thrown by a runner that ends with its own exit status and stderr line (gyrores check: 1 when
+// a certificate fails); main.cpp prints the line and returns the status.
+struct command_exit {
+  int status;
+  std::string message;
+};
 using command_installer = std::function<command_runner(CLI::App&)>;
 
 struct command_entry {

@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
       std::cout << out << std::flush;
     }
     return 0;
+  } catch (const command_exit& e) {
+    std::cerr << e.message << "\n";
+    return e.status;
   } catch (const gyrores::usage_error& e) {
     std::cerr << "gyrores: error: " << e.what() << "\n";
     return exit_usage;

@@ -1,8 +1,8 @@
 // JSON for gyrores' files and CLI output (nlohmann-json, insertion-ordered objects).
 //
 // Integers of any size: nlohmann-json holds 64 bits, so a big_int is emitted through a marker
-// string that json_dump() replaces by the bare digits (a JSON number of any length). Readers
-// that need such integers back take them from the text of the number (json_to_big_int).
+// string that json_dump() replaces by the bare digits (a JSON number of any length). Reading
+// them back needs the number's text, not nlohmann's double: see io/certificate_json.hpp.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
