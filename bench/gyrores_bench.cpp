@@ -11,18 +11,17 @@
 // Other options: --methods a,b  --pairs '(6,5),(9,4)'  --precisions double,mp1000 (subsets),
 // --python PATH (default $GYRORES_PYTHON or python3), --mpmath-script PATH, --no-mpmath, --list,
 // --check (exit 1 when a gyrores method fails or falls short of its precision's digits: the
-// ctest smoke test runs --quick --check).
+// ctest smoke test runs --quick --check). Bad options: a one-line error, exit 2.
 //
-// How a case is measured (speed_error/core.hpp): a pilot call computes the result, which is
-// scored against the reference (speed_error/reference.hpp); then Google Benchmark times the bare
-// computation: `iterations` calls per repetition (chosen from the pilot so that a repetition lasts
-// about rep_seconds), 5 repetitions (3 for calls over 0.5 s), run in interleaved rounds, median
-// of the per-call CPU times.
-#include <benchmark/benchmark.h>
+// How a case is measured (speed_error/core.hpp, speed_error/runner.hpp): a pilot call computes
+// the result, which is scored against the reference (speed_error/reference.hpp); then Google
+// Benchmark times the bare computation: `iterations` calls per repetition (chosen from the pilot
+// so that a repetition lasts about rep_seconds), 5 repetitions (3 for calls over 0.5 s), run in
+// interleaved rounds, median of the per-call CPU times.
+#include <CLI/CLI.hpp>
 #include <gmp.h>
 #include <mpfi.h>
 #include <mpfr.h>
-#include <time.h>
 
 #include <boost/version.hpp>
 #include <algorithm>
@@ -33,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -44,6 +44,7 @@
 #include "speed_error/peer_mpmath.hpp"
 #include "speed_error/reference.hpp"
 #include "speed_error/report.hpp"
+#include "speed_error/runner.hpp"
 
 #ifndef GYRORES_BENCH_FLAGS
 #define GYRORES_BENCH_FLAGS "?"
@@ -63,8 +64,9 @@ struct options {
   std::set<std::string> methods, pairs, precisions;
 };
 
+// The subsets of --methods, --pairs, --precisions: split on ',' outside parentheses (pairs
+// contain commas).
 std::set<std::string> split_list(const std::string& s) {
-  // Pairs contain commas: split on ',' outside parentheses.
   std::set<std::string> out;
   std::string cur;
   int depth = 0;
@@ -82,55 +84,51 @@ std::set<std::string> split_list(const std::string& s) {
   return out;
 }
 
-void usage() {
-  std::puts(
-      "usage: gyrores-bench [--quick] [--csv FILE] [--report FILE] [--plot-dir DIR]\n"
-      "                     [--methods LIST] [--pairs LIST] [--precisions LIST]\n"
-      "                     [--python PATH] [--mpmath-script PATH] [--no-mpmath] [--list]\n"
-      "Speed against error of every method computing r_res and its minimiser (see bench/RESULTS.md).\n"
-      "  --quick       the check: double and 1000 digits on (6,5), (10^12+1,10^12), (1000,1) (< 60 s)\n"
-      "  --csv FILE    one row per (method, precision, pair):\n"
-      "                method,precision,pair,median_ns,correct_digits,evaluations\n"
-      "  --report FILE the Markdown report (bench/RESULTS.md)\n"
-      "  --plot-dir D  write D/speed_vs_error.gp (run gnuplot there for the SVG and PNG)\n"
-      "  --list        print the cases and skipped combinations, run nothing\n"
-      "  --check       exit 1 if a gyrores method failed or fell short of its precision's digits");
+void add_options(CLI::App& app, options& o, std::string& methods, std::string& pairs, std::string& precisions) {
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.add_flag("--quick", o.quick,
+               "the check: double and 1000 digits on (6,5), (10^12+1,10^12), (1000,1) (< 60 s)");
+  app.add_option("--csv", o.csv,
+                 "one row per (method, precision, pair): method,precision,pair,median_ns,correct_digits,evaluations")
+      ->type_name("FILE");
+  app.add_option("--report", o.report, "the Markdown report (bench/RESULTS.md)")->type_name("FILE");
+  app.add_option("--plot-dir", o.plot_dir, "write DIR/speed_vs_error.gp (run gnuplot there for the SVG and PNG)")
+      ->type_name("DIR");
+  app.add_option("--methods", methods, "run only these methods, e.g. exact,global")->type_name("LIST");
+  app.add_option("--pairs", pairs, "run only these pairs, e.g. '(6,5),(9,4)'")->type_name("LIST");
+  app.add_option("--precisions", precisions, "run only these precisions, e.g. double,mp1000")->type_name("LIST");
+  app.add_option("--python", o.python, "the Python of the mpmath peer (default: $GYRORES_PYTHON or python3)")
+      ->type_name("PATH");
+  app.add_option("--mpmath-script", o.mpmath_script, "the mpmath peer's script (bench/mpmath_peer.py)")
+      ->type_name("PATH");
+  app.add_flag("--no-mpmath", o.no_mpmath, "do not run the mpmath peer");
+  app.add_flag("--list", o.list, "print the cases and skipped combinations, run nothing");
+  app.add_flag("--check", o.check, "exit 1 if a gyrores method failed or fell short of its precision's digits");
 }
 
-options parse(int argc, char** argv) {
-  options o;
+// The options, or the exit status when the run ends here (help: 0, bad options: 2).
+std::optional<int> parse(int argc, char** argv, options& o) {
+  CLI::App app{"Speed against error of every method computing r_res and its minimiser (see bench/RESULTS.md)",
+               "gyrores-bench"};
   const char* py = std::getenv("GYRORES_PYTHON");
   o.python = py ? py : "python3";
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "gyrores-bench: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--quick") o.quick = true;
-    else if (a == "--list") o.list = true;
-    else if (a == "--check") o.check = true;
-    else if (a == "--no-mpmath") o.no_mpmath = true;
-    else if (a == "--csv") o.csv = next();
-    else if (a == "--report") o.report = next();
-    else if (a == "--plot-dir") o.plot_dir = next();
-    else if (a == "--python") o.python = next();
-    else if (a == "--mpmath-script") o.mpmath_script = next();
-    else if (a == "--methods") o.methods = split_list(next());
-    else if (a == "--pairs") o.pairs = split_list(next());
-    else if (a == "--precisions") o.precisions = split_list(next());
-    else if (a == "--help" || a == "-h") {
-      usage();
-      std::exit(0);
-    } else {
-      std::fprintf(stderr, "gyrores-bench: unknown option %s (see --help)\n", a.c_str());
-      std::exit(2);
-    }
+  std::string methods, pairs, precisions;
+  add_options(app, o, methods, pairs, precisions);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    std::replace(msg.begin(), msg.end(), '\n', ' ');
+    std::fprintf(stderr, "gyrores-bench: error: %s (see --help)\n", msg.c_str());
+    return 2;
   }
-  return o;
+  o.methods = split_list(methods);
+  o.pairs = split_list(pairs);
+  o.precisions = split_list(precisions);
+  return std::nullopt;
 }
 
 bench_pair make_pair(const std::string& name, const std::string& group, const std::string& tau, const std::string& sigma) {
@@ -156,11 +154,45 @@ std::vector<precision> all_precisions() {
           {"mp1000", real_kind::mp, 1000},   {"mp10000", real_kind::mp, 10000}};
 }
 
-double thread_cpu_seconds() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+// ---- what runs ------------------------------------------------------------------------------
+
+bool wanted(const std::set<std::string>& subset, const std::string& name) { return subset.empty() || subset.count(name); }
+
+// The items of `all` (pairs, precisions, methods) in this run, in their order: with --quick only
+// those named in `quick_names`, and only those of `subset` when the option gave one.
+template <class Item>
+std::vector<Item> selected(const std::vector<Item>& all, bool quick, const std::set<std::string>& quick_names,
+                           const std::set<std::string>& subset) {
+  std::vector<Item> out;
+  for (const auto& item : all)
+    if ((!quick || quick_names.count(item.name)) && wanted(subset, item.name)) out.push_back(item);
+  return out;
 }
+
+std::vector<method_def> all_methods(const options& opt, const run_config& cfg) {
+  std::vector<method_def> all = library_methods(cfg);
+  if (!opt.quick)
+    for (auto& m : odeint_methods(cfg)) all.push_back(m);
+  for (auto& m : arb_methods(cfg)) all.push_back(m);
+  return all;
+}
+
+// Quick mode: 30 digits only for the certified-vs-uncertified pair of rows.
+bool quick_excluded(const options& opt, const method_def& m, const precision& pr) {
+  if (!opt.quick) return false;
+  if (pr.name == "mp30") return m.name != "certified" && m.name != "exact";
+  if (m.name == "certified") return pr.name != "mp30";
+  return false;
+}
+
+void print_list(const run_plan& plan) {
+  for (const auto& p : plan.cases)
+    std::printf("run  %-28s %-12s %s\n", p.method->name.c_str(), p.prec->name.c_str(), p.pair->name.c_str());
+  for (const auto& s : plan.skips)
+    std::printf("skip %-28s %-12s %-18s %s\n", s.method.c_str(), s.precision.c_str(), s.pair.c_str(), s.reason.c_str());
+}
+
+// ---- the run's context (machine, libraries) ---------------------------------------------------
 
 std::string read_first_line_matching(const std::string& file, const std::string& key) {
   std::ifstream f(file);
@@ -186,240 +218,59 @@ std::string load_average() {
   return buf;
 }
 
-// Collects the CPU time per call of every repetition (one Google Benchmark run per
-// repetition, named "<case>#<round>"); prints one line per run.
-class round_reporter : public benchmark::BenchmarkReporter {
- public:
-  std::map<std::string, std::vector<double>> ns;
-  bool ReportContext(const Context&) override { return true; }
-  void ReportRuns(const std::vector<Run>& runs) override {
-    for (const auto& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
-      const std::string full = r.run_name.function_name;
-      const std::string name = full.substr(0, full.rfind('#'));
-      const double t = r.GetAdjustedCPUTime() / benchmark::GetTimeUnitMultiplier(r.time_unit) * 1e9;
-      ns[name].push_back(t);
-      std::fprintf(stderr, "  %-56s %12s\n", full.c_str(), format_time(t).c_str());
-    }
-  }
-};
-
-double median_of(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+std::string library_versions() {
+  std::ostringstream lib;
+  lib << "Boost " << BOOST_VERSION / 100000 << '.' << BOOST_VERSION / 100 % 1000 << " (Math, Multiprecision, Odeint), "
+      << "GMP " << gmp_version << ", MPFR " << mpfr_get_version() << ", MPFI " << mpfi_get_version()
+      << ", Google Benchmark 1.7.1";
+  if (arb_available()) lib << ", " << arb_library_version();
+  else lib << ", Arb: not built (libflint-arb-dev missing; Arb rows skipped)";
+  return lib.str();
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  options opt = parse(argc, argv);
-  const auto t_start = std::chrono::steady_clock::now();
+run_context describe_run(int argc, char** argv, const options& opt) {
   run_context ctx;
   ctx.quick = opt.quick;
   ctx.load_before = load_average();
-  {
-    std::ostringstream cmd;
-    cmd << "gyrores-bench";
-    for (int i = 1; i < argc; ++i) cmd << ' ' << argv[i];
-    ctx.command = opt.report.empty() ? cmd.str() : "bench/run";
-  }
-  {
-    std::time_t now = std::time(nullptr);
-    char buf[64];
-    std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    ctx.date = buf;
-  }
+  std::ostringstream cmd;
+  cmd << "gyrores-bench";
+  for (int i = 1; i < argc; ++i) cmd << ' ' << argv[i];
+  ctx.command = opt.report.empty() ? cmd.str() : "bench/run";
+  std::time_t now = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  ctx.date = buf;
   ctx.cpu = read_first_line_matching("/proc/cpuinfo", "model name");
   ctx.cores = std::to_string(std::thread::hardware_concurrency());
   ctx.compiler = std::string("g++ ") + __VERSION__;
   ctx.flags = GYRORES_BENCH_FLAGS;
-  {
-    std::ostringstream lib;
-    lib << "Boost " << BOOST_VERSION / 100000 << '.' << BOOST_VERSION / 100 % 1000 << " (Math, Multiprecision, Odeint), "
-        << "GMP " << gmp_version << ", MPFR " << mpfr_get_version() << ", MPFI " << mpfi_get_version()
-        << ", Google Benchmark 1.7.1";
-    if (arb_available()) lib << ", " << arb_library_version();
-    else lib << ", Arb: not built (libflint-arb-dev missing; Arb rows skipped)";
-    ctx.libraries = lib.str();
-  }
+  ctx.libraries = library_versions();
+  return ctx;
+}
 
-  run_config cfg;
-  cfg.quick = opt.quick;
-  cfg.rep_seconds = opt.quick ? 0.01 : 0.02;
-  cfg.repetitions = 5;
+// ---- after the timing -----------------------------------------------------------------------
 
-  // Pairs, precisions and methods of this run.
-  std::vector<bench_pair> pairs;
-  for (auto& bp : all_pairs()) {
-    if (opt.quick && bp.name != "(6,5)" && bp.name != "(10^12+1,10^12)" && bp.name != "(1000,1)") continue;
-    if (!opt.pairs.empty() && !opt.pairs.count(bp.name)) continue;
-    pairs.push_back(bp);
-  }
-  std::vector<precision> precisions;
-  for (auto& pr : all_precisions()) {
-    if (opt.quick && pr.name != "double" && pr.name != "mp30" && pr.name != "mp1000") continue;
-    if (!opt.precisions.empty() && !opt.precisions.count(pr.name)) continue;
-    precisions.push_back(pr);
-  }
-  std::vector<method_def> methods;
-  for (auto& m : library_methods(cfg)) methods.push_back(m);
-  if (!opt.quick)
-    for (auto& m : odeint_methods(cfg)) methods.push_back(m);
-  for (auto& m : arb_methods(cfg)) methods.push_back(m);
-  const std::set<std::string> quick_methods{"theta_asy", "r_res_asy", "exact", "naive_toms748",
-                                            "one_eval",  "arb_newton", "certified"};
-  {
-    std::vector<method_def> kept;
-    for (auto& m : methods) {
-      if (opt.quick && !quick_methods.count(m.name)) continue;
-      if (!opt.methods.empty() && !opt.methods.count(m.name)) continue;
-      kept.push_back(m);
-    }
-    methods = kept;
-  }
-  // Quick mode: 30 digits only for the certified-vs-uncertified pair of rows.
-  auto quick_excluded = [&](const method_def& m, const precision& pr) {
-    if (!opt.quick) return false;
-    if (pr.name == "mp30") return m.name != "certified" && m.name != "exact";
-    if (m.name == "certified") return pr.name != "mp30";
-    return false;
-  };
-
-  // Cases and skips.
-  std::vector<skip_note> skips;
-  struct planned {
-    const method_def* m;
-    const bench_pair* bp;
-    const precision* pr;
-  };
-  std::vector<planned> plan;
-  // Pair-major order: the rows a headline compares (same pair and precision) run next to each other.
-  for (const auto& bp : pairs)
-    for (const auto& pr : precisions)
-      for (const auto& m : methods) {
-        if (quick_excluded(m, pr)) continue;
-        const std::string why = m.skip(bp, pr);
-        if (!why.empty()) skips.push_back({m.name, pr.name, bp.name, why});
-        else plan.push_back({&m, &bp, &pr});
-      }
-  if (opt.list) {
-    for (const auto& p : plan) std::printf("run  %-28s %-12s %s\n", p.m->name.c_str(), p.pr->name.c_str(), p.bp->name.c_str());
-    for (const auto& s : skips)
-      std::printf("skip %-28s %-12s %-18s %s\n", s.method.c_str(), s.precision.c_str(), s.pair.c_str(), s.reason.c_str());
-    return 0;
-  }
-
-  // References.
-  unsigned max_digits = 16;
-  for (const auto& pr : precisions) max_digits = std::max(max_digits, pr.digits);
-  ctx.reference_digits = max_digits + std::max(100u, max_digits / 10);
-  std::map<std::string, reference> refs;
-  {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (const auto& bp : pairs) {
-      std::fprintf(stderr, "reference %-18s at %u digits ...", bp.name.c_str(), ctx.reference_digits);
-      refs[bp.name] = compute_reference(bp, ctx.reference_digits);
-      std::fprintf(stderr, " %.2f s (%s)\n", refs[bp.name].seconds, refs[bp.name].global ? "global" : "local");
-    }
-    ctx.reference_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  }
-
-  // Pilots: result, score, cost per call.
-  std::vector<measurement> rows;
-  std::vector<bench_case> cases;
-  std::vector<std::size_t> row_of_case;
-  std::fprintf(stderr, "pilots (%zu cases) ...\n", plan.size());
-  for (const auto& p : plan) {
-    measurement m;
-    m.method = p.m->name;
-    m.precision = p.pr->name;
-    m.pair = p.bp->name;
-    try {
-      bench_case c = p.m->make(*p.bp, *p.pr, refs.at(p.bp->name));
-      double t0 = thread_cpu_seconds();
-      outcome o = c.pilot();
-      double one = thread_cpu_seconds() - t0;
-      if (one < 0.2) {  // a second, bare call: first calls pay for caches (e.g. MPFR's pi)
-        t0 = thread_cpu_seconds();
-        c.timed();
-        one = thread_cpu_seconds() - t0;
-      }
-      score(m, o, refs.at(p.bp->name));
-      m.repetitions = one > 0.5 ? 3 : cfg.repetitions;
-      m.iterations = std::max<std::int64_t>(1, std::int64_t(cfg.rep_seconds / std::max(one, 1e-9)));
-      row_of_case.push_back(rows.size());
-      cases.push_back(std::move(c));
-    } catch (const std::exception& e) {
-      m.failed = true;
-      m.note = e.what();
-      m.digits_theta = m.digits_r = 0;
-      std::fprintf(stderr, "  %-28s %-12s %-18s FAILED: %s\n", m.method.c_str(), m.precision.c_str(), m.pair.c_str(),
-                   e.what());
-    }
-    rows.push_back(m);
-  }
-
-  // Timing: one Google Benchmark run over every case, in rounds: round r runs repetition r of
-  // every case (in the pair-major order), so slow drifts of the shared machine's load affect
-  // every case alike instead of whichever ran during a busy minute.
-  {
-    int bargc = 1;
-    char arg0[] = "gyrores-bench";
-    char* bargv[] = {arg0, nullptr};
-    benchmark::Initialize(&bargc, bargv);
-    int rounds = 0;
-    for (std::size_t i = 0; i < cases.size(); ++i) rounds = std::max(rounds, rows[row_of_case[i]].repetitions);
-    for (int round = 0; round < rounds; ++round)
-      for (std::size_t i = 0; i < cases.size(); ++i) {
-        const measurement& m = rows[row_of_case[i]];
-        if (round >= m.repetitions) continue;
-        const std::string name = m.method + " " + m.precision + " " + m.pair + "#" + std::to_string(round);
-        auto fn = cases[i].timed;
-        benchmark::RegisterBenchmark(name.c_str(), [fn](benchmark::State& st) {
-          for (auto _ : st) fn();
-        })
-            ->Iterations(m.iterations)
-            ->Unit(benchmark::kNanosecond);
-      }
-    std::fprintf(stderr, "timing (%zu cases, %d rounds) ...\n", cases.size(), rounds);
-    round_reporter rep;
-    benchmark::RunSpecifiedBenchmarks(&rep);
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-      measurement& m = rows[row_of_case[i]];
-      auto it = rep.ns.find(m.method + " " + m.precision + " " + m.pair);
-      if (it != rep.ns.end() && !it->second.empty()) {
-        m.median_ns = median_of(it->second);
-        m.repetitions = int(it->second.size());
-      }
-    }
-    benchmark::Shutdown();
-  }
-
-  // Peer (b): mpmath, in the same run.
-  if (!opt.quick && !opt.no_mpmath && (opt.methods.empty() || opt.methods.count("mpmath_findroot"))) {
-    std::string script = opt.mpmath_script;
-    if (!std::filesystem::exists(script)) {
-      auto alt = std::filesystem::path(argv[0]).parent_path() / "../share/gyrores/mpmath_peer.py";
-      if (std::filesystem::exists(alt)) script = alt.string();
-    }
-    std::fprintf(stderr, "mpmath peer ...\n");
-    auto mp = run_mpmath_peer(opt.python, script, pairs, precisions, refs);
-    ctx.mpmath_status = mp.status;
-    for (auto& m : mp.rows) rows.push_back(m);
-  } else {
+// Peer (b): mpmath, in the same run (not in --quick, nor with --no-mpmath or a --methods list
+// without it). Its rows are appended to `rows`.
+void run_mpmath(const options& opt, const char* argv0, const std::vector<bench_pair>& pairs,
+                const std::vector<precision>& precisions, const std::map<std::string, reference>& refs,
+                run_context& ctx, std::vector<measurement>& rows) {
+  if (opt.quick || opt.no_mpmath || !wanted(opt.methods, "mpmath_findroot")) {
     ctx.mpmath_status = opt.quick ? "not part of --quick" : "disabled (--no-mpmath or --methods)";
+    return;
   }
+  std::string script = opt.mpmath_script;
+  if (!std::filesystem::exists(script)) {
+    auto alt = std::filesystem::path(argv0).parent_path() / "../share/gyrores/mpmath_peer.py";
+    if (std::filesystem::exists(alt)) script = alt.string();
+  }
+  std::fprintf(stderr, "mpmath peer ...\n");
+  auto mp = run_mpmath_peer(opt.python, script, pairs, precisions, refs);
+  ctx.mpmath_status = mp.status;
+  for (auto& m : mp.rows) rows.push_back(m);
+}
 
-  ctx.load_after = load_average();
-  ctx.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-
-  // Outputs.
-  if (!opt.csv.empty()) write_csv(opt.csv, rows);
-  if (!opt.report.empty()) write_markdown(opt.report, ctx, rows, skips, methods, pairs, precisions, refs);
-  if (!opt.plot_dir.empty()) write_plot_script(opt.plot_dir, ctx, rows, methods, pairs);
-
-  // Console summary.
+void print_summary(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs, const run_context& ctx) {
   std::printf("%-28s %-12s %-18s %12s %8s %8s %8s %8s\n", "method", "precision", "pair", "median", "digits", "theta",
               "r_res", "evals");
   for (const auto& m : rows)
@@ -435,25 +286,75 @@ int main(int argc, char** argv) {
   }
   std::printf("\ntotal %.1f s (references %.1f s), load average %s -> %s\n", ctx.seconds, ctx.reference_seconds,
               ctx.load_before.c_str(), ctx.load_after.c_str());
-  if (opt.check) {
-    // The library's exact methods must deliver their precision: digits >= nominal - 1.5
-    // (certificates: at least the digits they claim).
-    int bad = 0;
-    const std::set<std::string> exact_methods{"exact", "newton_doubling", "toms748_local", "global", "certified"};
-    for (const auto& m : rows) {
-      if (!exact_methods.count(m.method)) continue;
-      double nominal = 0;
-      for (const auto& pr : precisions)
-        if (pr.name == m.precision) nominal = pr.digits;
-      const double need = m.method == "certified" ? nominal : nominal - 1.5;
-      if (m.failed || !(m.digits() >= need) || !(m.median_ns > 0)) {
-        std::printf("CHECK FAILED: %s %s %s: %s digits (need %.1f)%s\n", m.method.c_str(), m.precision.c_str(),
-                    m.pair.c_str(), format_digits(m.digits()).c_str(), need, m.failed ? (" " + m.note).c_str() : "");
-        ++bad;
-      }
+}
+
+// --check: the library's exact methods must deliver their precision: digits >= nominal - 1.5
+// (certificates: at least the digits they claim). Prints each short row; returns their count.
+int check_rows(const std::vector<measurement>& rows, const std::vector<precision>& precisions) {
+  int bad = 0;
+  const std::set<std::string> exact_methods{"exact", "newton_doubling", "toms748_local", "global", "certified"};
+  for (const auto& m : rows) {
+    if (!exact_methods.count(m.method)) continue;
+    double nominal = 0;
+    for (const auto& pr : precisions)
+      if (pr.name == m.precision) nominal = pr.digits;
+    const double need = m.method == "certified" ? nominal : nominal - 1.5;
+    if (m.failed || !(m.digits() >= need) || !(m.median_ns > 0)) {
+      std::printf("CHECK FAILED: %s %s %s: %s digits (need %.1f)%s\n", m.method.c_str(), m.precision.c_str(),
+                  m.pair.c_str(), format_digits(m.digits()).c_str(), need, m.failed ? (" " + m.note).c_str() : "");
+      ++bad;
     }
-    std::printf("check: %d of the library's rows short of their precision\n", bad);
-    return bad ? 1 : 0;
   }
+  std::printf("check: %d of the library's rows short of their precision\n", bad);
+  return bad;
+}
+
+// Reference digits: beyond the most precise result measured.
+unsigned reference_digits_for(const std::vector<precision>& precisions) {
+  unsigned max_digits = 16;
+  for (const auto& pr : precisions) max_digits = std::max(max_digits, pr.digits);
+  return max_digits + std::max(100u, max_digits / 10);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  options opt;
+  if (auto status = parse(argc, argv, opt)) return *status;
+  const auto t_start = std::chrono::steady_clock::now();
+  run_context ctx = describe_run(argc, argv, opt);
+  run_config cfg;
+  cfg.quick = opt.quick;
+  cfg.rep_seconds = opt.quick ? 0.01 : 0.02;
+  cfg.repetitions = 5;
+
+  const std::vector<bench_pair> pairs =
+      selected(all_pairs(), opt.quick, {"(6,5)", "(10^12+1,10^12)", "(1000,1)"}, opt.pairs);
+  const std::vector<precision> precisions = selected(all_precisions(), opt.quick, {"double", "mp30", "mp1000"}, opt.precisions);
+  const std::vector<method_def> methods =
+      selected(all_methods(opt, cfg), opt.quick,
+               {"theta_asy", "r_res_asy", "exact", "naive_toms748", "one_eval", "arb_newton", "certified"}, opt.methods);
+  const run_plan plan = plan_cases(pairs, precisions, methods, [&](const method_def& m, const precision& pr) {
+    return quick_excluded(opt, m, pr);
+  });
+  if (opt.list) {
+    print_list(plan);
+    return 0;
+  }
+
+  ctx.reference_digits = reference_digits_for(precisions);
+  const auto refs = compute_references(pairs, ctx.reference_digits, ctx.reference_seconds);
+  piloted_run run = run_pilots(plan, refs, cfg);
+  time_cases(run);
+  std::vector<measurement>& rows = run.rows;
+  run_mpmath(opt, argv[0], pairs, precisions, refs, ctx, rows);
+  ctx.load_after = load_average();
+  ctx.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+
+  if (!opt.csv.empty()) write_csv(opt.csv, rows);
+  if (!opt.report.empty()) write_markdown(opt.report, ctx, rows, plan.skips, methods, pairs, precisions, refs);
+  if (!opt.plot_dir.empty()) write_plot_script(opt.plot_dir, ctx, rows, methods, pairs);
+  print_summary(rows, pairs, ctx);
+  if (opt.check) return check_rows(rows, precisions) ? 1 : 0;
   return 0;
 }

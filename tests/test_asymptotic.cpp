@@ -17,6 +17,7 @@
 #include <gyrores/inscribed/asymptotic.hpp>
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/inscribed/global_search.hpp>
+#include "testing/naive_forms.hpp"
 #include "testing/test_support.hpp"
 
 using namespace gyrores;
@@ -27,11 +28,10 @@ namespace {
 using P64 = resonant_pair<std::int64_t>;
 using PB = resonant_pair<big_int>;
 
-// Naive q'(theta) = dq/dt in the resonant time (docs/mathematics.md §1), in mpfr at the current precision.
+// Naive q'(theta) = dq/dt in the resonant time (src/testing/naive_forms.hpp, docs/mathematics.md
+// §1), in mpfr at the current precision.
 mpfr_real naive_qdot(long tau, long sigma, const mpfr_real& th, const mpfr_real& v) {
-  mpfr_real t(tau), s(sigma);
-  mpfr_real rho0 = v * sqrt(t * s) / (t + s);
-  return rho0 * (sqrt(t / s) * cos(t * th) + sqrt(s / t) * cos(s * th));
+  return gyrores::test::naive_forms<mpfr_real>(mpfr_real(tau), mpfr_real(sigma), v).qdot(th);
 }
 
 const asymptotic_lobe<double>& lobe_k(const asymptotic_report<double>& r, long k) {

@@ -7,8 +7,9 @@
 
 #include <iostream>
 #include <numeric>
-#include <sstream>
 #include <random>
+#include <sstream>
+#include <vector>
 
 #include <gyrores/inscribed/cross_check.hpp>
 #include <gyrores/model/enumerate.hpp>
@@ -121,22 +122,47 @@ TEST_CASE("lattice = global search on random pairs up to order 3000 (double, fix
   CHECK(done == count);
 }
 
-TEST_CASE("lattice_options{window_always = true} agrees with the default path up to order 200", "[lattice]") {
-  gyrores::lattice_options win;
-  win.window_always = true;
+namespace {
+
+// inscribed_lattice with `opt` against the default on every pair of `pairs` in T: the same
+// number of minimisers, r_res and every minimiser within a relative `tol`. Records each mismatch
+// (at most 10) and returns their count.
+template <class T, class Pairs> std::size_t option_mismatches(const gyrores::lattice_options& opt, const Pairs& pairs,
+                                                              const T& tol) {
   std::size_t failures = 0;
-  for (pair64 p : gyrores::coprime_pairs(3, 200)) {
-    auto d = gyrores::inscribed_lattice<double>(p, 1.0);
-    auto w = gyrores::inscribed_lattice<double>(p, 1.0, win);
-    bool ok = d.minimisers.size() == w.minimisers.size() && gyrores::test::rel_error(d.r_res, w.r_res) <= 1e-13;
+  for (pair64 p : pairs) {
+    auto d = gyrores::inscribed_lattice<T>(p, T(1));
+    auto o = gyrores::inscribed_lattice<T>(p, T(1), opt);
+    bool ok = d.minimisers.size() == o.minimisers.size() && gyrores::test::rel_error(d.r_res, o.r_res) <= tol;
     for (std::size_t k = 0; ok && k < d.minimisers.size(); ++k)
-      ok = gyrores::test::rel_error(d.minimisers[k], w.minimisers[k]) <= 1e-13;
+      ok = gyrores::test::rel_error(d.minimisers[k], o.minimisers[k]) <= tol;
     if (!ok) {
-      FAIL_CHECK("pair " << p.str() << ": default r_res " << d.r_res << ", window r_res " << w.r_res);
+      FAIL_CHECK("pair " << p.str() << " in " << gyrores::real_type_name<T>() << ": default r_res " << d.r_res
+                         << ", with the option r_res " << o.r_res);
       if (++failures >= 10) break;
     }
   }
-  CHECK(failures == 0);
+  return failures;
+}
+
+}  // namespace
+
+TEST_CASE("lattice_options{window_always = true} agrees with the default path up to order 200", "[lattice]") {
+  gyrores::lattice_options win;
+  win.window_always = true;
+  CHECK(option_mismatches<double>(win, gyrores::coprime_pairs(3, 200), 1e-13) == 0);
+}
+
+// The benchmark's "TOMS 748 in local coordinates" (bench/speed_error/methods_library.cpp) is
+// this option: TOMS 748 in T at the lattice method's bracket, no double scout, no Newton.
+TEST_CASE("lattice_solver::toms748_full agrees with the default solver up to order 200 and at 30 digits",
+          "[lattice]") {
+  const gyrores::lattice_options full{.solver = gyrores::lattice_solver::toms748_full};
+  CHECK(option_mismatches<double>(full, gyrores::coprime_pairs(3, 200), 1e-12) == 0);
+  scoped_digits d(30);
+  const std::vector<pair64> few{pair64(6, 5),   pair64(9, 4),    pair64(5, 1),  pair64(101, 100),
+                                pair64(1000, 1), pair64(101, 37), pair64(11, 9), pair64(1000001, 1000000)};
+  CHECK(option_mismatches<mpfr_real>(full, few, mpfr_real("1e-28")) == 0);
 }
 
 TEST_CASE("cross_check_lattice accepts a true result and rejects tampered ones", "[lattice][cross_check]") {

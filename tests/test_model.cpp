@@ -2,7 +2,7 @@
 //
 // Oracles: the matrix exponential of the 4x4 skew-symmetric system matrix (Taylor series plus
 // squaring in MPFR, independent of the closed form), central finite differences of the ODE, the
-// naive resonant forms of tests/reference.hpp, and exact identities evaluated at high precision.
+// naive resonant forms of src/testing/naive_forms.hpp, and exact identities evaluated at high precision.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -28,15 +28,6 @@ using gyrores::scoped_digits;
 namespace {
 constexpr std::uint64_t kSeed = 977u;
 
-// Sets mpfr_real's precision for a scope; a no-op for fixed-precision types.
-template <class T> struct precision_scope {
-  explicit precision_scope(unsigned) {}
-};
-template <> struct precision_scope<mpfr_real> {
-  scoped_digits d;
-  explicit precision_scope(unsigned digits) : d(digits) {}
-};
-
 // Unit roundoff of T (for mpfr_real: 10^(1 - digits10), slightly looser than 2^(1 - bits)).
 template <class T> T eps_of() {
   if constexpr (std::is_same_v<T, mpfr_real>) {
@@ -45,8 +36,6 @@ template <class T> T eps_of() {
     return std::numeric_limits<T>::epsilon();
   }
 }
-
-template <class T> T pi_of() { return boost::math::constants::pi<T>(); }
 
 template <class T> T absv(const T& x) { return x < 0 ? T(-x) : x; }
 
@@ -114,7 +103,7 @@ const pair_row kPairs[] = {{2, 1}, {3, 2}, {4, 1}, {5, 2}, {6, 5}, {9, 4}, {5, 1
 TEMPLATE_TEST_CASE("modal frequencies: W1 W2 = 1 and W1 - W2 = n for any coupling", "[model]", double, long double,
                    float128, mpfr_real) {
   using T = TestType;
-  precision_scope<T> scope(50);
+  gyrores::test::precision_scope scope(gyrores::is_mpfr_v<T>, 50);
   const T eps = eps_of<T>();
   const char* ns[] = {"0", "1e-12", "1e-8", "0.1", "0.18257418583505537", "0.5", "1", "2", "10", "1e3", "1e8", "1e12"};
   for (const char* text : ns) {
@@ -143,7 +132,7 @@ TEMPLATE_TEST_CASE("resonance condition (P1): n = (tau - sigma)/sqrt(tau sigma) 
                    double, long double, float128, mpfr_real) {
   using T = TestType;
   using std::sqrt;
-  precision_scope<T> scope(50);
+  gyrores::test::precision_scope scope(gyrores::is_mpfr_v<T>, 50);
   const T eps = eps_of<T>();
   for (const auto& r : kPairs) {
     INFO("(" << r.tau << ", " << r.sigma << ")");
@@ -288,7 +277,7 @@ TEST_CASE("resonant forms equal the impulse response at t = sqrt(tau sigma) thet
   const mpfr_real tol("1e-38");
   std::mt19937_64 rng(kSeed);
   INFO("seed " << kSeed);
-  const mpfr_real pi = pi_of<mpfr_real>();
+  const mpfr_real pi = boost::math::constants::pi<mpfr_real>();
   for (const auto& r : kPairs) {
     INFO("(" << r.tau << ", " << r.sigma << ")");
     resonant_pair<std::int64_t> p(r.tau, r.sigma);
@@ -341,7 +330,7 @@ TEST_CASE("resonant forms equal the impulse response at t = sqrt(tau sigma) thet
 TEST_CASE("R(2 pi - theta) = R(theta); R(theta + pi) = R(theta) only for odd tau, sigma", "[model][symmetry]") {
   scoped_digits d(50);
   const mpfr_real v(1);
-  const mpfr_real pi = pi_of<mpfr_real>();
+  const mpfr_real pi = boost::math::constants::pi<mpfr_real>();
   const mpfr_real tol("1e-40");
   std::mt19937_64 rng(kSeed + 1);
   INFO("seed " << (kSeed + 1));

@@ -6,13 +6,17 @@
 #include <optional>
 #include <string>
 
+#include <gyrores/model/resonant.hpp>
+
 #include "core.hpp"
+#include "testing/test_support.hpp"  // src/testing/: precision_scope
 
 namespace gyrores::bench {
 
 template <class T> struct type_tag {
   using type = T;
 };
+template <class Tag> using real_of = typename Tag::type;
 
 // Calls fn(type_tag<T>{}) for the real type of `pr`.
 template <class Fn> auto dispatch_real(const precision& pr, Fn&& fn) {
@@ -25,41 +29,53 @@ template <class Fn> auto dispatch_real(const precision& pr, Fn&& fn) {
   return fn(type_tag<mpfr_real>{});
 }
 
-// The MPFR default precision for the duration of one call (no-op for fixed types).
-class precision_scope {
- public:
-  precision_scope(bool mp, unsigned digits) {
-    if (mp) s_.emplace(digits);
-  }
-
- private:
-  std::optional<scoped_digits> s_;
-};
+// A case with its labels and no closures yet.
+inline bench_case new_case(const std::string& method, const precision& pr, const bench_pair& bp) {
+  bench_case c;
+  c.method = method;
+  c.precision = pr.name;
+  c.pair = bp.name;
+  return c;
+}
 
 // compute(): the measured computation; convert(result): outcome (untimed). Both run inside
 // the precision scope of `pr`.
 template <class Compute, class Convert>
 bench_case make_case(const std::string& method, const precision& pr, const bench_pair& bp, Compute compute,
                      Convert convert) {
-  bench_case c;
-  c.method = method;
-  c.precision = pr.name;
-  c.pair = bp.name;
+  bench_case c = new_case(method, pr, bp);
   const bool mp = pr.is_mp();
   const unsigned d = pr.digits;
   c.timed = [=] {
-    precision_scope s(mp, d);
+    test::precision_scope s(mp, d);
     auto r = compute();
     benchmark::DoNotOptimize(r);
   };
   c.pilot = [=] {
-    precision_scope s(mp, d);
+    test::precision_scope s(mp, d);
     auto r = compute();
     return convert(r);
   };
   return c;
 }
 
-inline std::string join_reason(const std::string& a, const std::string& b) { return a.empty() ? b : a; }
+// make_case in the real type T of `pr`: compute(type_tag<T>) is measured, convert(result) makes
+// the outcome (untimed; a generic lambda, it receives the result in T).
+template <class Compute, class Convert>
+bench_case typed_case(const std::string& method, const precision& pr, const bench_pair& bp, Compute compute,
+                      Convert convert) {
+  return dispatch_real(pr, [&](auto tag) {
+    return make_case(method, pr, bp, [compute, tag] { return compute(tag); }, convert);
+  });
+}
+
+// The lattice method's first minimiser in double: its lobe frame and local coordinate u (the
+// start of the root refiners that skip the scout: newton_doubling, Arb).
+struct first_minimiser {
+  lobe_frame<big_int> frame;
+  double u;
+};
+first_minimiser first_minimiser_of(const bench_pair& bp);
+
 
 }  // namespace gyrores::bench

@@ -126,9 +126,9 @@ struct arb_inputs {
 };
 
 arb_inputs inputs_of(const bench_pair& bp, const precision& pr) {
-  auto r0 = inscribed_lattice<double>(bp.p, 1.0);
+  const first_minimiser fm = first_minimiser_of(bp);
   scoped_digits d(pr.digits);
-  return {bp.order(), bp.delta(), r0.first.k, r0.first.j, r0.first.m, r0.first.u, slong(real_bits<mpfr_real>())};
+  return {bp.order(), bp.delta(), fm.frame.k, fm.frame.j, fm.frame.m, fm.u, slong(real_bits<mpfr_real>())};
 }
 
 struct refine_result {
@@ -165,83 +165,86 @@ std::string skip_arb(const bench_pair&, const precision& pr) {
   return "";
 }
 
+// theta of the refined root (untimed), and a note when Arb did not deliver the precision.
+outcome arb_newton_outcome(const arb_inputs& in, const resonant_pair<big_int>& p, unsigned digits) {
+  auto r = arb_refine(in);
+  scoped_digits d(digits);
+  mpfr_real u;
+  arf_get_mpfr(u.backend().data(), arb_midref(r.root->v), MPFR_RNDN);
+  auto cst = resonant_constants_of<mpfr_real>(p, mpfr_real(1));
+  const lobe_frame<big_int> f{in.k, in.j, in.m};
+  outcome o;
+  o.theta = real_text(lobe_theta(cst, f, in.a, u));
+  o.evaluations = r.evaluations;
+  const slong acc = arb_rel_accuracy_bits(r.root->v);
+  if (r.status != ARB_CALC_SUCCESS || acc + 64 < in.prec)
+    o.note = "Arb status " + std::to_string(r.status) + ", enclosure of " + std::to_string(acc) + " bits";
+  return o;
+}
+
+bench_case arb_newton_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const arb_inputs in = inputs_of(bp, pr);
+  const auto p = bp.p;
+  const unsigned digits = pr.digits;
+  bench_case c = new_case("arb_newton", pr, bp);
+  c.timed = [in] { benchmark::DoNotOptimize(arb_refine(in)); };
+  c.pilot = [in, p, digits] { return arb_newton_outcome(in, p, digits); };
+  return c;
+}
+
+// One evaluation of q' and q'' at the double root, with the problem set up once.
+struct one_eval_state {
+  lobe_problem P;
+  arb_ball u;
+  arb_struct out[2];
+  one_eval_state() {
+    arb_init(out + 0);
+    arb_init(out + 1);
+  }
+  ~one_eval_state() {
+    arb_clear(out + 0);
+    arb_clear(out + 1);
+  }
+  one_eval_state(const one_eval_state&) = delete;
+  one_eval_state& operator=(const one_eval_state&) = delete;
+};
+
+bench_case arb_one_eval_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const arb_inputs in = inputs_of(bp, pr);
+  auto st = std::make_shared<one_eval_state>();
+  {
+    fmpz_int a(in.a), b(in.b), m(in.m);
+    st->P.set(a.v, b.v, m.v, in.prec);
+    arb_set_d(st->u.v, in.u0);
+  }
+  bench_case c = new_case("arb_one_eval", pr, bp);
+  const slong prec = in.prec;
+  c.timed = [st, prec] {
+    lobe_qdot(st->out, st->u.v, &st->P, 2, prec);
+    benchmark::DoNotOptimize(st->out);
+  };
+  c.pilot = [st, prec] {
+    lobe_qdot(st->out, st->u.v, &st->P, 2, prec);
+    outcome o;
+    o.evaluations = 1;
+    return o;
+  };
+  return c;
+}
+
 }  // namespace
 
 std::vector<method_def> arb_methods(const run_config&) {
-  std::vector<method_def> out;
-  out.push_back(
+  return {
       {"arb_newton", "arb",
        "peer (d): Arb's arb_calc_refine_root_newton on q' in the first minimiser's lobe frame (local coordinates), "
        "from the double root (ball of relative radius 2^-40), convergence factor at 64 bits; the root alone",
-       skip_arb, [](const bench_pair& bp, const precision& pr, const reference&) {
-         const arb_inputs in = inputs_of(bp, pr);
-         const auto p = bp.p;
-         bench_case c;
-         c.method = "arb_newton";
-         c.precision = pr.name;
-         c.pair = bp.name;
-         c.timed = [in] { benchmark::DoNotOptimize(arb_refine(in)); };
-         const unsigned digits = pr.digits;
-         c.pilot = [in, p, digits] {
-           auto r = arb_refine(in);
-           scoped_digits d(digits);
-           mpfr_real u;
-           arf_get_mpfr(u.backend().data(), arb_midref(r.root->v), MPFR_RNDN);
-           auto cst = resonant_constants_of<mpfr_real>(p, mpfr_real(1));
-           const lobe_frame<big_int> f{in.k, in.j, in.m};
-           outcome o;
-           o.theta = real_text(lobe_theta(cst, f, in.a, u));
-           o.evaluations = r.evaluations;
-           const slong acc = arb_rel_accuracy_bits(r.root->v);
-           if (r.status != ARB_CALC_SUCCESS || acc + 64 < in.prec)
-             o.note = "Arb status " + std::to_string(r.status) + ", enclosure of " + std::to_string(acc) + " bits";
-           return o;
-         };
-         return c;
-       }});
-  out.push_back(
+       skip_arb, arb_newton_case},
       {"arb_one_eval", "arb_one_eval",
        "one Arb evaluation of q' and its derivative (two arb_sin_cos) at the first minimiser: Arb's counterpart "
        "of one_eval",
-       skip_arb, [](const bench_pair& bp, const precision& pr, const reference&) {
-         const arb_inputs in = inputs_of(bp, pr);
-         struct state {
-           lobe_problem P;
-           arb_ball u;
-           arb_struct out[2];
-           state() {
-             arb_init(out + 0);
-             arb_init(out + 1);
-           }
-           ~state() {
-             arb_clear(out + 0);
-             arb_clear(out + 1);
-           }
-         };
-         auto st = std::make_shared<state>();
-         {
-           fmpz_int a(in.a), b(in.b), m(in.m);
-           st->P.set(a.v, b.v, m.v, in.prec);
-           arb_set_d(st->u.v, in.u0);
-         }
-         bench_case c;
-         c.method = "arb_one_eval";
-         c.precision = pr.name;
-         c.pair = bp.name;
-         const slong prec = in.prec;
-         c.timed = [st, prec] {
-           lobe_qdot(st->out, st->u.v, &st->P, 2, prec);
-           benchmark::DoNotOptimize(st->out);
-         };
-         c.pilot = [st, prec] {
-           lobe_qdot(st->out, st->u.v, &st->P, 2, prec);
-           outcome o;
-           o.evaluations = 1;
-           return o;
-         };
-         return c;
-       }});
-  return out;
+       skip_arb, arb_one_eval_case},
+  };
 }
 
 #endif

@@ -1,9 +1,12 @@
+// speed_error/reference.hpp: the references (src/testing/high_precision_reference.hpp) as decimal
+// text, and the error metric.
 #include "reference.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
+#include <gyrores/inscribed/asymptotic.hpp>
 #include <gyrores/inscribed/lattice.hpp>
 #include "testing/high_precision_reference.hpp"  // src/testing/: the independent reference
 
@@ -17,40 +20,12 @@ std::string text_digits(const mpfr_real& v, unsigned digits) {
   return v.str(std::streamsize(digits), std::ios_base::scientific);
 }
 
-// The paper's lobe index: k = round(a/(2b)), the smaller one on a tie (a/(2b) = K + 1/2).
-big_int paper_k(const big_int& a, const big_int& b) {
-  big_int twob = 2 * b;
-  big_int r = a % twob;
-  if (r == b) return (a - b) / twob;
-  return (a + b) / twob;  // floor((a + b)/(2b)) = round(a/(2b)), a, b > 0
-}
-
-// theta_c: the root of q' inside the lobe |a theta/2 - k pi| < pi/2 (see the header).
+// theta_c: the root of q' inside the paper's lobe |a theta/2 - k pi| < pi/2, k = round(a/(2b))
+// (the smaller on a tie).
 std::string lobe_root_reference(const bench_pair& bp, unsigned digits) {
-  namespace hp = gyrores::test::hp;
-  const big_int tau = bp.p.tau(), sigma = bp.p.sigma(), a = tau + sigma, b = tau - sigma;
-  const big_int k = paper_k(a, b);
-  const unsigned a_bits = bit_length(a);
-  const big_int ilo = ((2 * k - 1) * tau) / a, ihi = ((2 * k + 1) * tau) / a;  // floors (k >= 1)
-  const unsigned low_bits = 2 * a_bits + 160;
-  big_int found = -1;
-  int count = 0;
-  for (big_int i = ilo; i <= ihi; ++i) {
-    auto r = hp::detail::refine(tau, sigma, 0, i, a_bits, 64, low_bits);
-    gyrores::scoped_digits d(gyrores::digits10_for_bits(low_bits));
-    const mpfr_real pi = boost::math::constants::pi<mpfr_real>();
-    const mpfr_real alpha = mpfr_real(a) * r.theta / 2 - mpfr_real(k) * pi;
-    if (abs(alpha) < pi / 2) {
-      found = i;
-      ++count;
-    }
-  }
-  if (count != 1)
-    throw std::logic_error("reference: " + std::to_string(count) + " roots of q' in the paper's lobe of " + bp.name);
-  const unsigned want_bits = unsigned(std::ceil(digits * 3.3219280948873623)) + 8;
-  const unsigned full_bits = want_bits + 2 * a_bits + 96;
-  auto r = hp::detail::refine(tau, sigma, 0, found, a_bits, want_bits, full_bits);
-  gyrores::scoped_digits d(gyrores::digits10_for_bits(full_bits));
+  const big_int k = paper_fast_node(bp.order(), bp.delta()).k;
+  const auto r = test::hp::hp_lobe_root(bp.p.tau(), bp.p.sigma(), k, digits);
+  gyrores::scoped_digits d(gyrores::digits10_for_bits(r.bits));
   return text_digits(r.theta, digits + 10);
 }
 
@@ -80,8 +55,7 @@ reference compute_reference(const bench_pair& bp, unsigned digits) {
     ref.r_res = text_digits(h.r_res, digits + 10);
     ref.theta_first = text_digits(h.theta_first, digits + 10);
     for (const auto& m : h.minimisers) ref.minimisers.push_back(text_digits(m, digits + 10));
-    const mpfr_real pi = boost::math::constants::pi<mpfr_real>();
-    ref.first_half_period = hp::detail::floor_to_int(h.theta_first * mpfr_real(tau) / pi);
+    ref.first_half_period = h.first_half_period;
   }
   if (bp.small_x()) ref.theta_c = lobe_root_reference(bp, digits);
   ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -1,5 +1,6 @@
 // Writers: the raw CSV, the Markdown report (bench/RESULTS.md) and the gnuplot files of the
-// speed-against-error plot. Everything in them is computed from the rows of one run.
+// speed-against-error plot (report.cpp), and the headline figures (headlines.cpp). Everything in
+// them is computed from the rows of one run.
 #pragma once
 #include <map>
 #include <string>
@@ -47,7 +48,12 @@ void write_markdown(const std::string& path, const run_context& ctx, const std::
 void write_plot_script(const std::string& dir, const run_context& ctx, const std::vector<measurement>& rows,
                        const std::vector<method_def>& methods, const std::vector<bench_pair>& pairs);
 
+// Text of a time per call ("617 ns", "2.17 ms"; "n/a" when not measured), of digits ("16.0").
 std::string format_time(double ns);
 std::string format_digits(double d);
+// printf-style text of one number (`f` has one double conversion).
+std::string format_number(const char* f, double v);
+// A time or digit count is NaN when it was not measured.
+inline bool is_measured(double v) { return v == v; }
 
 }  // namespace gyrores::bench

@@ -1,8 +1,8 @@
-// An independent reference for the inscribed radius, used only by the tests.
+// An independent reference for the inscribed radius, used by the tests.
 //
-// It shares nothing with the library's numerical code (no lobe frames, no local coordinates,
-// no TOMS 748, no integer shortcut for degenerate pairs). It evaluates the paper's naive
-// resonant forms (eq. q_theta, docs/mathematics.md §1)
+// Independence (the point of this file): it shares nothing with the library's numerical code (no
+// lobe frames, no local coordinates, no TOMS 748, no integer shortcut for degenerate pairs). It
+// evaluates the paper's naive resonant forms (naive_forms.hpp, docs/mathematics.md §1)
 //   q(theta)  = rho0 (sin tau theta + sin sigma theta),
 //   q'(theta) = rho0 (sqrt(tau/sigma) cos tau theta + sqrt(sigma/tau) cos sigma theta),
 //   R(theta)  = q^2 + q'^2,  rho0 = v/(sqrt(tau/sigma) + sqrt(sigma/tau)),
@@ -12,7 +12,7 @@
 //      (>= 16 points per fast half-period pi/tau), offset by half a step so that theta = pi/2
 //      and theta = pi are never grid points;
 //   2. every grid interval where dR/dtheta changes sign from - to + holds a local minimum:
-//      bisect it in double and evaluate R there;
+//      locate it in double (Illinois false position) and evaluate R there;
 //   3. every local minimum whose double value lies within a generous slack of the smallest
 //      one is re-bisected from its grid interval in the working type T (mpfr_real at high
 //      precision, or any other real type) down to ~2^-bits, and R is evaluated there in T;
@@ -33,70 +33,16 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 
+#include "testing/naive_forms.hpp"
+
 namespace gyrores::ref {
 
-// The naive model of one coprime pair in the real type T (all constants from the integers).
-template <class T> struct naive_model {
+// The naive forms of one coprime pair given by its integers (kept for the messages).
+template <class T> struct naive_model : test::naive_forms<T> {
   std::int64_t itau, isigma;
-  T tau, sigma, w1, w2, rho0, v;
 
   naive_model(std::int64_t t, std::int64_t s, const T& amplitude = T(1))
-      : itau(t), isigma(s), tau(T(t)), sigma(T(s)), v(amplitude) {
-    using std::sqrt;
-    w1 = sqrt(tau / sigma);
-    w2 = sqrt(sigma / tau);
-    rho0 = v / (w1 + w2);
-  }
-  T q(const T& th) const {
-    using std::sin;
-    return rho0 * (sin(tau * th) + sin(sigma * th));
-  }
-  T qdot(const T& th) const {
-    using std::cos;
-    return rho0 * (w1 * cos(tau * th) + w2 * cos(sigma * th));
-  }
-  T R(const T& th) const {
-    T a = q(th), b = qdot(th);
-    return a * a + b * b;
-  }
-  // dR/dtheta = 2 (q dq/dtheta + q' dq'/dtheta), all from the same four trig values.
-  T dR(const T& th) const {
-    using std::cos;
-    using std::sin;
-    T p1 = tau * th, p2 = sigma * th;
-    T s1 = sin(p1), c1 = cos(p1), s2 = sin(p2), c2 = cos(p2);
-    T qq = rho0 * (s1 + s2);
-    T qd = rho0 * (w1 * c1 + w2 * c2);
-    T dq = rho0 * (tau * c1 + sigma * c2);
-    T dqd = -rho0 * (w1 * tau * s1 + w2 * sigma * s2);
-    return 2 * (qq * dq + qd * dqd);
-  }
-  // d^2R/dtheta^2 = 2 (q_th^2 + q q_thth + q'_th^2 + q' q'_thth), for Newton steps on dR.
-  T d2R(const T& th) const {
-    using std::cos;
-    using std::sin;
-    T p1 = tau * th, p2 = sigma * th;
-    T s1 = sin(p1), c1 = cos(p1), s2 = sin(p2), c2 = cos(p2);
-    T qq = rho0 * (s1 + s2);
-    T qd = rho0 * (w1 * c1 + w2 * c2);
-    T dq = rho0 * (tau * c1 + sigma * c2);
-    T dqd = -rho0 * (w1 * tau * s1 + w2 * sigma * s2);
-    T ddq = -rho0 * (tau * tau * s1 + sigma * sigma * s2);
-    T ddqd = -rho0 * (w1 * tau * tau * c1 + w2 * sigma * sigma * c2);
-    return 2 * (dq * dq + qq * ddq + dqd * dqd + qd * ddqd);
-  }
-  // (q, q', z, z') at resonant time theta from the paper's impulse response with t = sqrt(tau sigma) theta,
-  // written with the resonant harmonics: W1 t = tau theta, W2 t = sigma theta.
-  struct state {
-    T q, qdot, z, zdot;
-  };
-  state full_state(const T& th) const {
-    using std::cos;
-    using std::sin;
-    T p1 = tau * th, p2 = sigma * th;
-    T s1 = sin(p1), c1 = cos(p1), s2 = sin(p2), c2 = cos(p2);
-    return {rho0 * (s1 + s2), rho0 * (w1 * c1 + w2 * c2), rho0 * (c2 - c1), rho0 * (w1 * s1 - w2 * s2)};
-  }
+      : test::naive_forms<T>(T(t), T(s), amplitude), itau(t), isigma(s) {}
 };
 
 // One local minimum found by the double scan: its grid interval (indices i, i+1) and the
@@ -118,48 +64,9 @@ template <class T> T grid_theta(std::int64_t i, std::int64_t n) {
   return two_pi * (T(2 * i + 1) / T(2 * n));
 }
 
-// Steps 1-2: every local minimum of R on [0, 2 pi), located in double.
-inline scan_result scan_minima(std::int64_t tau, std::int64_t sigma, int points_per_order = 32) {
-  naive_model<double> m(tau, sigma);
-  const std::int64_t n = std::int64_t(points_per_order) * (tau + sigma);
-  std::vector<double> d(std::size_t(n + 1));
-  for (std::int64_t i = 0; i <= n; ++i) d[std::size_t(i)] = m.dR(grid_theta<double>(i, n));
-  scan_result out{n, {}, 0};
-  bool first = true;
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (!(d[std::size_t(i)] < 0 && d[std::size_t(i + 1)] >= 0)) continue;
-    // Illinois false position on dR (a safeguarded secant): ~6-10 evaluations to a step below
-    // 1e-8 of the grid step, which puts R within 4 tau^2 v^2 (1e-8 h)^2 < 1e-15 v^2 of the local minimum.
-    double lo = grid_theta<double>(i, n), hi = grid_theta<double>(i + 1, n);
-    double flo = d[std::size_t(i)], fhi = d[std::size_t(i + 1)];
-    const double h = hi - lo;
-    double c = lo, prev = hi;
-    int side = 0;
-    for (int it = 0; it < 60; ++it) {
-      prev = c;
-      c = (fhi - flo) != 0 ? (lo * fhi - hi * flo) / (fhi - flo) : 0.5 * (lo + hi);
-      if (!(c > lo && c < hi)) c = 0.5 * (lo + hi);
-      double fc = m.dR(c);
-      if (fc < 0) {
-        lo = c; flo = fc;
-        if (side == -1) fhi /= 2;
-        side = -1;
-      } else {
-        hi = c; fhi = fc;
-        if (side == 1) flo /= 2;
-        side = 1;
-      }
-      if (std::fabs(c - prev) < 1e-8 * h || hi - lo < 1e-8 * h) break;
-    }
-    double th = c;
-    double r = m.R(th);
-    out.minima.push_back({i, th, r});
-    if (first || r < out.min_radius_sq) out.min_radius_sq = r;
-    first = false;
-  }
-  if (out.minima.empty()) throw std::logic_error("reference scan found no local minimum");
-  return out;
-}
+// Steps 1-2: every local minimum of R on [0, 2 pi), located in double. Throws std::logic_error
+// if there is none (impossible for a pair).
+scan_result scan_minima(std::int64_t tau, std::int64_t sigma, int points_per_order = 32);
 
 template <class T> struct ref_result {
   T r_res, radius_sq;          // min sqrt(R), min R

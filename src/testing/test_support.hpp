@@ -1,7 +1,11 @@
-// Helpers shared by the tests: relative error in any real type, the test multiplier.
+// Helpers shared by the tests and the benchmark: relative error in any real type, the test
+// multiplier, a precision scope that is a no-op for the fixed-precision types.
 #pragma once
 #include <cstdlib>
+#include <optional>
 #include <string>
+
+#include <gyrores/core/real.hpp>
 
 namespace gyrores::test {
 
@@ -18,5 +22,18 @@ template <class T> T rel_error(const T& x, const T& ref) {
   if (ref == 0) return fabs(x);
   return fabs((x - ref) / ref);
 }
+
+// The default precision of mpfr_real and mpfi_real set to `digits` decimal digits for the scope
+// when `variable` (the working type is mpfr_real or mpfi_real), nothing otherwise; e.g.
+// precision_scope s(is_variable_precision_v<T>, 50) in code templated on the real type T.
+class precision_scope {
+ public:
+  precision_scope(bool variable, unsigned digits) {
+    if (variable) scope_.emplace(digits);
+  }
+
+ private:
+  std::optional<scoped_digits> scope_;
+};
 
 }  // namespace gyrores::test

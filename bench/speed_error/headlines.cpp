@@ -1,0 +1,224 @@
+// speed_error/report.hpp: the headline figures (H1-H5) and the ratio to the best row, computed
+// from the rows of one run.
+#include <algorithm>
+#include <string>
+
+#include "report.hpp"
+
+namespace gyrores::bench {
+
+namespace {
+
+const measurement* find_row(const std::vector<measurement>& rows, const std::string& method, const std::string& prec,
+                            const std::string& pair) {
+  for (const auto& m : rows)
+    if (!m.failed && m.method == method && m.precision == prec && m.pair == pair && is_measured(m.median_ns)) return &m;
+  return nullptr;
+}
+
+std::string ratio_text(double r) {
+  if (r >= 100) return format_number("%.0fx", r);
+  if (r >= 10) return format_number("%.1fx", r);
+  return format_number("%.2fx", r);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// A headline target met per pair when time(num)/time(den) <= limit (at_most) or >= limit, at
+// precision `prec`: one value per pair where both rows ran, "<ratio> (<describe(num, den)>)",
+// labelled by the pair name and `suffix`.
+struct ratio_target {
+  std::string prec, num, den;
+  bool at_most;
+  double limit;
+  std::string suffix;
+};
+
+template <class Describe>
+void add_ratios(headline& h, const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs,
+                const ratio_target& t, Describe describe) {
+  for (const auto& bp : pairs) {
+    const auto* n = find_row(rows, t.num, t.prec, bp.name);
+    const auto* d = find_row(rows, t.den, t.prec, bp.name);
+    if (!n || !d) continue;
+    const double r = n->median_ns / d->median_ns;
+    ++h.total;
+    if (t.at_most ? r <= t.limit : r >= t.limit) ++h.met;
+    h.values.push_back({bp.name + t.suffix, ratio_text(r) + " (" + describe(*n, *d) + ")"});
+  }
+}
+
+// Where the time goes: the exact method's own q' evaluations against its total (double).
+std::string h1_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  std::vector<double> share;
+  for (const auto& bp : pairs) {
+    const auto* e = find_row(rows, "exact", "double", bp.name);
+    const auto* o = find_row(rows, "one_eval", "double", bp.name);
+    if (e && o && e->evaluations) share.push_back(double(*e->evaluations) * o->median_ns / e->median_ns);
+  }
+  if (share.empty()) return "";
+  std::sort(share.begin(), share.end());
+  return "In double the exact method's own evaluations of q' (its evals x one_eval) are " +
+         format_number("%.0f", 100 * share.front()) + "-" + format_number("%.0f", 100 * share.back()) +
+         "% of its time; the rest is fixed cost (integer lattice arithmetic, constants, the minimiser list).";
+}
+
+headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  headline h{"H1", "Exact r_res in double costs at most 2x the paper's asymptotic theta_asy alone, for every pair size",
+             {}, 0, 0, ""};
+  for (const auto& bp : pairs) {
+    const auto* e = find_row(rows, "exact", "double", bp.name);
+    const auto* t = find_row(rows, "theta_asy", "double", bp.name);
+    if (!e) continue;
+    if (!t) {
+      h.values.push_back({bp.name, "n/a: theta_asy undefined for x >= 1/2 (exact " + format_time(e->median_ns) + ")"});
+      continue;
+    }
+    const double r = e->median_ns / t->median_ns;
+    ++h.total;
+    if (r <= 2) ++h.met;
+    h.values.push_back({bp.name, ratio_text(r) + " (exact " + format_time(e->median_ns) + ", theta_asy " +
+                                     format_time(t->median_ns) + ")"});
+  }
+  h.remark = h1_remark(rows, pairs);
+  return h;
+}
+
+// A headline made of add_ratios alone.
+template <class Describe>
+headline ratio_headline(const char* id, const char* target, const std::vector<measurement>& rows,
+                        const std::vector<bench_pair>& pairs, const ratio_target& t, Describe describe) {
+  headline h{id, target, {}, 0, 0, ""};
+  add_ratios(h, rows, pairs, t, describe);
+  return h;
+}
+
+// "<num_label> <time>, <den_label> <time>".
+auto times_of(const std::string& num_label, const std::string& den_label) {
+  return [=](const measurement& n, const measurement& d) {
+    return num_label + " " + format_time(n.median_ns) + ", " + den_label + " " + format_time(d.median_ns);
+  };
+}
+
+std::string naive_against_exact(const measurement& n, const measurement& e) {
+  return "naive " + format_time(n.median_ns) + " with " + format_digits(n.digits()) + " digits; exact " +
+         format_time(e.median_ns) + " with " + format_digits(e.digits());
+}
+
+// The fastest simulation of `pair` reaching 1e-8 in r_res (nullptr if none); `any`: whether a
+// simulation ran there at all.
+const measurement* fastest_simulation(const std::vector<measurement>& rows, const std::string& pair, bool& any) {
+  const measurement* best = nullptr;
+  any = false;
+  for (const auto& m : rows) {
+    if (m.failed || m.pair != pair || m.method.rfind("odeint_", 0) != 0 || !is_measured(m.median_ns)) continue;
+    any = true;
+    if (is_measured(m.digits_r) && m.digits_r >= 8 && (!best || m.median_ns < best->median_ns)) best = &m;
+  }
+  return best;
+}
+
+headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  headline h{"H3",
+             "Against time-domain simulation reaching 1e-8 relative error in r_res, gyrores (exact, double) is at "
+             "least 1000x faster and reaches full precision",
+             {}, 0, 0, ""};
+  for (const auto& bp : pairs) {
+    const auto* e = find_row(rows, "exact", "double", bp.name);
+    if (!e) continue;
+    bool any = false;
+    const measurement* best = fastest_simulation(rows, bp.name, any);
+    if (!any) continue;
+    ++h.total;
+    if (!best) {
+      h.values.push_back({bp.name, "no simulation setting reached 1e-8 in r_res"});
+      continue;
+    }
+    const double r = best->median_ns / e->median_ns;
+    const bool full = e->digits() >= 14.5;
+    if (r >= 1000 && full) ++h.met;
+    h.values.push_back({bp.name, ratio_text(r) + " (" + best->method + ": " + format_time(best->median_ns) + ", " +
+                                     format_digits(best->digits_r) + " digits in r_res; exact " +
+                                     format_time(e->median_ns) + ", " + format_digits(e->digits()) + " digits)"});
+  }
+  return h;
+}
+
+// Cost in units of the library's own evaluation: MPFR one_eval against Arb's, at `prec`
+// (medians over the pairs); "" when a row is missing everywhere.
+std::string h5_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs, const char* prec) {
+  std::vector<double> ev_ratio, exact_units, arb_units;
+  for (const auto& bp : pairs) {
+    const auto* o = find_row(rows, "one_eval", prec, bp.name);
+    const auto* ao = find_row(rows, "arb_one_eval", prec, bp.name);
+    const auto* e = find_row(rows, "exact", prec, bp.name);
+    const auto* a = find_row(rows, "arb_newton", prec, bp.name);
+    if (!o || !ao || !e || !a) continue;
+    ev_ratio.push_back(o->median_ns / ao->median_ns);
+    exact_units.push_back(e->median_ns / o->median_ns);
+    arb_units.push_back(a->median_ns / ao->median_ns);
+  }
+  if (ev_ratio.empty()) return "";
+  return std::string("At ") + prec + " (medians over the pairs): one MPFR " +
+         "evaluation (one_eval, four separate sin/cos) costs " + format_number("%.2g", median(ev_ratio)) +
+         "x one Arb evaluation (arb_one_eval, two arb_sin_cos); exact costs " +
+         format_number("%.2g", median(exact_units)) + " MPFR evaluations, Arb's refinement " +
+         format_number("%.2g", median(arb_units)) + " Arb evaluations.";
+}
+
+headline h5(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  headline h{"H5",
+             "At 1000 and 10000 digits, exact theta and r_res together in at most 1.5x the time Arb takes to refine "
+             "the root alone",
+             {}, 0, 0, ""};
+  for (const char* prec : {"mp1000", "mp10000"})
+    add_ratios(h, rows, pairs, {prec, "exact", "arb_newton", true, 1.5, std::string(" ") + prec}, times_of("exact", "Arb"));
+  for (const char* prec : {"mp1000", "mp10000"}) {
+    const std::string r = h5_remark(rows, pairs, prec);
+    if (!r.empty()) h.remark += std::string(h.remark.empty() ? "" : " ") + r;
+  }
+  return h;
+}
+
+}  // namespace
+
+std::map<const measurement*, double> ratios_to_best(const std::vector<measurement>& rows,
+                                                   const std::vector<precision>& precisions) {
+  std::map<std::pair<std::string, std::string>, std::vector<const measurement*>> groups;
+  for (const auto& m : rows)
+    if (!m.failed && is_measured(m.median_ns)) groups[{m.pair, m.precision}].push_back(&m);
+  std::map<const measurement*, double> out;
+  for (auto& [key, g] : groups) {
+    double nominal = 1e9;
+    for (const auto& pr : precisions)
+      if (pr.name == key.second) nominal = pr.digits;
+    double top = -1;
+    for (auto* m : g)
+      if (is_measured(m->digits())) top = std::max(top, m->digits());
+    const double target = std::min(nominal, top) - 1;
+    double best = -1;
+    for (auto* m : g)
+      if (is_measured(m->digits()) && m->digits() >= target && (best < 0 || m->median_ns < best)) best = m->median_ns;
+    if (best <= 0) continue;
+    for (auto* m : g) out[m] = m->median_ns / best;
+  }
+  return out;
+}
+
+std::vector<headline> compute_headlines(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  return {h1(rows, pairs),
+          ratio_headline("H2a", "At 1000 digits, exact r_res costs at most 4x one evaluation of (q, q') at that precision",
+                         rows, pairs, {"mp1000", "exact", "one_eval", true, 4, ""}, times_of("exact", "one evaluation")),
+          ratio_headline("H2b", "At 1000 digits, exact r_res is at least 5x faster than plain TOMS748 on the naive "
+                         "formulation",
+                         rows, pairs, {"mp1000", "naive_toms748", "exact", false, 5, ""}, naive_against_exact),
+          h3(rows, pairs),
+          ratio_headline("H4", "Certified r_res at 30 digits costs at most 5x uncertified (exact at 30 digits)", rows,
+                         pairs, {"mp30", "certified", "exact", true, 5, ""}, times_of("certified", "exact")),
+          h5(rows, pairs)};
+}
+
+}  // namespace gyrores::bench
