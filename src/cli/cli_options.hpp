@@ -1,29 +1,65 @@
-// Command-line options shared by several subcommands (the same name, help text and default
-// everywhere), and the checks of flag values that must quote the flag in their message (the
-// library names its parameters, not the CLI's flags).
+// Declaring command-line options, the options shared by several subcommands (the same name,
+// help text and default everywhere), and the checks of flag values that must quote the flag in
+// their message (the library names its parameters, not the CLI's flags).
+//
+// The subcommands declare their options through `options`, a thin wrapper whose only
+// implementation file includes CLI11: CLI11 is header-only and costs several seconds of
+// compilation in every file that includes it, so it is compiled here and in main.cpp only.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <gyrores/core/integer.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/design/design.hpp>
 #include <gyrores/model/pair.hpp>
 
+namespace CLI {
+class App;
+}
+
 namespace gyrores::cli {
 
+// How an option appears: plain, with its default shown in the help, or required.
+enum class show { plain, with_default, required };
+
+// A (sub)command's options. A name starting with '-' is an option ("--digits"), any other a
+// positional argument ("TAU"). The referenced variables must outlive the parse.
+class options {
+ public:
+  explicit options(CLI::App& app) : app_(&app) {}
+  options subcommand(const std::string& name, const std::string& description) const;
+  const options& add(const std::string& name, std::string& value, const std::string& help, show s = show::plain) const;
+  const options& add(const std::string& name, int& value, const std::string& help, show s = show::plain) const;
+  const options& add(const std::string& name, unsigned& value, const std::string& help, show s = show::plain) const;
+  const options& add(const std::string& name, long& value, const std::string& help, show s = show::plain) const;
+  const options& add(const std::string& name, unsigned long& value, const std::string& help,
+                     show s = show::plain) const;
+  const options& add(const std::string& name, double& value, const std::string& help, show s = show::plain) const;
+  const options& add(const std::string& name, std::vector<std::string>& values, const std::string& help,
+                     show s = show::plain) const;
+  const options& flag(const std::string& name, bool& value, const std::string& help) const;
+  // Exactly one of this command's subcommands must be given.
+  void require_subcommand() const;
+  // This (sub)command was given on the command line.
+  bool parsed() const;
+
+ private:
+  CLI::App* app_;
+};
+
 // TAU and SIGMA: required positional decimal integers of any size.
-void add_pair_arguments(CLI::App* sub, std::string& tau, std::string& sigma);
+void add_pair_arguments(const options& sub, std::string& tau, std::string& sigma);
 // The pair they name; usage_error naming TAU or SIGMA (or the pair's own rule) otherwise.
 resonant_pair<big_int> parse_pair_arguments(const std::string& tau, const std::string& sigma);
 
 // --digits D, with the default shown in the help.
-void add_digits_option(CLI::App* sub, int& digits, const std::string& help = "significant digits of every real printed");
+void add_digits_option(const options& sub, int& digits, const std::string& help = "significant digits of every real printed");
 // --json: "one JSON object on stdout".
-void add_json_flag(CLI::App* sub, bool& json);
+void add_json_flag(const options& sub, bool& json);
 // --size WxH of an image.
-void add_size_option(CLI::App* sub, std::string& size, const std::string& help);
+void add_size_option(const options& sub, std::string& size, const std::string& help);
 
 // usage_error "--digits must be in [lo, hi], got D" outside [lo, hi].
 void check_digits_flag(int digits, int lo, int hi);

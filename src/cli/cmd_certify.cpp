@@ -28,10 +28,10 @@ std::string run_certify(const certify_args& a) {
 
 command_runner install_certify(CLI::App& app) {
   auto a = std::make_shared<certify_args>();
-  auto* sub = app.add_subcommand("certify", "Interval certificate of r_res, theta_first and t_first (qdot0 = 1)");
+  auto sub = options(app).subcommand("certify", "Interval certificate of r_res, theta_first and t_first (qdot0 = 1)");
   add_pair_arguments(sub, a->tau, a->sigma);
   add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1..10000)");
-  sub->add_option("--out", a->out, "write the certificate to FILE (atomically) instead of stdout");
+  sub.add("--out", a->out, "write the certificate to FILE (atomically) instead of stdout");
   return [a] { return run_certify(*a); };
 }
 
@@ -65,8 +65,8 @@ check_outcome check_file(const std::string& file) {
 
 command_runner install_check(CLI::App& app) {
   auto file = std::make_shared<std::string>();
-  auto* sub = app.add_subcommand("check", "Re-prove a certificate independently (exit 0 holds, 1 fails, 2 malformed)");
-  sub->add_option("FILE", *file, "certificate written by gyrores certify")->required();
+  auto sub = options(app).subcommand("check", "Re-prove a certificate independently (exit 0 holds, 1 fails, 2 malformed)");
+  sub.add("FILE", *file, "certificate written by gyrores certify", show::required);
   return [file] {
     auto out = check_file(*file);
     if (out.status != 0) throw command_exit{out.status, out.line};

@@ -127,11 +127,11 @@ std::string run_coupling(const coupling_args& a) {
 
 command_runner install_coupling(CLI::App& app) {
   auto a = std::make_shared<coupling_args>();
-  auto* sub = app.add_subcommand("coupling", "Any coupling n: resonance test, min of H_q over a horizon, resonant approximations");
-  sub->add_option("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
-  sub->add_option("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
-  sub->add_option("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T]")->capture_default_str();
-  sub->add_option("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)")->capture_default_str();
+  auto sub = options(app).subcommand("coupling", "Any coupling n: resonance test, min of H_q over a horizon, resonant approximations");
+  sub.add("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
+  sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
+  sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T]", show::with_default);
+  sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);
   return [a] { return run_coupling(*a); };

@@ -132,15 +132,15 @@ std::string run_design(const design_args& a) {
 
 command_runner install_design(CLI::App& app) {
   auto a = std::make_shared<design_args>();
-  auto* sub = app.add_subcommand("design", "Choose a resonant pair: absorb (min r_res) or contain (max r_res) under a time limit");
-  sub->add_option("PROBLEM", a->problem, "absorb or contain")->required();
-  sub->add_option("--tmax", a->tmax, "time limit T (decimal or fraction); constraint time <= T")->required();
-  sub->add_option("--beat", a->beat, "require (tau+sigma)/(tau-sigma) >= B (decimal or fraction)");
-  sub->add_option("--max-order", a->max_order, "search pairs with tau + sigma <= M (3..5000)")->capture_default_str();
-  sub->add_option("--exclude-low", a->exclude_low, "exclude the low-order set tau + sigma <= L");
-  sub->add_option("--delta", a->delta, "only pairs with tau - sigma = D (follows the paper's Case A)");
-  sub->add_flag("--proxy", a->proxy, "use the paper's proxy pi/|n| instead of the exact first-hit time");
-  sub->add_option("--candidates", a->candidates, "runners-up to report")->capture_default_str();
+  auto sub = options(app).subcommand("design", "Choose a resonant pair: absorb (min r_res) or contain (max r_res) under a time limit");
+  sub.add("PROBLEM", a->problem, "absorb or contain", show::required);
+  sub.add("--tmax", a->tmax, "time limit T (decimal or fraction); constraint time <= T", show::required);
+  sub.add("--beat", a->beat, "require (tau+sigma)/(tau-sigma) >= B (decimal or fraction)");
+  sub.add("--max-order", a->max_order, "search pairs with tau + sigma <= M (3..5000)", show::with_default);
+  sub.add("--exclude-low", a->exclude_low, "exclude the low-order set tau + sigma <= L");
+  sub.add("--delta", a->delta, "only pairs with tau - sigma = D (follows the paper's Case A)");
+  sub.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| instead of the exact first-hit time");
+  sub.add("--candidates", a->candidates, "runners-up to report", show::with_default);
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);
   return [a] { return run_design(*a); };

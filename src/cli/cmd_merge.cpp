@@ -9,6 +9,7 @@
 #include <gyrores/io/sweep_summary.hpp>
 
 #include "cli_output.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 
 namespace gyrores::cli {
@@ -29,10 +30,10 @@ std::string run_merge(const merge_args& a) {
 
 command_runner install_merge(CLI::App& app) {
   auto a = std::make_shared<merge_args>();
-  auto* sub = app.add_subcommand("merge", "Combine the shard outputs of a sweep into one summary");
-  sub->add_option("FILES", a->files, "row files (--out) or shard summaries (--summary) of every shard")->required();
-  sub->add_option("--summary", a->summary, "write the merged summary as JSON to this file");
-  sub->add_flag("--json", a->json, "print the merged summary as JSON instead of text");
+  auto sub = options(app).subcommand("merge", "Combine the shard outputs of a sweep into one summary");
+  sub.add("FILES", a->files, "row files (--out) or shard summaries (--summary) of every shard", show::required);
+  sub.add("--summary", a->summary, "write the merged summary as JSON to this file");
+  sub.flag("--json", a->json, "print the merged summary as JSON instead of text");
   return [a] { return run_merge(*a); };
 }
 

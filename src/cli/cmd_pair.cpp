@@ -133,11 +133,11 @@ std::string run_pair(const pair_args& args) {
 
 command_runner install_pair(CLI::App& app) {
   auto args = std::make_shared<pair_args>();
-  auto* sub = app.add_subcommand("pair", "Inscribed radius, minimisers and first-hit time of a resonant pair");
+  auto sub = options(app).subcommand("pair", "Inscribed radius, minimisers and first-hit time of a resonant pair");
   add_pair_arguments(sub, args->tau, args->sigma);
   add_digits_option(sub, args->digits, "significant digits of every real printed (1..10000)");
-  sub->add_option("--qdot0", args->qdot0, "impulse amplitude qdot0 > 0 (decimal)")->capture_default_str();
-  sub->add_option("--method", args->method, "lattice (any pair, cross-checked up to order 20000) or global (order <= 1e5)")->capture_default_str();
+  sub.add("--qdot0", args->qdot0, "impulse amplitude qdot0 > 0 (decimal)", show::with_default);
+  sub.add("--method", args->method, "lattice (any pair, cross-checked up to order 20000) or global (order <= 1e5)", show::with_default);
   add_json_flag(sub, args->json);
   return [args] { return run_pair(*args); };
 }

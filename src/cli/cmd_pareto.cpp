@@ -125,16 +125,15 @@ std::string run_pareto(const pareto_args& a) {
 
 command_runner install_pareto(CLI::App& app) {
   auto a = std::make_shared<pareto_args>();
-  auto* sub = app.add_subcommand("pareto", "Pareto front of (r_res, first-hit time) over resonant pairs");
-  sub->add_option("--max-order", a->max_order, "pairs with tau + sigma <= M (3..5000)")->required();
-  sub->add_option("--orientation", a->orientation, "absorb (min r_res, min time) or contain (max r_res, min time)")
-      ->capture_default_str();
-  sub->add_flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");
-  sub->add_flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs (r_res = 0)");
-  sub->add_option("--beat", a->beat, "only pairs with (tau+sigma)/(tau-sigma) >= B");
-  sub->add_option("--exclude-low", a->exclude_low, "drop the low-order set tau + sigma <= L");
-  sub->add_option("--out", a->out, "write the front as CSV to FILE.csv");
-  sub->add_option("--plot", a->plot, "draw the front to FILE.svg or FILE.png (data and gnuplot script beside it)");
+  auto sub = options(app).subcommand("pareto", "Pareto front of (r_res, first-hit time) over resonant pairs");
+  sub.add("--max-order", a->max_order, "pairs with tau + sigma <= M (3..5000)", show::required);
+  sub.add("--orientation", a->orientation, "absorb (min r_res, min time) or contain (max r_res, min time)", show::with_default);
+  sub.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");
+  sub.flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs (r_res = 0)");
+  sub.add("--beat", a->beat, "only pairs with (tau+sigma)/(tau-sigma) >= B");
+  sub.add("--exclude-low", a->exclude_low, "drop the low-order set tau + sigma <= L");
+  sub.add("--out", a->out, "write the front as CSV to FILE.csv");
+  sub.add("--plot", a->plot, "draw the front to FILE.svg or FILE.png (data and gnuplot script beside it)");
   add_size_option(sub, a->size, "plot size WxH in pixels (default 900x600)");
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);

@@ -133,34 +133,34 @@ std::string run_pareto_plot(const plot_args& a) {
 
 command_runner install_plot(CLI::App& app) {
   auto a = std::make_shared<plot_args>();
-  auto* sub = app.add_subcommand("plot", "Figures with gnuplot (SVG or PNG), data and script kept beside each");
-  sub->require_subcommand(1);
-  auto image = [&](CLI::App* s) {
-    s->add_option("--out", a->out, "output FILE.svg or FILE.png");
+  auto sub = options(app).subcommand("plot", "Figures with gnuplot (SVG or PNG), data and script kept beside each");
+  sub.require_subcommand();
+  auto image = [&](const options& s) {
+    s.add("--out", a->out, "output FILE.svg or FILE.png");
     add_size_option(s, a->size, "image size WxH in pixels");
   };
-  auto common = [&](CLI::App* s, const char* what) {
-    s->add_option("TAU", a->tau, "tau of a resonant pair");
-    s->add_option("SIGMA", a->sigma, "sigma of a resonant pair");
-    s->add_option("--n", a->n, "any coupling n (decimal or fraction)");
-    s->add_option("--n2", a->n2, "n^2 as a fraction (e.g. 1/12)");
-    s->add_option("--tmax", a->tmax, what);
+  auto common = [&](const options& s, const char* what) {
+    s.add("TAU", a->tau, "tau of a resonant pair");
+    s.add("SIGMA", a->sigma, "sigma of a resonant pair");
+    s.add("--n", a->n, "any coupling n (decimal or fraction)");
+    s.add("--n2", a->n2, "n^2 as a fraction (e.g. 1/12)");
+    s.add("--tmax", a->tmax, what);
     image(s);
   };
-  auto* phase = sub->add_subcommand("phase", "Phase portrait (q, q') with envelope, inscribed and maximal circles");
+  auto phase = sub.subcommand("phase", "Phase portrait (q, q') with envelope, inscribed and maximal circles");
   common(phase, "time span for a non-resonant n (default 200 pi/n, as the paper's Fig. 1)");
-  auto* energy = sub->add_subcommand("energy", "H_q(t) and H_z(t) with the exact first-hit time and the paper's proxy");
+  auto energy = sub.subcommand("energy", "H_q(t) and H_z(t) with the exact first-hit time and the paper's proxy");
   common(energy, "time span (default: one period for a pair, 8 pi/n otherwise)");
-  auto* pareto = sub->add_subcommand("pareto", "Pareto front of (r_res, first-hit time)");
-  pareto->add_option("--max-order", a->max_order, "pairs with tau + sigma <= M")->required();
-  pareto->add_option("--orientation", a->orientation, "absorb or contain")->capture_default_str();
-  pareto->add_flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");
-  pareto->add_flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs");
+  auto pareto = sub.subcommand("pareto", "Pareto front of (r_res, first-hit time)");
+  pareto.add("--max-order", a->max_order, "pairs with tau + sigma <= M", show::required);
+  pareto.add("--orientation", a->orientation, "absorb or contain", show::with_default);
+  pareto.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");
+  pareto.flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs");
   image(pareto);
   return [a, phase, energy, pareto] {
-    if (phase->parsed()) return run_phase(*a);
-    if (energy->parsed()) return run_energy(*a);
-    if (pareto->parsed()) return run_pareto_plot(*a);
+    if (phase.parsed()) return run_phase(*a);
+    if (energy.parsed()) return run_energy(*a);
+    if (pareto.parsed()) return run_pareto_plot(*a);
     throw usage_error("plot needs one of: phase, energy, pareto");
   };
 }

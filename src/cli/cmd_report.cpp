@@ -54,10 +54,10 @@ std::string run_report(const report_args& a) {
 
 command_runner install_report(CLI::App& app) {
   auto a = std::make_shared<report_args>();
-  auto* sub = app.add_subcommand("report", "Write DIR/REPORT.md: the paper's examples recomputed, design cases, Pareto front, figures");
-  sub->add_option("--out", a->out, "output directory")->capture_default_str();
-  sub->add_option("--pareto-order", a->pareto_order, "Pareto front over pairs with tau + sigma <= M (3..2000)")->capture_default_str();
-  sub->add_option("--sweep-order", a->sweep_order, "validation sweep over pairs with tau + sigma <= S (3..1000)")->capture_default_str();
+  auto sub = options(app).subcommand("report", "Write DIR/REPORT.md: the paper's examples recomputed, design cases, Pareto front, figures");
+  sub.add("--out", a->out, "output directory", show::with_default);
+  sub.add("--pareto-order", a->pareto_order, "Pareto front over pairs with tau + sigma <= M (3..2000)", show::with_default);
+  sub.add("--sweep-order", a->sweep_order, "validation sweep over pairs with tau + sigma <= S (3..1000)", show::with_default);
   add_digits_option(sub, a->digits, "significant digits of every real printed (3..40)");
   return [a] { return run_report(*a); };
 }

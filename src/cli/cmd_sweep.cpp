@@ -14,6 +14,7 @@
 #include <gyrores/io/sweep_summary.hpp>
 
 #include "cli_output.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 
 namespace gyrores::cli {
@@ -206,33 +207,29 @@ std::string run_sweep(const sweep_args& a) {
 
 command_runner install_sweep(CLI::App& app) {
   auto a = std::make_shared<sweep_args>();
-  auto* sub = app.add_subcommand("sweep", "Check the paper's claims over every resonant pair up to an order");
-  sub->add_option("--max-order", a->max_order, "largest order tau + sigma (required, 3..2^40)")->required();
-  sub->add_option("--min-order", a->min_order, "smallest order tau + sigma")->capture_default_str();
-  sub->add_option("--check", a->checks,
-                  "comma-separated checks: degeneracy, paper-node, asy-bound, structure, cross-check, or all")
-      ->capture_default_str();
-  sub->add_option("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
-  sub->add_option("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
-  sub->add_option("--summary", a->summary, "summary as JSON to FILE (a shard run also writes FILE.values for merge)");
-  sub->add_option("--threads", a->threads, "worker threads (0: all cores; mpfr runs use 1)")->capture_default_str();
-  sub->add_option("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'")
-      ->capture_default_str();
-  sub->add_flag("--resume", a->resume, "continue an interrupted run from its resume state");
-  sub->add_option("--digits", a->digits,
-                  "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits")
-      ->capture_default_str();
-  sub->add_option("--cross-check-max-order", a->cross_check_max_order,
-                  "cross-check lattice vs global search up to this order (O(order) per pair)")
-      ->capture_default_str();
-  sub->add_option("--examples", a->examples, "violating pairs listed per check")->capture_default_str();
-  sub->add_option("--state", a->state, "resume state file (default: OUT.resume, else SUMMARY.resume, else ./gyrores-sweep.resume)");
-  sub->add_option("--checkpoint", a->checkpoint, "seconds between resume checkpoints (0: only when stopping)")
-      ->capture_default_str();
-  sub->add_option("--max-pairs", a->max_pairs, "stop after this many pairs, leaving a resume state (0: no limit)")
-      ->capture_default_str();
-  sub->add_flag("--quiet", a->quiet, "no progress on stderr");
-  sub->add_flag("--json", a->json, "print the summary as JSON (the --summary schema) instead of text");
+  auto sub = options(app).subcommand("sweep", "Check the paper's claims over every resonant pair up to an order");
+  sub.add("--max-order", a->max_order, "largest order tau + sigma (required, 3..2^40)", show::required);
+  sub.add("--min-order", a->min_order, "smallest order tau + sigma", show::with_default);
+  sub.add("--check", a->checks,
+          "comma-separated checks: degeneracy, paper-node, asy-bound, structure, cross-check, or all", show::with_default);
+  sub.add("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
+  sub.add("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
+  sub.add("--summary", a->summary, "summary as JSON to FILE (a shard run also writes FILE.values for merge)");
+  sub.add("--threads", a->threads, "worker threads (0: all cores; mpfr runs use 1)", show::with_default);
+  sub.add("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'",
+          show::with_default);
+  sub.flag("--resume", a->resume, "continue an interrupted run from its resume state");
+  sub.add("--digits", a->digits,
+          "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits",
+          show::with_default);
+  sub.add("--cross-check-max-order", a->cross_check_max_order,
+          "cross-check lattice vs global search up to this order (O(order) per pair)", show::with_default);
+  sub.add("--examples", a->examples, "violating pairs listed per check", show::with_default);
+  sub.add("--state", a->state, "resume state file (default: OUT.resume, else SUMMARY.resume, else ./gyrores-sweep.resume)");
+  sub.add("--checkpoint", a->checkpoint, "seconds between resume checkpoints (0: only when stopping)", show::with_default);
+  sub.add("--max-pairs", a->max_pairs, "stop after this many pairs, leaving a resume state (0: no limit)", show::with_default);
+  sub.flag("--quiet", a->quiet, "no progress on stderr");
+  sub.flag("--json", a->json, "print the summary as JSON (the --summary schema) instead of text");
   return [a] { return run_sweep(*a); };
 }
 

@@ -3,10 +3,13 @@
 // runs it. A run returns the text for stdout, printed only on success (so a failing command
 // writes nothing to stdout).
 #pragma once
-#include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace gyrores::cli {
 
