@@ -1,6 +1,8 @@
 // The scaffolding of the proof programs (proofs/verify_common.hpp).
 #include "verify_common.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <ctime>
 #include <iostream>
@@ -59,9 +61,22 @@ std::string joined(int argc, char** argv) {
   return s;
 }
 
+void add_own(CLI::App& app, const program_option& p) {
+  CLI::Option* o = p.flag ? app.add_flag(p.name, *p.flag, p.help) : app.add_option(p.name, *p.value, p.help);
+  if (!p.flag) {
+    o->type_name(p.type_name);
+    if (p.min != std::numeric_limits<std::int64_t>::min() || p.max != std::numeric_limits<std::int64_t>::max())
+      o->check(CLI::Range(p.min, p.max));
+    if (p.show_default) o->capture_default_str();
+  }
+}
+
 }  // namespace
 
-int run_program(CLI::App& app, int argc, char** argv, const std::function<int(const options&)>& body) {
+int run_program(const std::string& name, const std::string& description, const std::vector<program_option>& own,
+                int argc, char** argv, const std::function<int(const options&)>& body) {
+  CLI::App app{description, name};
+  for (const auto& p : own) add_own(app, p);
   options o;
   o.command_line = joined(argc, argv);
   app.add_option("--max-order", o.max_order, "every pair with tau + sigma <= N (N >= 3)")->type_name("N")->required();
@@ -69,7 +84,6 @@ int run_program(CLI::App& app, int argc, char** argv, const std::function<int(co
       ->type_name("M")
       ->capture_default_str();
   app.add_option("--log", o.log_path, "write the per-pair log to FILE")->type_name("FILE");
-  const std::string name = app.get_name();
   try {
     app.parse(argc, argv);
     if (o.max_order < 3)
@@ -81,6 +95,8 @@ int run_program(CLI::App& app, int argc, char** argv, const std::function<int(co
     std::cerr << name << ": error: " << one_line(e.what()) << " (see " << name << " --help)\n";
     return 3;
   }
+  for (const auto& p : own)
+    if (p.given) *p.given = app.get_option(p.name)->count() > 0;
   if (o.min_order < 3) o.min_order = 3;
   try {
     return body(o);

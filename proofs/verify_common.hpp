@@ -17,11 +17,11 @@
 // refuted for some pair; 2 some decision was undecided (and none refuted); 3 bad usage or an
 // exception (one line on stderr).
 #pragma once
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdint>
 #include <deque>
 #include <fstream>
+#include <limits>
 #include <functional>
 #include <memory>
 #include <string>
@@ -55,11 +55,25 @@ struct options {
   std::string command_line;  // argv joined by spaces, for the log's header
 };
 
-// Runs a proof program: adds --max-order N (required, N >= 3), --min-order M (below 3 means 3)
-// and --log FILE to `app`, which already holds the program's own options; parses argv; and
-// returns body(options). Returns 0 after --help; 3 with one line on stderr for bad usage or an
-// exception thrown by body.
-int run_program(CLI::App& app, int argc, char** argv, const std::function<int(const options&)>& body);
+// A program's own option, besides the common ones: an integer option (`value`, shown as
+// `type_name`, checked to lie in [min, max]) or a flag (`flag`). Declared as data so that CLI11,
+// heavy to compile, is compiled once (verify_common.cpp). `given`, if set, records whether the
+// option appeared on the command line.
+struct program_option {
+  std::string name, type_name, help;
+  std::int64_t* value = nullptr;
+  bool* flag = nullptr;
+  std::int64_t min = std::numeric_limits<std::int64_t>::min(), max = std::numeric_limits<std::int64_t>::max();
+  bool show_default = false;
+  bool* given = nullptr;
+};
+
+// Runs a proof program `name` (described by `description` in --help): parses its own options and
+// --max-order N (required, N >= 3), --min-order M (below 3 means 3) and --log FILE, and returns
+// body(options). Returns 0 after --help; 3 with one line on stderr for bad usage or an exception
+// thrown by body.
+int run_program(const std::string& name, const std::string& description, const std::vector<program_option>& own,
+                int argc, char** argv, const std::function<int(const options&)>& body);
 
 // One claim's tally over the run.
 struct claim {

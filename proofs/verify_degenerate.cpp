@@ -139,6 +139,5 @@ int verify(const options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"verify_degenerate: paper Thm. degenerate (P3)", "verify_degenerate"};
-  return run_program(app, argc, argv, verify);
+  return run_program("verify_degenerate", "verify_degenerate: paper Thm. degenerate (P3)", {}, argc, argv, verify);
 }

@@ -235,6 +235,5 @@ int verify(const options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"verify_envelope: paper Prop. convexEnvelope (P2)", "verify_envelope"};
-  return run_program(app, argc, argv, verify);
+  return run_program("verify_envelope", "verify_envelope: paper Prop. convexEnvelope (P2)", {}, argc, argv, verify);
 }

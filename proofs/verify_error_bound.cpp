@@ -178,11 +178,10 @@ int verify(const options& opt, std::int64_t every) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"verify_error_bound: paper Thm. theta_asy and Thm. error_bound (P6, P7)", "verify_error_bound"};
   std::int64_t every = 1;
-  app.add_option("--every", every, "log only every K-th pair (and each new largest ratio)")
-      ->type_name("K")
-      ->check(CLI::Range(std::int64_t(1), std::numeric_limits<std::int64_t>::max()))
-      ->capture_default_str();
-  return run_program(app, argc, argv, [&](const options& opt) { return verify(opt, every); });
+  program_option every_opt{"--every", "K", "log only every K-th pair (and each new largest ratio)", &every};
+  every_opt.min = 1;
+  every_opt.show_default = true;
+  return run_program("verify_error_bound", "verify_error_bound: paper Thm. theta_asy and Thm. error_bound (P6, P7)",
+                     {every_opt}, argc, argv, [&](const options& opt) { return verify(opt, every); });
 }

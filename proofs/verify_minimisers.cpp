@@ -337,13 +337,12 @@ int verify(const options& opt, bool check, unsigned digits) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"verify_minimisers: global minimisers (P4, P5, docs/mathematics.md §3)", "verify_minimisers"};
   bool check = false;
-  unsigned digits = 6;
-  app.add_flag("--check", check, "re-prove every certificate with check_certificate");
-  app.add_option("--digits", digits, "digits of every certificate")
-      ->type_name("D")
-      ->check(CLI::Range(1u, 10000u))
-      ->capture_default_str();
-  return run_program(app, argc, argv, [&](const options& opt) { return verify(opt, check, digits); });
+  std::int64_t digits = 6;
+  program_option check_opt{"--check", "", "re-prove every certificate with check_certificate"};
+  check_opt.flag = &check;
+  program_option digits_opt{"--digits", "D", "digits of every certificate", &digits, nullptr, 1, 10000, true};
+  return run_program("verify_minimisers", "verify_minimisers: global minimisers (P4, P5, docs/mathematics.md §3)",
+                     {check_opt, digits_opt}, argc, argv,
+                     [&](const options& opt) { return verify(opt, check, unsigned(digits)); });
 }

@@ -92,6 +92,5 @@ int verify(const options& opt) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"verify_resonance: paper Prop. resonance (P1)", "verify_resonance"};
-  return run_program(app, argc, argv, verify);
+  return run_program("verify_resonance", "verify_resonance: paper Prop. resonance (P1)", {}, argc, argv, verify);
 }

@@ -259,12 +259,13 @@ int verify(const options& opt, std::int64_t caseA_order) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"verify_section5: the paper's Section V numbers and design reasoning (P8)", "verify_section5"};
   std::int64_t caseA_order = 0;
-  auto* caseA = app.add_option("--caseA-order", caseA_order,
-                               "Case A best pairs up to this order (default: max(--max-order, 100))")
-                    ->type_name("N");
-  return run_program(app, argc, argv, [&](const options& opt) {
-    return verify(opt, caseA->count() ? caseA_order : std::max<std::int64_t>(opt.max_order, 100));
-  });
+  bool caseA_given = false;
+  program_option caseA{"--caseA-order", "N", "Case A best pairs up to this order (default: max(--max-order, 100))",
+                       &caseA_order};
+  caseA.given = &caseA_given;
+  return run_program("verify_section5", "verify_section5: the paper's Section V numbers and design reasoning (P8)",
+                     {caseA}, argc, argv, [&](const options& opt) {
+                       return verify(opt, caseA_given ? caseA_order : std::max<std::int64_t>(opt.max_order, 100));
+                     });
 }
