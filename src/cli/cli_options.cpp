@@ -1,49 +1,10 @@
 // src/cli/cli_options.hpp
 #include "cli_options.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
 
 namespace gyrores::cli {
-namespace {
-
-template <class V>
-const options& add_one(const options& self, CLI::App* app, const std::string& name, V& value, const std::string& help,
-                       show s) {
-  CLI::Option* o = app->add_option(name, value, help);
-  if (s == show::with_default) o->capture_default_str();
-  if (s == show::required) o->required();
-  return self;
-}
-
-}  // namespace
-
-options options::subcommand(const std::string& name, const std::string& description) const {
-  return options(*app_->add_subcommand(name, description));
-}
-#define GYRORES_CLI_ADD(V)                                                                           \
-  const options& options::add(const std::string& name, V& value, const std::string& help, show s) const { \
-    return add_one(*this, app_, name, value, help, s);                                               \
-  }
-GYRORES_CLI_ADD(std::string)
-GYRORES_CLI_ADD(int)
-GYRORES_CLI_ADD(unsigned)
-GYRORES_CLI_ADD(long)
-GYRORES_CLI_ADD(unsigned long)
-GYRORES_CLI_ADD(double)
-GYRORES_CLI_ADD(std::vector<std::string>)
-#undef GYRORES_CLI_ADD
-
-const options& options::flag(const std::string& name, bool& value, const std::string& help) const {
-  app_->add_flag(name, value, help);
-  return *this;
-}
-
-void options::require_subcommand() const { app_->require_subcommand(1); }
-
-bool options::parsed() const { return app_->parsed(); }
 
 void add_pair_arguments(const options& sub, std::string& tau, std::string& sigma) {
   sub.add("TAU", tau, "tau (integer > sigma; any size)", show::required);

@@ -1,14 +1,59 @@
 // gyrores: the command-line front end. It only parses, calls the library and prints; the
 // mathematics lives in include/gyrores/. Errors: one line on stderr, nothing on stdout,
 // exit 2 for bad input, 3 when a result could not be computed honestly.
+// This is the one file that compiles CLI11 (header-only, ~8 s per file): main() and the
+// implementation of cli::options (cli_options.hpp), through which the subcommands declare
+// their options.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <map>
 
 #include <gyrores/core/error.hpp>
 
+#include "cli_options.hpp"
 #include "cli_output.hpp"
 #include "commands.hpp"
+
+namespace gyrores::cli {
+namespace {
+
+template <class V>
+const options& add_one(const options& self, CLI::App* app, const std::string& name, V& value, const std::string& help,
+                       show s) {
+  CLI::Option* o = app->add_option(name, value, help);
+  if (s == show::with_default) o->capture_default_str();
+  if (s == show::required) o->required();
+  return self;
+}
+
+}  // namespace
+
+options options::subcommand(const std::string& name, const std::string& description) const {
+  return options(*app_->add_subcommand(name, description));
+}
+#define GYRORES_CLI_ADD(V)                                                                           \
+  const options& options::add(const std::string& name, V& value, const std::string& help, show s) const { \
+    return add_one(*this, app_, name, value, help, s);                                               \
+  }
+GYRORES_CLI_ADD(std::string)
+GYRORES_CLI_ADD(int)
+GYRORES_CLI_ADD(unsigned)
+GYRORES_CLI_ADD(long)
+GYRORES_CLI_ADD(unsigned long)
+GYRORES_CLI_ADD(double)
+GYRORES_CLI_ADD(std::vector<std::string>)
+#undef GYRORES_CLI_ADD
+
+const options& options::flag(const std::string& name, bool& value, const std::string& help) const {
+  app_->add_flag(name, value, help);
+  return *this;
+}
+
+void options::require_subcommand() const { app_->require_subcommand(1); }
+
+bool options::parsed() const { return app_->parsed(); }
+
+}  // namespace gyrores::cli
 
 int main(int argc, char** argv) {
   using namespace gyrores::cli;
