@@ -15,12 +15,18 @@ std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rn
   const bool neg = !s.empty() && s[0] == '-';
   if (neg) s.erase(0, 1);
   const long e10 = mpfr_zero_p(v.backend().data()) ? 0 : long(exp) - 1;
-  std::string out = neg ? "-" : "";
-  out += s.substr(0, 1);
-  if (digits > 1) out += "." + s.substr(1);
+  // Appended piece by piece (GCC 12 reports a false -Wstringop-overflow on "." + std::string&&).
+  std::string out;
+  if (neg) out += '-';
+  out += s[0];
+  if (digits > 1) {
+    out += '.';
+    out.append(s, 1, std::string::npos);
+  }
   char buf[32];
   std::snprintf(buf, sizeof buf, "e%c%02ld", e10 < 0 ? '-' : '+', e10 < 0 ? -e10 : e10);
-  return out + buf;
+  out += buf;
+  return out;
 }
 
 bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits) {
