@@ -40,7 +40,6 @@ template <class T, class L>
 void fill_minimisers(inscribed_result<T>& r, const resonant_constants<T>& c, const L& a,
                      std::vector<critical_point<T, L>>& pts) {
   using std::ldexp;
-  using std::sqrt;
   auto best = std::min_element(pts.begin(), pts.end(),
                                [](const auto& p, const auto& q) { return p.radius_sq < q.radius_sq; });
   T rmin = best->radius_sq;
@@ -56,12 +55,9 @@ void fill_minimisers(inscribed_result<T>& r, const resonant_constants<T>& c, con
     }
   }
   std::sort(mins.begin(), mins.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
-  r.r_res = sqrt(rmin);
-  r.h_min = rmin / 2;
-  r.h_z_max = c.v * c.v / 2 - r.h_min;
-  for (auto& m : mins) r.minimisers.push_back(m.first);
-  r.theta_first = mins.front().first;
-  r.t_first = c.sqrt_ts * r.theta_first;
+  std::vector<T> thetas;
+  for (auto& m : mins) thetas.push_back(m.first);
+  set_minimum(r, rmin, c.v, c.sqrt_ts, std::move(thetas));
   const auto* f = mins.front().second;
   r.first = {to_big(f->frame.k), to_big(f->frame.j), to_big(f->frame.m), f->u};
 }

@@ -207,7 +207,6 @@ namespace detail {
 template <class T, class L>
 void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a,
                   const L& b, const T& u, const T& rsq, int m_min) {
-  using std::sqrt;
   std::vector<std::pair<T, lobe_frame<L>>> pts;
   auto add = [&](const lobe_frame<L>& g, const T& ug) { pts.push_back({lobe_theta(c, g, a, ug), g}); };
   add(f, u);
@@ -218,12 +217,9 @@ void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const 
     add(lobe_mirror(s, a, b), T(-u));
   }
   std::sort(pts.begin(), pts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  r.r_res = sqrt(rsq);
-  r.h_min = rsq / 2;
-  r.h_z_max = c.v * c.v / 2 - r.h_min;
-  for (auto& p : pts) r.minimisers.push_back(p.first);
-  r.theta_first = pts.front().first;
-  r.t_first = c.sqrt_ts * r.theta_first;
+  std::vector<T> thetas;
+  for (auto& p : pts) thetas.push_back(p.first);
+  set_minimum(r, rsq, c.v, c.sqrt_ts, std::move(thetas));
   const auto& g = pts.front().second;
   bool mirrored = (g.m < 0) != (f.m < 0);
   r.first = {to_big(g.k), to_big(g.j), to_big(g.m), mirrored ? T(-u) : u};

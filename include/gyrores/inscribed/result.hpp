@@ -1,7 +1,9 @@
 // The one result type of every inscribed-radius solver.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gyrores/core/integer.hpp>
@@ -43,5 +45,19 @@ template <class T> struct inscribed_result {
   // minimisers (the gap to the minimum shows how clearly the minimum is separated); 0 otherwise.
   T next_radius_sq = 0;
 };
+
+// What follows from the minimum R = radius_sq of q^2 + q'^2 (amplitude v) and its minimisers
+// (ascending): r_res, h_min, h_z_max, the minimisers, theta_first and t_first = sqrt_ts theta_first.
+template <class T>
+void set_minimum(inscribed_result<T>& r, const T& radius_sq, const T& v, const T& sqrt_ts,
+                 std::vector<T> ascending_minimisers) {
+  using std::sqrt;
+  r.r_res = sqrt(radius_sq);
+  r.h_min = radius_sq / 2;
+  r.h_z_max = v * v / 2 - r.h_min;
+  r.minimisers = std::move(ascending_minimisers);
+  r.theta_first = r.minimisers.front();
+  r.t_first = sqrt_ts * r.theta_first;
+}
 
 }  // namespace gyrores
