@@ -58,29 +58,33 @@ template <class T> T energy_total(const phase_state<T>& s) { return energy_q(s) 
 template <class T> struct plane_point {
   T x, y;
 };
-template <class T> plane_point<T> envelope_boundary(const T& n, const T& v, const T& phi) {
+// What the boundary and the support function share at direction phi: rho0, cos phi, sin phi,
+// omega_i^2 and d_i = sqrt(cos^2 phi + omega_i^2 sin^2 phi).
+template <class T> struct envelope_direction {
+  T r0, c, s, w1sq, w2sq, d1, d2;
+};
+template <class T> envelope_direction<T> envelope_direction_of(const T& n, const T& v, const T& phi) {
   using std::cos;
   using std::sin;
   using std::sqrt;
   auto w = modal_frequencies_of(n);
-  T r0 = impulse_rho0(n, v);
-  T c = cos(phi), s = sin(phi);
-  T d1 = sqrt(c * c + w.omega1 * w.omega1 * s * s);
-  T d2 = sqrt(c * c + w.omega2 * w.omega2 * s * s);
-  return {r0 * (c / d1 + c / d2), r0 * (w.omega1 * w.omega1 * s / d1 + w.omega2 * w.omega2 * s / d2)};
+  envelope_direction<T> e{impulse_rho0(n, v), cos(phi), sin(phi), w.omega1 * w.omega1, w.omega2 * w.omega2, T(0), T(0)};
+  e.d1 = sqrt(e.c * e.c + e.w1sq * e.s * e.s);
+  e.d2 = sqrt(e.c * e.c + e.w2sq * e.s * e.s);
+  return e;
+}
+
+template <class T> plane_point<T> envelope_boundary(const T& n, const T& v, const T& phi) {
+  const auto e = envelope_direction_of(n, v, phi);
+  return {e.r0 * (e.c / e.d1 + e.c / e.d2), e.r0 * (e.w1sq * e.s / e.d1 + e.w2sq * e.s / e.d2)};
 }
 
 // Support function of the envelope in direction phi: max over the envelope of
 // (cos phi, sin phi) . (q, q'). A trajectory point p lies in the envelope iff
 // p . u(phi) <= envelope_support(phi) for every phi.
 template <class T> T envelope_support(const T& n, const T& v, const T& phi) {
-  using std::cos;
-  using std::sin;
-  using std::sqrt;
-  auto w = modal_frequencies_of(n);
-  T r0 = impulse_rho0(n, v);
-  T c = cos(phi), s = sin(phi);
-  return r0 * (sqrt(c * c + w.omega1 * w.omega1 * s * s) + sqrt(c * c + w.omega2 * w.omega2 * s * s));
+  const auto e = envelope_direction_of(n, v, phi);
+  return e.r0 * (e.d1 + e.d2);
 }
 
 }  // namespace gyrores
