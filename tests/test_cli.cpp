@@ -11,11 +11,10 @@
 
 #include <gyrores/gyrores.hpp>
 
+#include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
 
-using gyrores::test::cli_available;
-using gyrores::test::cli_run;
-using gyrores::test::count_lines;
+using namespace gyrores::test;  // cli_run, cli_json, check_rejected, count_lines, temp_dir
 
 namespace {
 
@@ -33,10 +32,7 @@ int mantissa_digits(const std::string& s) {
 
 TEST_CASE("pair --json has the documented schema", "[cli]") {
   if (!cli_available()) return;
-  auto r = cli_run("pair 6 5 --json --digits 30");
-  REQUIRE(r.status == 0);
-  REQUIRE(r.err.empty());
-  auto j = nlohmann::json::parse(r.out);
+  auto j = cli_json("pair 6 5 --json --digits 30");
   for (const char* k : {"tau", "sigma", "delta", "delta_mod4", "v2_delta", "degenerate", "order", "beat_ratio", "n",
                         "omega1", "omega2", "rho0", "qdot0", "r_res", "h_min", "h_z_max", "theta_first", "t_first",
                         "minimisers", "t_min_paper", "method", "digits"})
@@ -94,18 +90,14 @@ TEST_CASE("huge pairs print exact integers and a lattice result", "[cli]") {
 
 TEST_CASE("integers with leading zeros are decimal, not octal", "[cli]") {
   if (!cli_available()) return;
-  auto r = cli_run("pair 011 09 --json --digits 5");
-  REQUIRE(r.status == 0);
-  auto j = nlohmann::json::parse(r.out);
+  auto j = cli_json("pair 011 09 --json --digits 5");
   CHECK(j["tau"] == 11);
   CHECK(j["sigma"] == 9);
 }
 
 TEST_CASE("degenerate pairs: r_res is exactly zero, first zero at pi/2", "[cli]") {
   if (!cli_available()) return;
-  auto r = cli_run("pair 11 9 --json");
-  REQUIRE(r.status == 0);
-  auto j = nlohmann::json::parse(r.out);
+  auto j = cli_json("pair 11 9 --json");
   CHECK(j["degenerate"] == true);
   CHECK(j["method"] == "degenerate-exact");
   CHECK(j["r_res"] == "0.0000000000000000e+00");
@@ -141,12 +133,7 @@ TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli
            row{"frobnicate", 2, ""},
            row{"pair 200001 2 --method global", 3, "global search is limited"},
        }) {
-    INFO(args);
-    auto r = cli_run(args);
-    CHECK(r.status == status);
-    CHECK(r.out.empty());
-    CHECK(count_lines(r.err) == 1);
-    CHECK(r.err.find(needle) != std::string::npos);
+    check_rejected(args, status, needle);
   }
 }
 

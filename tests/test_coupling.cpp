@@ -10,10 +10,13 @@
 #include <gyrores/design/coupling.hpp>
 #include <gyrores/gyrores.hpp>
 
+#include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;
+using gyrores::test::check_rejected;
+using gyrores::test::cli_json;
 using gyrores::test::cli_run;
 
 TEST_CASE("coupling: exact rational parsing", "[coupling]") {
@@ -204,10 +207,7 @@ TEST_CASE("cli coupling: resonance detection and JSON keys", "[coupling][cli]") 
                                         {"3/2", true, 4, 1},
                                         {"--n2 0.04", false, 0, 0}}) {
     INFO(w.args);
-    auto r = cli_run(std::string("coupling ") + w.args + " --json --horizon 30 --convergents 4");
-    REQUIRE(r.status == 0);
-    CHECK(r.err.empty());
-    auto j = nlohmann::json::parse(r.out);
+    auto j = cli_json(std::string("coupling ") + w.args + " --json --horizon 30 --convergents 4");
     for (const auto* k : {"resonant", "pair", "h_min_horizon", "t_min_horizon", "convergents", "inf_all_time", "inf_reason"})
       CHECK(j.contains(k));
     CHECK(j["resonant"] == w.resonant);
@@ -231,9 +231,7 @@ TEST_CASE("cli coupling: resonance detection and JSON keys", "[coupling][cli]") 
     }
   }
   // (4, 3) with a horizon covering t_first: the horizon minimum is the pair's H_min at t_first.
-  auto r = cli_run("coupling --n2 1/12 --json --digits 15");
-  REQUIRE(r.status == 0);
-  auto j = nlohmann::json::parse(r.out);
+  auto j = cli_json("coupling --n2 1/12 --json --digits 15");
   CHECK(j["h_min_horizon"] == j["pair_analysis"]["h_min"]);
   CHECK(j["t_min_horizon"] == j["pair_analysis"]["t_first"]);
   // Same horizon, computed by critical points from a rational n close to 1/sqrt(12): close, not equal.
@@ -249,11 +247,6 @@ TEST_CASE("cli coupling: resonance detection and JSON keys", "[coupling][cli]") 
 TEST_CASE("cli coupling: bad input exits 2 with one line and no stdout", "[coupling][cli]") {
   if (!cli_available()) return;
   for (const char* bad : {"coupling", "coupling 1 --n2 1/12", "coupling abc", "coupling 0", "coupling --n2 0",
-                          "coupling 1/0", "coupling 2 --horizon -1", "coupling 2 --horizon 1e9", "coupling 2 --digits 0"}) {
-    INFO(bad);
-    auto r = cli_run(bad);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(gyrores::test::count_lines(r.err) == 1);
-  }
+                          "coupling 1/0", "coupling 2 --horizon -1", "coupling 2 --horizon 1e9", "coupling 2 --digits 0"})
+    check_rejected(bad);
 }

@@ -24,10 +24,13 @@
 #include <gyrores/design/design.hpp>
 #include <gyrores/gyrores.hpp>
 
+#include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;
+using gyrores::test::check_rejected;
+using gyrores::test::cli_json;
 using gyrores::test::cli_run;
 
 namespace {
@@ -304,10 +307,7 @@ TEST_CASE("pareto: absorb front up to order 60 runs from (5, 1) to (3, 1); value
 
 TEST_CASE("cli design: JSON schema; integers as integers, reals as strings", "[design][cli]") {
   if (!cli_available()) return;
-  auto r = cli_run("design contain --tmax 17 --beat 10 --json --digits 8");
-  REQUIRE(r.status == 0);
-  CHECK(r.err.empty());
-  auto j = nlohmann::json::parse(r.out);
+  auto j = cli_json("design contain --tmax 17 --beat 10 --json --digits 8");
   CHECK(j["problem"] == "contain");
   CHECK(j["tmax"] == "17");
   for (const auto* k : {"chosen", "candidates"}) REQUIRE(j.contains(k));
@@ -338,33 +338,20 @@ TEST_CASE("cli design: JSON schema; integers as integers, reals as strings", "[d
 TEST_CASE("cli design: proxy choice that violates the exact time is flagged", "[design][cli]") {
   if (!cli_available()) return;
   // delta = 6 with T_max = 20: the proxy accepts (35, 29) (pi/n = 16.68), whose first zero is at 50.04.
-  auto r = cli_run("design absorb --tmax 20 --beat 10 --delta 6 --proxy --json");
-  REQUIRE(r.status == 0);
-  auto j = nlohmann::json::parse(r.out);
+  auto j = cli_json("design absorb --tmax 20 --beat 10 --delta 6 --proxy --json");
   CHECK(j["chosen"]["tau"] == 35);
   CHECK(j["chosen_t_first_exceeds_tmax"] == true);
-  auto e = cli_run("design absorb --tmax 20 --beat 10 --delta 6");
-  CHECK(e.status == 3);  // exact: no delta = 6 pair reaches zero by t = 20
-  CHECK(e.out.empty());
-  CHECK(gyrores::test::count_lines(e.err) == 1);
-  CHECK(e.err.find("no resonant pair") != std::string::npos);
+  // exact: no delta = 6 pair reaches zero by t = 20
+  check_rejected("design absorb --tmax 20 --beat 10 --delta 6", 3, "no resonant pair");
 }
 
 TEST_CASE("cli design: infeasible exits 3, bad input exits 2, nothing on stdout", "[design][cli]") {
   if (!cli_available()) return;
-  auto r = cli_run("design absorb --tmax 15 --beat 10");
-  CHECK(r.status == 3);
-  CHECK(r.out.empty());
-  CHECK(gyrores::test::count_lines(r.err) == 1);
+  check_rejected("design absorb --tmax 15 --beat 10", 3);
   for (const char* bad : {"design absorb --tmax abc", "design maximise --tmax 10", "design absorb --tmax -1",
                           "design absorb --tmax 10 --beat 1/0", "design absorb --tmax 10 --max-order 2",
-                          "design absorb"}) {
-    INFO(bad);
-    auto b = cli_run(bad);
-    CHECK(b.status == 2);
-    CHECK(b.out.empty());
-    CHECK(gyrores::test::count_lines(b.err) == 1);
-  }
+                          "design absorb"})
+    check_rejected(bad);
 }
 
 TEST_CASE("cli pareto: CSV and JSON", "[pareto][cli]") {

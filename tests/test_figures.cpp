@@ -19,10 +19,13 @@
 #include <gyrores/design/figures.hpp>
 #include <gyrores/gyrores.hpp>
 
+#include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;
+using gyrores::test::check_rejected;
+using gyrores::test::cli_json;
 using gyrores::test::cli_run;
 namespace fs = std::filesystem;
 
@@ -332,13 +335,8 @@ TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
   if (!cli_available()) return;
   for (const char* bad : {"plot phase 6 5 --out x.pdf", "plot phase 6 4 --out x.svg", "plot phase --out x.svg",
                           "plot phase 6 5 --n 2 --out x.svg", "plot phase 6 5 --size 10x10 --out x.svg",
-                          "plot pareto --out x.svg", "plot"}) {
-    INFO(bad);
-    auto r = cli_run(bad);
-    CHECK(r.status == 2);
-    CHECK(r.out.empty());
-    CHECK(gyrores::test::count_lines(r.err) == 1);
-  }
+                          "plot pareto --out x.svg", "plot"})
+    check_rejected(bad);
 }
 
 TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli]") {
