@@ -322,6 +322,58 @@ template <class T, pair_integer I> T theta_asy_only(const resonant_pair<I>& p) {
   return detail::asy_theta(k, a, u, pi);
 }
 
+namespace detail {
+
+// One lobe k of paper_asymptotics (below): u_asy and theta_asy, q'(theta_asy), the exact lobe
+// root, the error against the paper's bound, and whether the lobe holds a global minimiser of
+// the lattice result lr.
+template <class T, class L, pair_integer I>
+asymptotic_lobe<T> asy_lobe(const resonant_pair<I>& p, const resonant_constants<T>& c, const T& v, const L& a,
+                            const L& b, const L& k, const inscribed_result<T>& lr, int m_min) {
+  using std::fabs;
+  using std::ldexp;
+  const T pi = c.pi, x = c.x;
+  const T at = real_from_int<T>(a);
+  asymptotic_lobe<T> lo;
+  const L m = a - 2 * k * b;
+  lo.k = to_big(k);
+  lo.m = to_big(m);
+  lobe_frame<L> fr{k, L(0), m};
+  auto frr = lobe_frame_real_of(c, fr, a);
+  lo.mu = frr.mu;
+  lo.s = pi * real_from_ratio<T>(m, L(2 * b));
+  lo.u_asy = u_plus_tan_u_root(lo.s);
+  lo.theta_asy = asy_theta(k, a, lo.u_asy, pi);
+  lo.theta_asy_paper = pi / real_from_int<T>(b) + 2 * (lo.u_asy - lo.s) / at;
+  {
+    // q' at the exact theta_asy: with w = mu - x u_asy = x (s - u_asy) = x tan u_asy,
+    // q' = (-1)^k v cos u cos w (tan w - x tan u) = (-1)^k v cos u cos w (tan w - w); the last
+    // form drops the rounding residual of u_asy (which would otherwise dominate for large a).
+    using std::cos;
+    const T w = x * (lo.s - lo.u_asy);
+    lo.qdot_asy = T(frr.sign) * v * cos(lo.u_asy) * cos(w) * w * w * w * tan_minus_id_over_cube(w);
+  }
+  lo.u_c = lobe_equation_root(x, lo.mu, lo.s, pi);
+  lo.theta_c = asy_theta(k, a, lo.u_c, pi);
+  // R = q^2 at the root of q'; |q| keeps full relative accuracy where q' (which vanishes only up
+  // to the root's rounding) would not (tiny s: q ~ x u^2 while the q' residual is ~ eps x u).
+  lo.r_c = fabs(lobe_eval(c, frr, lo.u_c).q);
+  const T e = asymptotic_error_scaled(x, lo.s, lo.u_asy, pi);
+  const T x2 = x * x;
+  // Cross-check: the two routes to u_c (psi root; u_asy + e x^2) must agree to rounding.
+  const T gap = fabs(lo.u_c - (lo.u_asy + e * x2));
+  if (!(gap <= ldexp(T(1), 10 - int(real_bits<T>()))))
+    throw compute_error("asymptotic: lobe root and u_asy + (u_c - u_asy) disagree by " + root_describe(gap) +
+                        " for " + p.str() + " in " + real_type_name<T>());
+  lo.error = 2 * fabs(e) * x2 / at;
+  lo.bound = pi * pi * pi * x2 / at;
+  lo.ratio = 2 * fabs(e) / (pi * pi * pi);
+  lo.holds_global_min = asy_holds_global_min(lr, to_big(a), to_big(k), lo.u_c, p.degenerate(), m_min);
+  return lo;
+}
+
+}  // namespace detail
+
 // The paper's asymptotics for pair p and impulse amplitude v > 0 (usage_error otherwise):
 // every lobe k = round(1/(2x)) (two on a tie) with u_asy, theta_asy (both forms), q'(theta_asy),
 // the exact lobe root theta_c, error = |theta_c - theta_asy| (cancellation-free), the paper's
@@ -337,7 +389,6 @@ template <class T, pair_integer I> T theta_asy_only(const resonant_pair<I>& p) {
 // pair exceeds T's exponent range.
 template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const resonant_pair<I>& p, const T& v) {
   using std::fabs;
-  using std::ldexp;
   using std::sin;
   using std::tan;
   using L = wide_int<I>;
@@ -368,48 +419,9 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
                   "lobe root near pi/b is still reported, and it is that zero only when b = 2";
   }
   auto lr = inscribed_lattice<T>(p, v);
-  const big_int A = to_big(a);
-  const T at = real_from_int<T>(a);
   std::vector<L> ks{k0};
   if (tie) ks.push_back(L(k0 + 1));
-  for (const L& k : ks) {
-    asymptotic_lobe<T> lo;
-    const L m = a - 2 * k * b;
-    lo.k = to_big(k);
-    lo.m = to_big(m);
-    lobe_frame<L> fr{k, L(0), m};
-    auto frr = lobe_frame_real_of(c, fr, a);
-    lo.mu = frr.mu;
-    lo.s = pi * real_from_ratio<T>(m, L(2 * b));
-    lo.u_asy = u_plus_tan_u_root(lo.s);
-    lo.theta_asy = detail::asy_theta(k, a, lo.u_asy, pi);
-    lo.theta_asy_paper = pi / real_from_int<T>(b) + 2 * (lo.u_asy - lo.s) / at;
-    {
-      // q' at the exact theta_asy: with w = mu - x u_asy = x (s - u_asy) = x tan u_asy,
-      // q' = (-1)^k v cos u cos w (tan w - x tan u) = (-1)^k v cos u cos w (tan w - w); the last
-      // form drops the rounding residual of u_asy (which would otherwise dominate for large a).
-      using std::cos;
-      const T w = x * (lo.s - lo.u_asy);
-      lo.qdot_asy = T(frr.sign) * v * cos(lo.u_asy) * cos(w) * w * w * w * detail::tan_minus_id_over_cube(w);
-    }
-    lo.u_c = lobe_equation_root(x, lo.mu, lo.s, pi);
-    lo.theta_c = detail::asy_theta(k, a, lo.u_c, pi);
-    // R = q^2 at the root of q'; |q| keeps full relative accuracy where q' (which vanishes only up
-    // to the root's rounding) would not (tiny s: q ~ x u^2 while the q' residual is ~ eps x u).
-    lo.r_c = fabs(lobe_eval(c, frr, lo.u_c).q);
-    const T e = asymptotic_error_scaled(x, lo.s, lo.u_asy, pi);
-    const T x2 = x * x;
-    // Cross-check: the two routes to u_c (psi root; u_asy + e x^2) must agree to rounding.
-    const T gap = fabs(lo.u_c - (lo.u_asy + e * x2));
-    if (!(gap <= ldexp(T(1), 10 - int(real_bits<T>()))))
-      throw compute_error("asymptotic: lobe root and u_asy + (u_c - u_asy) disagree by " + root_describe(gap) +
-                          " for " + p.str() + " in " + real_type_name<T>());
-    lo.error = 2 * fabs(e) * x2 / at;
-    lo.bound = pi * pi * pi * x2 / at;
-    lo.ratio = 2 * fabs(e) / (pi * pi * pi);
-    lo.holds_global_min = detail::asy_holds_global_min(lr, A, to_big(k), lo.u_c, p.degenerate(), rep.m_min);
-    rep.lobes.push_back(std::move(lo));
-  }
+  for (const L& k : ks) rep.lobes.push_back(detail::asy_lobe(p, c, v, a, b, k, lr, rep.m_min));
   rep.s_star = pi * real_from_ratio<T>(L(rep.m_min), L(2 * b));
   rep.u_star = u_plus_tan_u_root(rep.s_star);
   rep.r_res_asy = v * x * fabs(sin(rep.u_star) * tan(rep.u_star));
