@@ -17,10 +17,12 @@
 //   P7.sharp    the sharper bound of proofs/README.md (Lemma 7.1):
 //               |theta_c - theta_asy| <= (pi^3 x^2/a) S(pi x/2)/8,  S(y) = (tan y - y)/y^3,
 //               i.e. ratio = error/bound <= S(pi x/2)/8 < S(pi/4)/8 = 0.0554...          [asserted]
-//   P7.x>=1/2   for x >= 1/2 (k = 1): every root of q' in the lobe (if any) satisfies the bound,
-//               because 2 pi/a <= pi^3 x^2/a. Existence (P6.root) is decided by a sign change of
-//               f on [-pi/2, pi/2] or an exact zero at an end (integers); n/a otherwise: the
-//               lobe has an even number of roots, possibly none, and theta_c need not exist. [asserted]
+//   P6.count    for x >= 1/2 (k = 1, m < 0): a root exists between the slow node u = s and u = 0
+//               (P6.root, by the signs of f there); the lobe holds exactly one root when
+//               x <= 2/3 and exactly two when x > 2/3, so theta_c is not unique there
+//               (proofs/README.md, Lemma 6.0; the sign patterns are checked per pair).     [asserted]
+//   P7.x>=1/2   for x >= 1/2: every root of q' in the lobe satisfies the bound, because
+//               2 pi/a <= pi^3 x^2/a.                                                      [asserted]
 // The log gives, per lobe, the enclosure of ratio = |theta_c - theta_asy|/(pi^3 x^2/a) and of
 // its x -> 0 limit 2 C(s)/pi^3 = 2 tan^3 u/(3 pi^3 (1 + sec^2 u)) at u = u_asy (docs/mathematics.md §3).
 // Option --every K: log only every K-th pair (and every pair with a new largest ratio).
@@ -42,13 +44,17 @@ namespace {
 I S_of(const I& y) { return (tan(y) - y) / (y * y * y); }
 
 struct error_bound_claims {
-  claim &root, &form, &bound, &sharp, &large;
+  claim &root, &count, &form, &bound, &sharp, &large;
 };
 
 error_bound_claims add_claims(run& R) {
   return {R.add_claim("P6.root",
                       "the root theta_c of q' in the paper's lobe k exists (x < 1/2: interval Newton; x >= 1/2: "
-                      "sign change or exact zero at a lobe end, else n/a)",
+                      "sign change between the slow node u = s and u = 0)",
+                      true),
+          R.add_claim("P6.count",
+                      "x >= 1/2: the paper's lobe holds exactly one root of q' when x <= 2/3 and exactly two when "
+                      "x > 2/3 (theta_c is then not unique)",
                       true),
           R.add_claim("P6.form", "theta_asy = pi/b + (2/a)(u_asy - s) = 2 (k pi + u_asy)/a (consistent enclosures)", true),
           R.add_claim("P7.bound", "x < 1/2: |theta_c - theta_asy| <= pi^3 x^2/a", true),
@@ -76,32 +82,38 @@ struct pair_context {
   proof::constants K;
 };
 
-// x >= 1/2: the paper's k = round(a/(2b)) = 1; existence from f at the lobe ends, the bound from
-// 2 pi/a <= pi^3 x^2/a.
+// x >= 1/2: the paper's k = round(a/(2b)) = 1 and m = a - 2b <= 0, so s = pi m/(2b) lies in
+// (-pi/2, 0] and mu = x s; m = 0 only at x = 1/2 ((3, 1)), where u = 0 is an exact root. Existence (proofs/README.md, Lemma 6.0): f(0) = sin mu < 0 and
+// f(s) = -x sin s > 0, so q' has a root between the slow node u = s and u = 0. Count: on each
+// interval where cos w != 0 (w = mu - x u) the roots of f are those of phi = x tan u - tan w,
+// which is strictly increasing; w reaches -pi/2 inside the lobe iff |m| + b > a (x > 2/3), at
+// u_p = (pi/2 + mu)/x, and then f(u_p) = -cos u_p < 0 < f(pi/2) = -x cos(mu - x pi/2) gives the
+// second root. Both sign patterns are checked here in interval arithmetic.
 void decide_large_x(run& R, error_bound_claims& C, const progress& g, const pair_context& c) {
   const I pi = c.K.c.pi, x = c.K.c.x, A = real_from_int<I>(big_int(c.a));
   auto ks = paper_lobe_indices(c.p);
-  big_int m = big_int(c.a) - 2 * ks[0] * c.b;
-  I mu = proof::mu_of(c.K, m);
-  I h = pi / 2;
-  I flo = proof::f_of(c.K, mu, I(-h)), fhi = proof::f_of(c.K, mu, h);
-  bool sign_change = (certainly_positive(flo) && certainly_negative(fhi)) ||
-                     (certainly_negative(flo) && certainly_positive(fhi));
-  // Exact zeros at the lobe ends: f(pi/2) = -x cos(pi (m - b)/(2a)), f(-pi/2) = x cos(pi (m + b)/(2a)).
-  auto odd_quotient = [&](const big_int& num) {
-    return int_mod(num, big_int(c.a)) == 0 && int_mod(big_int(num / c.a), big_int(2)) == 1;
-  };
-  bool edge_zero = odd_quotient(big_int(m - c.b)) || odd_quotient(big_int(m + c.b));
+  const big_int m = big_int(c.a) - 2 * ks[0] * c.b;
+  const paper_lobe L = paper_lobe_of(c.K, m);
+  const I f0 = proof::f_of(c.K, L.mu, I(0)), fs = proof::f_of(c.K, L.mu, L.s);
+  const bool first = ks.size() == 1 && ks[0] == 1 &&
+                     (m == 0 || (m < 0 && certainly_negative(f0) && certainly_positive(fs)));
+  C.root.add(decide_bool(first), c.name, first ? "" : "no sign change between the slow node and u = 0");
+  const bool two_roots = abs(m) + c.b > big_int(c.a);  // exact: w reaches -pi/2 inside the lobe
+  std::string count_text = "one root (x <= 2/3)";
+  bool counted = first;
+  if (two_roots) {
+    const I up = (pi / 2 + L.mu) / x;
+    const I fp = proof::f_of(c.K, L.mu, up), fe = proof::f_of(c.K, L.mu, pi / 2);
+    counted = first && certainly_less(up, pi / 2) && certainly_negative(fp) && certainly_positive(fe);
+    count_text = "two roots (x > 2/3), the second beyond u_p = " + enc(up, 6);
+  }
+  C.count.add(decide_bool(counted), c.name, count_text);
   verdict v = decide_less(2 * pi / A, pi * pi * pi * x * x / A);
-  C.root.add(sign_change || edge_zero ? verdict::proved : verdict::not_applicable, c.name,
-             sign_change ? "x >= 1/2: f changes sign on the lobe"
-                         : (edge_zero ? "x >= 1/2: exact root at a lobe end"
-                                      : "x >= 1/2: no sign change, existence of theta_c not established"));
   for (auto* cl : {&C.form, &C.bound, &C.sharp}) cl->add(verdict::not_applicable, c.name);
   C.large.add(v, c.name);
   if (R.logging() && g.log_this())
-    R.log(c.name + " k=" + ks[0].str() + " m=" + m.str() + " x>=1/2 | f(-pi/2) " + enc(flo, 6) + " f(pi/2) " +
-          enc(fhi, 6) + " | " + verdict_name(v));
+    R.log(c.name + " k=" + ks[0].str() + " m=" + m.str() + " x>=1/2 | f(0) " + enc(f0, 6) + " f(s) " + enc(fs, 6) +
+          " | " + count_text + " | " + verdict_name(v));
 }
 
 // u_c and u_asy of the lobe with offset m (both 0 when m = 0: b = 2, a = 4k, f is odd).
@@ -167,6 +179,7 @@ int verify(const options& opt, std::int64_t every) {
     pair_context c{p, p.str(), p64.tau() + p64.sigma(), p64.delta(), proof::constants_of(p)};
     if (2 * c.b >= c.a) return decide_large_x(R, C, g, c);
     C.large.add(verdict::not_applicable, c.name);
+    C.count.add(verdict::not_applicable, c.name);
     for (const big_int& k : paper_lobe_indices(p)) decide_lobe(R, C, g, c, k);
   });
   R.note("lobes examined (x < 1/2): " + std::to_string(g.lobes));

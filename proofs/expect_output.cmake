@@ -1,0 +1,40 @@
+# Runs one proof program for ctest and fails unless it exits 0 *and* prints every line of its
+# expected-output file (proofs/expected/<program>.txt) verbatim: the tallies of every claim at the
+# ctest order, the refutations with their first counterexamples (P2.literal, P4.unimodal, P5,
+# P8.printed) and the sharp constants. So a regression that still exits 0 (a refutation lost, a
+# constant moved) fails the test. Regenerate a file only after checking the new values.
+#   cmake -DPROGRAM=<exe> -DARGS=<a;b;c> -DEXPECTED=<file> -P proofs/expect_output.cmake
+cmake_minimum_required(VERSION 3.25)
+foreach(var PROGRAM EXPECTED)
+  if(NOT ${var})
+    message(FATAL_ERROR "expect_output: pass -D${var}=...")
+  endif()
+endforeach()
+execute_process(COMMAND ${PROGRAM} ${ARGS} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "expect_output: ${PROGRAM} exited with ${status}")
+endif()
+# One list item per line: ';', '[' and ']' (which CMake lists treat specially) are masked first.
+file(READ "${EXPECTED}" text)
+string(REPLACE ";" "<sc>" text "${text}")
+string(REPLACE "[" "<lb>" text "${text}")
+string(REPLACE "]" "<rb>" text "${text}")
+string(REPLACE "\n" ";" lines "${text}")
+set(missing 0)
+foreach(masked IN LISTS lines)
+  if(masked STREQUAL "")
+    continue()
+  endif()
+  string(REPLACE "<sc>" ";" line "${masked}")
+  string(REPLACE "<lb>" "[" line "${line}")
+  string(REPLACE "<rb>" "]" line "${line}")
+  string(FIND "${out}${err}" "${line}" at)
+  if(at EQUAL -1)
+    message(SEND_ERROR "expect_output: missing from the output: ${line}")
+    math(EXPR missing "${missing} + 1")
+  endif()
+endforeach()
+if(missing GREATER 0)
+  message(FATAL_ERROR "expect_output: ${missing} expected line(s) missing (${EXPECTED})")
+endif()
