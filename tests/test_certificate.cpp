@@ -7,6 +7,8 @@
 #include <gyrores/certify/check.hpp>
 #include <gyrores/certify/certify.hpp>
 #include <gyrores/certify/cover.hpp>
+#include <gyrores/certify/proof_steps.hpp>
+#include <gyrores/core/decimal.hpp>
 #include <gyrores/core/interval.hpp>
 #include <gyrores/inscribed/lattice.hpp>
 #include <gyrores/io/certificate_json.hpp>
@@ -197,6 +199,65 @@ TEST_CASE("the checker rejects tampered certificates", "[certificate]") {
       CHECK_FALSE(v.holds);
     }
   }
+}
+
+// The exact decimal of v + 2^-shift (or - 2^-shift), printed exactly: a bound that differs from
+// the checker's own endpoint v by far less than one unit of the precision claims are read at.
+std::string nudged(const mpfr_real& v, int shift, int sign) {
+  scoped_digits sd(digits10_for_bits(unsigned(shift) + 64));
+  mpfr_real w = v;
+  w += sign * ldexp(mpfr_real(1), -shift);
+  return format_scientific(w, digits10_for_bits(unsigned(shift) + 64) + 10, sign > 0 ? MPFR_RNDU : MPFR_RNDD);
+}
+
+TEST_CASE("claims are compared exactly: a bound inside the checker's enclosure by a hair is refused",
+          "[certificate]") {
+  resonant_pair<big_int> p{big_int(6), big_int(5)};
+  const auto good = certify_pair(p, 20);
+  REQUIRE(check_certificate(good).holds);
+  scoped_digits sd(digits10_for_bits(good.working_bits));
+  const auto loc = proof::enclose_minimisers(p, proof::constants_of(p));
+  // 2^-(bits + 100) is far below one unit at the checker's parse precision (bits + 64): rounding
+  // the claim outward there would put the bound back onto the enclosure and accept it.
+  const int shift = int(good.working_bits) + 100;
+  certificate lo_up = good, hi_down = good;
+  lo_up.r_res.first = nudged(interval_lower(loc.r), shift, +1);
+  hi_down.r_res.second = nudged(interval_upper(loc.r), shift, -1);
+  for (const auto* c : {&lo_up, &hi_down}) {
+    auto v = check_certificate(*c);
+    CHECK_FALSE(v.holds);
+    CHECK(v.failure.find("claim r_res") == 0);
+  }
+  // The exact endpoints themselves are accepted (as long as the digits are met).
+  certificate exact = good;
+  exact.r_res = {nudged(interval_lower(loc.r), shift, -1), nudged(interval_upper(loc.r), shift, +1)};
+  exact.digits = 15;
+  auto v = check_certificate(exact);
+  INFO(v.failure);
+  CHECK(v.holds);
+}
+
+TEST_CASE("without global minimality only [0, hi] may be claimed for r_res", "[certificate]") {
+  // (6, 1) with covers capped below its order and node count: not proved, r_res <= hi only.
+  resonant_pair<big_int> p{big_int(6), big_int(1)};
+  certify_options capped;
+  capped.max_lobes = 3;
+  capped.max_nodes = 1;
+  const auto c = certify_pair(p, 20, capped);
+  REQUIRE_FALSE(c.global_minimality);
+  REQUIRE(c.r_res.first == "0");
+  REQUIRE(check_certificate(c).holds);
+  for (const char* lo : {"0.04", "1e-300", "0.0", "-0"}) {
+    INFO(lo);
+    certificate t = c;
+    t.r_res.first = lo;
+    auto v = check_certificate(t);
+    CHECK_FALSE(v.holds);
+    CHECK(v.failure.find("lower end must be 0") != std::string::npos);
+  }
+  certificate below = c;
+  below.r_res.second = shift_last_digit(c.r_res.second, -1);
+  CHECK_FALSE(check_certificate(below).holds);
 }
 
 TEST_CASE("certificate JSON: the text reads back to the same certificate; malformed text is a usage_error",

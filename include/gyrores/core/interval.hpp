@@ -96,4 +96,17 @@ inline mpfi_real interval_from_decimal(const std::string& lo, const std::string&
   return interval_of(a, b);
 }
 
+// Whether the exact decimal interval [lo, hi] contains every point of x. The endpoints are read
+// inward at the current precision (lo rounded up, hi rounded down), so a "true" holds exactly;
+// a true containment can be missed only when x comes within one unit of that precision of an
+// endpoint (a checker then asks for a wider claim, never accepts a false one).
+inline bool decimal_interval_contains(const std::string& lo, const std::string& hi, const mpfi_real& x) {
+  mpfr_real a, b;
+  if (mpfr_set_str(a.backend().data(), lo.c_str(), 10, MPFR_RNDU) != 0)
+    throw usage_error("not a decimal number: '" + lo + "'");
+  if (mpfr_set_str(b.backend().data(), hi.c_str(), 10, MPFR_RNDD) != 0)
+    throw usage_error("not a decimal number: '" + hi + "'");
+  return !(b < a) && a <= interval_lower(x) && interval_upper(x) <= b;
+}
+
 }  // namespace gyrores

@@ -20,11 +20,12 @@ using claim_text = std::pair<std::string, std::string>;
 
 check_verdict fail(const std::string& why) { return {false, why}; }
 
-// Claims are parsed 64 bits finer than the working precision, so that a decimal bound moved
-// inward by one unit of its last digit no longer rounds back onto the enclosure.
+// A claim holds if its exact decimal interval contains the checker's enclosure: the endpoints
+// are read inward (decimal_interval_contains), 64 bits finer than the working precision so that
+// an honest claim, rounded outward to its digits, is never missed.
 bool claim_contains(const certificate& c, const claim_text& claim, const I& mine) {
   scoped_digits fine(digits10_for_bits(c.working_bits + 64));
-  return certainly_subset(mine, interval_from_decimal(claim.first, claim.second));
+  return decimal_interval_contains(claim.first, claim.second, mine);
 }
 
 bool claim_meets_digits(const certificate& c, const claim_text& claim) {
@@ -115,12 +116,11 @@ check_verdict check_global_claims(const certificate& c, const proof::minimiser_e
   return {true, ""};
 }
 
-// Not proved globally: only r_res <= hi may be claimed, and it must hold.
+// Not proved globally: only r_res <= hi may be claimed (the claim is [0, hi]), and it must hold:
+// |q| at the certified root is one value of sqrt(R), so the minimum is at most it.
 check_verdict check_upper_bound_claim(const certificate& c, const proof::minimiser_enclosures& loc) {
-  scoped_digits fine(digits10_for_bits(c.working_bits + 64));
-  I hi = interval_from_decimal(c.r_res.second, c.r_res.second);
-  if (!certainly_subset(loc.r, interval_of(mpfr_real(0), interval_upper(hi))))
-    return fail("claim r_res: upper bound below the checker's enclosure");
+  if (c.r_res.first != "0") return fail("claim r_res: without global minimality the lower end must be 0");
+  if (!claim_contains(c, c.r_res, loc.r)) return fail("claim r_res: upper bound below the checker's enclosure");
   if (!c.theta_first.first.empty() || !c.t_first.first.empty() || c.minimiser_count != 0)
     return fail("claims: theta_first, t_first and minimiser_count need global minimality");
   return {true, ""};
