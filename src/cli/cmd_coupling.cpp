@@ -6,6 +6,7 @@
 
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/io/json.hpp>
+#include <gyrores/io/report_json.hpp>
 
 #include "cli_options.hpp"
 #include "commands.hpp"
@@ -20,54 +21,6 @@ struct coupling_args {
   std::int64_t convergents = 8;
   bool json = false;
 };
-
-json convergents_json(const std::vector<coupling_convergent>& rows) {
-  json arr = json::array();
-  for (const auto& r : rows) {
-    json c;
-    c["partial_quotient"] = json_integer(r.convergent.partial_quotient.str());
-    c["tau"] = json_integer(r.convergent.p.str());
-    c["sigma"] = json_integer(r.convergent.q.str());
-    if (r.values) {
-      for (auto [key, value] : {std::pair{"n", &r.values->n}, {"r_res", &r.values->r_res},
-                                {"t_first", &r.values->t_first}, {"t_min_paper", &r.values->t_min_paper}})
-        c[key] = *value;
-      c["degenerate"] = r.values->degenerate;
-    } else {
-      c["note"] = "ratio 1: no resonant pair (tau = sigma)";
-    }
-    arr.push_back(c);
-  }
-  return arr;
-}
-
-std::string coupling_json(const coupling_args& a, const coupling_report& r) {
-  json j;
-  j["input"] = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
-  j["n2"] = rational_str(r.spec.n2);
-  j["n"] = r.abs_n;
-  j["n_negative"] = r.n_negative;
-  j["discriminant"] = json_integer(r.spec.discriminant().str());
-  j["resonant"] = bool(r.pair);
-  if (r.pair) {
-    j["pair"] = pair_json(*r.pair);
-    j["pair_analysis"] = pair_values_json(*r.pair, *r.pair_values);
-  } else {
-    j["pair"] = nullptr;
-  }
-  j["t_min_paper"] = r.t_min_paper;
-  j["horizon"] = a.horizon;
-  j["h_min_horizon"] = r.h_min_horizon;
-  j["t_min_horizon"] = r.t_min_horizon;
-  j["min_at_horizon_end"] = r.min_at_horizon_end;
-  j["horizon_source"] = r.horizon_source;
-  j["inf_all_time"] = r.inf_all_time;
-  j["inf_attained"] = r.inf_attained;
-  j["inf_reason"] = r.inf_reason;
-  j["convergents"] = convergents_json(r.convergents);
-  j["digits"] = a.digits;
-  return json_dump(j) + "\n";
-}
 
 // "(p, q)" padded, then n, r_res, t_first of each convergent's pair.
 void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows) {
@@ -122,7 +75,9 @@ std::string run_coupling(const coupling_args& a) {
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   const coupling_report r = analyse_coupling(spec, opt);
-  return a.json ? coupling_json(a, r) : coupling_text(a, r);
+  if (!a.json) return coupling_text(a, r);
+  const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
+  return json_dump(coupling_report_json(input, a.horizon, unsigned(a.digits), r)) + "\n";
 }
 
 command_runner install_coupling(CLI::App& app) {

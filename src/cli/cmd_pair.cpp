@@ -6,6 +6,7 @@
 #include <gyrores/inscribed/global_search.hpp>
 #include <gyrores/inscribed/verified_pair.hpp>
 #include <gyrores/io/json.hpp>
+#include <gyrores/io/report_json.hpp>
 
 #include "cli_options.hpp"
 #include "commands.hpp"
@@ -24,55 +25,6 @@ solver_choice parse_method(const std::string& method) {
   if (method == "lattice") return solver_choice::lattice;
   if (method == "global") return solver_choice::global_search;
   throw usage_error("--method must be 'lattice' or 'global', got '" + method + "'");
-}
-
-// The pair's integers as JSON: tau, sigma, delta, its residue and 2-adic valuation, order.
-json pair_integers_json(const resonant_pair<big_int>& p) {
-  json j = pair_json(p);
-  j["delta"] = json_integer(big_int(p.delta()).str());
-  j["delta_mod4"] = p.delta_mod4();
-  j["v2_delta"] = p.v2_delta();
-  j["degenerate"] = p.degenerate();
-  j["order"] = json_integer(p.order().str());
-  return j;
-}
-
-json asymptotic_json(const verified_pair_report& r) {
-  json asy;
-  asy["applicable"] = r.asymptotic_applicable;
-  asy["reason"] = r.asymptotic_reason;
-  json lobes = json::array();
-  for (const auto& l : r.lobes) {
-    json lo;
-    lo["k"] = json_integer(l.k);
-    lo["m"] = json_integer(l.m);
-    for (auto [name, value] : {std::pair{"s", &l.s}, {"u_asy", &l.u_asy}, {"theta_asy", &l.theta_asy},
-                               {"theta_c", &l.theta_c}, {"error", &l.error}, {"bound", &l.bound}, {"ratio", &l.ratio}})
-      lo[name] = *value;
-    lo["holds_global_min"] = l.holds_global_min;
-    lobes.push_back(lo);
-  }
-  asy["lobes"] = lobes;
-  return asy;
-}
-
-std::string pair_report_json(const resonant_pair<big_int>& p, const verified_pair_report& r) {
-  json j = pair_integers_json(p);
-  for (auto [name, value] : {std::pair{"beat_ratio", &r.beat_ratio}, {"n", &r.n}, {"omega1", &r.omega1},
-                             {"omega2", &r.omega2}, {"rho0", &r.rho0}, {"qdot0", &r.qdot0}, {"r_res", &r.r_res},
-                             {"h_min", &r.h_min}, {"h_z_max", &r.h_z_max}, {"theta_first", &r.theta_first},
-                             {"t_first", &r.t_first}})
-    j[name] = *value;
-  j["minimisers"] = r.minimisers;
-  j["t_min_paper"] = r.t_min_paper;
-  j["asymptotic"] = asymptotic_json(r);
-  j["r_res_asy"] = r.asymptotic_applicable ? json(r.r_res_asy.value()) : json(nullptr);
-  j["r_res_asy_rel_error"] = r.asymptotic_applicable ? json(r.r_res_asy_rel_error.value()) : json(nullptr);
-  j["method"] = r.method;
-  j["cross_checked"] = r.cross_checked;
-  j["digits"] = r.digits;
-  j["working_precision"] = {{"type", r.working_precision.name()}, {"bits", r.working_precision.bits}};
-  return json_dump(j) + "\n";
 }
 
 // "  <key padded to 14 columns><value>".
@@ -128,7 +80,7 @@ std::string run_pair(const pair_args& args) {
     throw compute_error("the global search is limited to order tau + sigma <= " + std::to_string(global_limit) +
                         "; use --method lattice for " + p.str());
   const verified_pair_report r = verify_pair(p, opt);
-  return args.json ? pair_report_json(p, r) : pair_report_text(p, r);
+  return args.json ? json_dump(pair_report_json(p, r)) + "\n" : pair_report_text(p, r);
 }
 
 command_runner install_pair(CLI::App& app) {

@@ -1,20 +1,17 @@
-// How the CLI prints a pair and its verified values (design, pareto, coupling, report): JSON
-// objects, the Pareto CSV row, text.
+// How the CLI prints a pair and its verified values (design, pareto, coupling, report): the
+// Pareto CSV row and text.
 #pragma once
 #include <string>
 
 #include <gyrores/design/design.hpp>
 #include <gyrores/inscribed/verified_pair.hpp>
 #include <gyrores/io/json.hpp>
+#include <gyrores/io/report_json.hpp>
 #include <gyrores/model/pair.hpp>
 
 namespace gyrores::cli {
 
-// {"tau": ..., "sigma": ...} (integers of any size as JSON numbers).
-json pair_json(const resonant_pair<big_int>& p);
-
-// {"tau", "sigma", "n", "r_res", "h_min", "t_first", "t_min_paper", "degenerate"}.
-json pair_values_json(const resonant_pair<big_int>& p, const verified_pair_values& v);
+// The JSON objects (pair_json, pair_values_json) are io/report_json.hpp's, shared with Python.
 
 // The Pareto front CSV (pareto --out, report's pareto-front.csv): header line and one row.
 inline constexpr const char* pareto_csv_header = "tau,sigma,order,delta,degenerate,n,r_res,t_first,t_min_paper\n";
