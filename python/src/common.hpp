@@ -1,0 +1,54 @@
+// What every binding file of the Python module shares: the call into the library (GIL released,
+// one library call at a time), Python integers and digits to the library's types, and JSON
+// (gyrores::json, io/json.hpp) to Python objects.
+#pragma once
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include <gyrores/core/integer.hpp>
+#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/io/json.hpp>
+#include <gyrores/model/pair.hpp>
+
+namespace gyrores::python {
+
+namespace py = pybind11;
+
+// Serialises the library calls of all Python threads: Boost 1.74 keeps MPFR's default precision
+// in one process-wide variable (sweep/engine.hpp), so two verify_pair calls must not overlap.
+std::mutex& library_mutex();
+
+// Runs f() with the GIL released (other Python threads keep running) and the library mutex held.
+// Lock order: the GIL is released before the mutex is taken, so a callback that re-acquires the
+// GIL while the mutex is held (sweep progress) cannot deadlock.
+template <class F> auto call_library(F&& f) {
+  py::gil_scoped_release release;
+  std::lock_guard<std::mutex> lock(library_mutex());
+  return std::forward<F>(f)();
+}
+
+// A Python int of any size as the library's integer; usage_error naming `what` for anything
+// else (a float, a bool, a string).
+big_int big_int_of(const py::handle& value, const std::string& what);
+// The resonant pair (tau, sigma); usage_error from the pair's own checks (model/pair.hpp).
+resonant_pair<big_int> pair_of(const py::handle& tau, const py::handle& sigma);
+// digits in [lo, hi] or usage_error "digits must be in [lo, hi], got D" (the library's wording).
+unsigned checked_digits(long long digits, long long lo, long long hi);
+// A decimal or fraction given as a Python int, float or str, as text for parse_rational.
+std::string rational_text(const py::handle& value);
+
+// A JSON value as Python objects (dict in key order, list, int of any size, str, bool, None),
+// through json_dump so that big integers keep every digit.
+py::object to_python(const json& j);
+
+// The module's areas, one file each.
+void bind_pair(py::module_& m);      // pair, asymptotics
+void bind_certify(py::module_& m);   // certify, check
+void bind_design(py::module_& m);    // design, pareto, coupling
+void bind_sweep(py::module_& m);     // enumerate_pairs, sweep
+
+}  // namespace gyrores::python

@@ -1,0 +1,18 @@
+// The compiled part of the Python package `gyrores`: _gyrores. Each area registers its
+// functions (common.hpp); this file maps the library's errors (core/error.hpp) to Python:
+// usage_error -> gyrores.UsageError (a ValueError), compute_error -> gyrores.ComputeError (an
+// ArithmeticError), with the library's one-line messages.
+#include <gyrores/core/error.hpp>
+
+#include "common.hpp"
+
+PYBIND11_MODULE(_gyrores, m) {
+  namespace gp = gyrores::python;
+  m.doc() = "Compiled bindings of the gyrores C++ library; use the package gyrores.";
+  pybind11::register_exception<gyrores::usage_error>(m, "UsageError", PyExc_ValueError);
+  pybind11::register_exception<gyrores::compute_error>(m, "ComputeError", PyExc_ArithmeticError);
+  gp::bind_pair(m);
+  gp::bind_certify(m);
+  gp::bind_design(m);
+  gp::bind_sweep(m);
+}

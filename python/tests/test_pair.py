@@ -1,0 +1,110 @@
+# gyrores.pair and gyrores.asymptotics against the CLI and against independent values.
+import math
+
+import pytest
+
+import gyrores
+
+# r_res of (6, 5) to 40 digits (the certificate's enclosure, docs: README "Certificates").
+R_RES_6_5 = "5.074580579103337246371565118651053368385e-02"
+
+
+def test_pair_matches_cli_json(cli_json):
+    for tau, sigma, digits in [(6, 5, 30), (11, 9, 20), (9, 4, 17), (2, 1, 12)]:
+        expected = cli_json("pair", str(tau), str(sigma), "--digits", str(digits))
+        assert gyrores.pair(tau, sigma, digits=digits).to_dict(raw=True) == expected
+
+
+def test_big_pair_matches_cli_json(cli_json):
+    tau = 10**30 + 1
+    expected = cli_json("pair", str(tau), str(10**30), "--digits", "25")
+    got = gyrores.pair(tau, 10**30, digits=25).to_dict(raw=True)
+    assert got == expected
+    assert got["tau"] == tau and got["order"] == 2 * 10**30 + 1
+
+
+def test_r_res_of_6_5_at_40_digits():
+    r = gyrores.pair(6, 5, digits=40)
+    assert r.to_dict(raw=True)["r_res"] == R_RES_6_5
+    assert r.digits == 40 and r.method == "lattice" and r.cross_checked
+
+
+def test_reals_are_floats_up_to_15_digits():
+    r = gyrores.pair(6, 5, digits=15)
+    assert isinstance(r.r_res, float) and isinstance(r.minimisers, tuple)
+    assert r.r_res == pytest.approx(float(R_RES_6_5), rel=1e-14)
+    assert r["t_first"] == pytest.approx(r.theta_first * math.sqrt(30), rel=1e-14)
+
+
+def test_reals_beyond_15_digits_are_mpf_or_text():
+    r = gyrores.pair(6, 5, digits=40)
+    try:
+        import mpmath
+    except ImportError:
+        assert r.r_res == R_RES_6_5
+    else:
+        assert isinstance(r.r_res, mpmath.mpf)
+        with mpmath.workdps(45):
+            assert abs(r.r_res - mpmath.mpf(R_RES_6_5)) < mpmath.mpf("1e-43")
+
+
+def test_degenerate_pair_is_exact():
+    r = gyrores.pair(11, 9, digits=30)
+    assert r.degenerate and r.method == "degenerate-exact"
+    raw = r.to_dict(raw=True)
+    assert raw["r_res"] == "0." + "0" * 29 + "e+00"
+    # pi/2 to 30 digits, written out independently.
+    assert raw["theta_first"] == "1.57079632679489661923132169164e+00"
+    assert gyrores.pair(11, 9, digits=12).theta_first == pytest.approx(math.pi / 2, rel=1e-11)  # 12 digits
+
+
+def test_qdot0_scales_r_res_and_global_method_agrees():
+    r1 = gyrores.pair(9, 4, digits=14)
+    r3 = gyrores.pair(9, 4, digits=14, qdot0=3)
+    assert r3.r_res == pytest.approx(3 * r1.r_res, rel=1e-13)
+    assert r3.t_first == r1.t_first
+    assert gyrores.pair(9, 4, digits=14, method="global").r_res == r1.r_res
+
+
+def test_certified_pair_encloses_the_estimate():
+    r = gyrores.pair(6, 5, digits=20, certified=True)
+    assert r.global_minimality is True
+    for key in ("r_res", "theta_first", "t_first"):
+        lo, hi = r[key + "_enclosure"]
+        assert float(lo) <= float(r.to_dict(raw=True)[key]) <= float(hi)
+    assert "global_minimality=True" in repr(r)
+
+
+@pytest.mark.parametrize("args, kwargs, message", [
+    ((6, 4), {}, "not coprime"),
+    ((5, 6), {}, "tau must exceed sigma"),
+    ((6, 5), {"digits": 0}, "digits must be in [1, 10000], got 0"),
+    ((6, 5), {"qdot0": "-1"}, "qdot0"),
+    ((6, 5), {"method": "fast"}, "method must be"),
+    ((6.0, 5), {}, "tau must be an integer"),
+    ((6, 5), {"qdot0": 2, "certified": True}, "qdot0 = 1"),
+])
+def test_bad_input_raises_value_error(args, kwargs, message):
+    with pytest.raises(ValueError, match=None) as e:
+        gyrores.pair(*args, **kwargs)
+    assert message in str(e.value) and "\n" not in str(e.value)
+    assert isinstance(e.value, gyrores.UsageError)
+
+
+def test_global_search_beyond_its_limit_is_arithmetic_error():
+    with pytest.raises(ArithmeticError, match="global search is limited"):
+        gyrores.pair(10**6 + 1, 10**6, method="global")
+
+
+def test_asymptotics_match_the_pair_report(cli_json):
+    a = gyrores.asymptotics(6, 5, digits=20)
+    expected = cli_json("pair", "6", "5", "--digits", "20")
+    got = gyrores._gyrores._asymptotics(6, 5, 20)
+    assert got["lobes"] == expected["asymptotic"]["lobes"]
+    assert got["r_res_asy"] == expected["r_res_asy"]
+    assert a["applicable"] and len(a["lobes"]) == 2 and a["lobes"][0]["k"] == 5
+
+
+def test_asymptotics_not_applicable_for_large_x():
+    a = gyrores.asymptotics(3, 1, digits=10)  # x = b/a = 1/2
+    assert not a["applicable"] and a["r_res_asy"] is None and a["reason"]
