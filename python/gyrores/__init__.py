@@ -7,7 +7,9 @@ as ``gyrores pair --json`` does; ``certify`` and ``check`` produce and re-prove 
 certificates; ``asymptotics``, ``design``, ``pareto`` and ``coupling`` mirror the commands of the
 same names; ``enumerate_pairs`` and ``sweep`` visit every pair up to an order. Reals come back as
 Python floats for ``digits <= 15``, as ``mpmath.mpf`` beyond when mpmath is installed, and as
-decimal strings otherwise; certificates keep the exact strings of their JSON form. Bad input
+decimal strings otherwise (an ``mpf`` holds every verified digit, but mpmath prints and computes at
+its own ``mpmath.mp.dps``: raise it to see or keep them all); certificates keep the exact strings
+of their JSON form. Bad input
 raises ``UsageError`` (a ``ValueError``), a result that cannot be computed honestly
 ``ComputeError`` (an ``ArithmeticError``), with the library's one-line messages.
 """
