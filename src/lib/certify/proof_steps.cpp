@@ -1,11 +1,23 @@
 // The proof steps of certify/proof_steps.hpp (proofs/global-minimality.md).
 #include <gyrores/certify/proof_steps.hpp>
 
+#include <atomic>
+
+#include <gyrores/certify/mutation.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/interval_newton.hpp>
 #include <gyrores/inscribed/lattice.hpp>
 
 namespace gyrores::proof {
+
+namespace {
+std::atomic<mutation> current_mutation{mutation::none};
+bool mutated(mutation m) { return current_mutation.load(std::memory_order_relaxed) == m; }
+}  // namespace
+
+mutation active_mutation() { return current_mutation.load(); }
+scoped_mutation::scoped_mutation(mutation m) : previous_(current_mutation.exchange(m)) {}
+scoped_mutation::~scoped_mutation() { current_mutation.store(previous_); }
 
 constants constants_of(const resonant_pair<big_int>& p) {
   return {resonant_constants_of<I>(p, I(1)), p.tau(), p.sigma(), p.order(), big_int(p.delta())};
@@ -15,7 +27,8 @@ I mu_of(const constants& k, const big_int& m) { return k.c.pi * real_from_int<I>
 
 I f_of(const constants& k, const I& mu, const I& U) {
   I W = mu - k.c.x * U;
-  return cos(U) * sin(W) - k.c.x * sin(U) * cos(W);
+  I f = cos(U) * sin(W) - k.c.x * sin(U) * cos(W);
+  return mutated(mutation::f_sign_flip) ? I(-f) : f;
 }
 
 I df_of(const constants& k, const I& mu, const I& U) {
@@ -53,11 +66,15 @@ bool meets_digits(const I& x, unsigned digits) {
 }
 
 std::optional<I> certify_root(const constants& k, const I& mu, const P& guess, const P& scale) {
+  if (mutated(mutation::root_always)) return interval_of(P(guess - scale), P(guess + scale));
+  if (mutated(mutation::root_never)) return std::nullopt;
   return interval_newton([&](const I& U) { return f_of(k, mu, U); }, [&](const I& U) { return df_of(k, mu, U); },
                          guess, scale, 40);
 }
 
 bool certify_basin(const constants& k, const I& mu, const I& Y) {
+  if (mutated(mutation::basin_always)) return true;
+  if (mutated(mutation::basin_never)) return false;
   I lo = interval_point(interval_lower(Y)), hi = interval_point(interval_upper(Y));
   I flo = f_of(k, mu, lo), fhi = f_of(k, mu, hi);
   bool sign_change = (certainly_positive(flo) && certainly_negative(fhi)) ||
@@ -103,6 +120,8 @@ P split_point(const P& lo, const P& hi, const std::vector<I>& basins) {
 }  // namespace
 
 bool exclude_lobe(const constants& k, const lobe& L, const std::vector<I>& basins, const I& bound, cover_stats& st) {
+  if (mutated(mutation::exclude_always)) return true;
+  if (mutated(mutation::exclude_never)) return false;
   big_int m = (2 * L.j + 1) * k.a - 2 * L.k * k.b;
   I mu = mu_of(k, m);
   I half_pi = k.c.pi / 2;
@@ -124,12 +143,13 @@ bool exclude_lobe(const constants& k, const lobe& L, const std::vector<I>& basin
 }
 
 I theta_of(const constants& k, const big_int& kk, const I& U) {
-  big_int kr = int_mod(kk, k.a);
+  big_int kr = int_mod(big_int(mutated(mutation::theta_off_by_one) ? kk + 1 : kk), k.a);
   return 2 * (k.c.pi * real_from_int<I>(kr) + U) / real_from_int<I>(k.a);
 }
 
 std::vector<image> images_of(const constants& k, const big_int& kk, const big_int& jj, bool with_shift) {
   std::vector<image> out{{kk, jj, false}, {k.a - kk, k.b - 1 - jj, true}};
+  if (mutated(mutation::images_no_mirror)) out.pop_back();
   if (with_shift) {
     big_int ks = kk + k.a / 2, js = jj + k.b / 2;
     out.push_back({ks, js, false});
