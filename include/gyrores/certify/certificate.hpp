@@ -23,6 +23,7 @@
 #include <vector>
 
 #include <gyrores/core/integer.hpp>
+#include <gyrores/core/real.hpp>
 
 namespace gyrores {
 
@@ -59,6 +60,10 @@ struct check_verdict {
   bool holds = false;
   std::string failure;
 };
+
+// Decimal digits of the numbers a certificate records at `bits` of precision: the digits the
+// precision carries plus 3 (claims, X); the cover level's Y and bound add 2 and 6 more.
+inline unsigned certificate_digits_for_bits(unsigned bits) { return bits_to_digits10(bits) + 3u; }
 
 // The obligation with this id, or nullptr.
 const certificate_obligation* find_obligation(const certificate& c, const std::string& id);

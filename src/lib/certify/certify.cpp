@@ -16,9 +16,6 @@ namespace {
 using proof::I;
 using proof::P;
 
-// Decimal digits printed for an enclosure computed at `bits` bits: all it carries, plus 3.
-unsigned decimal_digits_for_bits(unsigned bits) { return bits_to_digits10(bits) + 3u; }
-
 certificate_obligation degenerate_obligation(const resonant_pair<big_int>& p) {
   return {"degenerate",
           "delta = 2 mod 4 forces tau, sigma odd with tau + sigma = 0 mod 4, so cos(tau pi/2) = cos(sigma pi/2) = 0 "
@@ -37,7 +34,7 @@ certificate certify_degenerate(const resonant_pair<big_int>& p, const certify_op
     auto K = proof::constants_of(p);
     I th = K.c.pi / 2, t = K.c.sqrt_ts * th;
     if (!proof::meets_digits(th, cert.digits) || !proof::meets_digits(t, cert.digits)) continue;
-    unsigned d = decimal_digits_for_bits(bits);
+    unsigned d = certificate_digits_for_bits(bits);
     cert.working_bits = cert.cover_bits = bits;
     cert.global_minimality = true;
     cert.global_minimality_note = "proved (integer arithmetic: delta = 2 mod 4)";
@@ -82,7 +79,7 @@ cover_level prove_cover_level(const resonant_pair<big_int>& p, const certify_opt
   I Y = find_basin(p, K, mu, loc.X);
   cover_level out;
   out.bits = bits;
-  unsigned d = decimal_digits_for_bits(bits) + 2;
+  unsigned d = certificate_digits_for_bits(bits) + 2;
   out.Y_lo = format_scientific(interval_lower(Y), d + 4);
   out.Y_hi = format_scientific(interval_upper(Y), d + 4);
   I Yp = interval_from_decimal(out.Y_lo, out.Y_hi);
@@ -142,7 +139,7 @@ certificate certify_working_level(const resonant_pair<big_int>& p, const certify
     auto loc = proof::enclose_minimisers(p, K);
     auto enough = [&](const I& x) { return proof::meets_digits(x, cert.digits); };
     if (!enough(loc.r) || (proved && (!enough(loc.theta_first) || !enough(loc.t_first)))) continue;
-    unsigned d = decimal_digits_for_bits(bits);
+    unsigned d = certificate_digits_for_bits(bits);
     cert.working_bits = bits;
     auto r = interval_to_decimal(loc.r, d);
     if (proved) {

@@ -8,6 +8,7 @@
 
 #include <gyrores/certify/cover.hpp>
 #include <gyrores/certify/proof_steps.hpp>
+#include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/model/pair.hpp>
 
@@ -57,9 +58,16 @@ std::optional<check_verdict> check_header(const certificate& c, const certify_op
 
 // delta = 2 mod 4: the integer facts, r_res = [0, 0], and theta_first = pi/2.
 check_verdict check_degenerate(const certificate& c, const resonant_pair<big_int>& p) {
-  if (!find_obligation(c, "degenerate")) return fail("obligation degenerate: missing");
+  const auto* deg = find_obligation(c, "degenerate");
+  if (!deg) return fail("obligation degenerate: missing");
   if (p.delta_mod4() != 2 || int_mod(big_int(p.tau() + p.sigma()), big_int(4)) != 0)
     return fail("obligation degenerate: integer facts do not hold");
+  if (field(*deg, "delta_mod4") != std::to_string(p.delta_mod4()) ||
+      field(*deg, "tau_mod4") != int_mod(p.tau(), big_int(4)).str() ||
+      field(*deg, "sigma_mod4") != int_mod(p.sigma(), big_int(4)).str())
+    return fail("obligation degenerate: recorded residues differ from the pair's");
+  if (c.global_minimality_note != "proved (integer arithmetic: delta = 2 mod 4)")
+    return fail("global_minimality_note: must be \"proved (integer arithmetic: delta = 2 mod 4)\"");
   scoped_digits sd(digits10_for_bits(c.working_bits));
   auto K = proof::constants_of(p);
   I th = K.c.pi / 2, t = K.c.sqrt_ts * th;
@@ -71,6 +79,31 @@ check_verdict check_degenerate(const certificate& c, const resonant_pair<big_int
   if (c.minimiser_count != 2) return fail("claim minimiser_count: degenerate pairs have exactly 2 zeros");
   if (!c.global_minimality) return fail("claim global_minimality: must be true for a degenerate pair");
   return {true, ""};
+}
+
+// The local root's frame and the number of symmetry images, as recorded, against the checker's.
+std::optional<check_verdict> check_recorded_frame(const certificate& c, const proof::minimiser_enclosures& loc) {
+  const auto& root = *find_obligation(c, "local-root");
+  if (field(root, "k") != loc.frame.k.str() || field(root, "j") != loc.frame.j.str() ||
+      field(root, "m") != loc.frame.m.str())
+    return fail("obligation local-root: the frame (k, j, m) is not the minimiser's");
+  if (field(*find_obligation(c, "symmetry"), "images") != std::to_string(loc.images.size()))
+    return fail("obligation symmetry: the minimiser has " + std::to_string(loc.images.size()) + " images");
+  return std::nullopt;
+}
+
+// The recorded root box X (working level): it contains the checker's own box and lies in the
+// basin Y, so the claims come from the root the basin and the cover are about.
+std::optional<check_verdict> check_recorded_root(const certificate& c, const proof::minimiser_enclosures& loc) {
+  const auto& root = *find_obligation(c, "local-root");
+  const auto& basin = *find_obligation(c, "basin");
+  scoped_digits fine(digits10_for_bits(c.working_bits + 64));
+  if (!decimal_interval_contains(field(root, "X_lo"), field(root, "X_hi"), loc.X))
+    return fail("obligation local-root: X does not contain the checker's root box");
+  if (!decimal_interval_contains(field(basin, "Y_lo"), field(basin, "Y_hi"),
+                                 interval_from_decimal(field(root, "X_lo"), field(root, "X_hi"))))
+    return fail("obligation local-root: X is not inside the basin Y");
+  return std::nullopt;
 }
 
 // At cover_bits: the local root, the basin on the stated Y, and (when global minimality is
@@ -85,19 +118,37 @@ std::optional<check_verdict> check_cover_level(const certificate& c, const reson
   I Y = interval_from_decimal(field(basin, "Y_lo"), field(basin, "Y_hi"));
   if (!certainly_subset(loc.X, Y)) return fail("obligation basin: Y does not contain the certified root");
   if (!proof::certify_basin(K, mu, Y)) return fail("obligation basin: does not hold on Y");
-  if (!c.global_minimality) return std::nullopt;
+  if (auto bad = check_recorded_frame(c, loc)) return bad;
+  const auto& cover = *find_obligation(c, "cover");
+  const std::string bits = std::to_string(c.cover_bits);
+  if (field(basin, "bits") != bits || field(cover, "bits") != bits) return fail("obligations basin, cover: bits differ from cover_bits");
   I bound = interval_point(interval_upper(interval_sqr(loc.r)));
-  std::string strategy = field(*find_obligation(c, "cover"), "strategy");
+  if (field(cover, "bound") != format_scientific(interval_upper(bound), certificate_digits_for_bits(c.cover_bits) + 2, MPFR_RNDU))
+    return fail("obligation cover: bound is not r_hi^2 at cover_bits");
+  const std::string strategy = field(cover, "strategy");
+  const std::string& note = c.global_minimality_note;
+  if (c.global_minimality ? note != "proved (" + strategy + ")" : note.rfind("not proved", 0) != 0)
+    return fail("global_minimality_note: must be \"proved (strategy)\" or start with \"not proved\"");
+  if (strategy.empty()) {  // no cover was attempted (the pair is beyond the producer's limits)
+    if (c.global_minimality || field(cover, "lobes") != "0" || field(cover, "boxes") != "0")
+      return fail("obligation cover: no strategy, yet lobes, boxes or global minimality are recorded");
+    return std::nullopt;
+  }
   std::string t;
-  if (strategy == "slow-nodes") {
+  if (strategy == "slow-nodes" && c.global_minimality) {
     const auto* ray = find_obligation(c, "rayleigh");
     if (!ray) return fail("obligation rayleigh: missing");
     t = field(*ray, "t");
   }
+  // The recorded strategy is re-run (without the producer's order limit): it must prove exactly
+  // when global minimality is claimed, with the recorded number of lobes and boxes.
   certify_options any_order = opt;
   any_order.max_lobes = std::numeric_limits<std::int64_t>::max();
   auto res = proof::run_cover(K, proof::basins_by_lobe(K, loc.images, Y), bound, any_order, strategy, t);
-  if (!res.proved) return fail("obligation cover: " + res.note);
+  if (c.global_minimality && !res.proved) return fail("obligation cover: " + res.note);
+  if (!c.global_minimality && res.proved) return fail("obligation cover: proves, but global minimality is not claimed");
+  if (field(cover, "lobes") != std::to_string(res.stats.lobes) || field(cover, "boxes") != std::to_string(res.stats.boxes))
+    return fail("obligation cover: recorded lobes or boxes differ from the checker's run");
   return std::nullopt;
 }
 
@@ -139,6 +190,7 @@ check_verdict check_certificate(const certificate& c, const certify_options& opt
   scoped_digits sd(digits10_for_bits(c.working_bits));
   auto K = proof::constants_of(p);
   auto loc = proof::enclose_minimisers(p, K);
+  if (auto bad = check_recorded_root(c, loc)) return *bad;
   return c.global_minimality ? check_global_claims(c, loc) : check_upper_bound_claim(c, loc);
 }
 
