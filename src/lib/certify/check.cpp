@@ -78,6 +78,7 @@ check_verdict check_degenerate(const certificate& c, const resonant_pair<big_int
     return fail("claims: fewer digits than stated");
   if (c.minimiser_count != 2) return fail("claim minimiser_count: degenerate pairs have exactly 2 zeros");
   if (!c.global_minimality) return fail("claim global_minimality: must be true for a degenerate pair");
+  if (c.cover_bits != c.working_bits) return fail("cover_bits: must equal working_bits for a degenerate pair");
   return {true, ""};
 }
 
@@ -172,6 +173,12 @@ check_verdict check_global_claims(const certificate& c, const proof::minimiser_e
 check_verdict check_upper_bound_claim(const certificate& c, const proof::minimiser_enclosures& loc) {
   if (c.r_res.first != "0") return fail("claim r_res: without global minimality the lower end must be 0");
   if (!claim_contains(c, c.r_res, loc.r)) return fail("claim r_res: upper bound below the checker's enclosure");
+  {  // hi is the D-digit upper end of |q| at the root: [checker's lower end, hi] is D digits narrow
+    scoped_digits sd(digits10_for_bits(c.working_bits) + 10);
+    const I hi = interval_from_decimal(c.r_res.second, c.r_res.second);
+    if (!proof::meets_digits(interval_of(interval_lower(loc.r), interval_upper(hi)), c.digits))
+      return fail("claim r_res: the upper bound is not within the stated digits of the checker's |q|");
+  }
   if (!c.theta_first.first.empty() || !c.t_first.first.empty() || c.minimiser_count != 0)
     return fail("claims: theta_first, t_first and minimiser_count need global minimality");
   return {true, ""};
