@@ -62,8 +62,15 @@ struct check_verdict {
 };
 
 // Decimal digits of the numbers a certificate records at `bits` of precision: the digits the
-// precision carries plus 3 (claims, X); the cover level's Y and bound add 2 and 6 more.
+// precision carries plus 3 (claims, X); the cover level adds 6 more for Y and 2 for the bound.
 inline unsigned certificate_digits_for_bits(unsigned bits) { return bits_to_digits10(bits) + 3u; }
+
+// The texts the producer writes and the checker requires: the global-minimality note of a
+// degenerate pair and of a proved cover, and the cover's bound r_hi^2 (rounded up, at the digits
+// of cover_bits plus 2).
+inline constexpr const char* degenerate_note = "proved (integer arithmetic: delta = 2 mod 4)";
+inline std::string proved_note(const std::string& strategy) { return "proved (" + strategy + ")"; }
+std::string cover_bound_text(const mpfr_real& bound, unsigned cover_bits);
 
 // The obligation with this id, or nullptr.
 const certificate_obligation* find_obligation(const certificate& c, const std::string& id);

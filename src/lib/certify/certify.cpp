@@ -37,7 +37,7 @@ certificate certify_degenerate(const resonant_pair<big_int>& p, const certify_op
     unsigned d = certificate_digits_for_bits(bits);
     cert.working_bits = cert.cover_bits = bits;
     cert.global_minimality = true;
-    cert.global_minimality_note = "proved (integer arithmetic: delta = 2 mod 4)";
+    cert.global_minimality_note = degenerate_note;
     cert.r_res = {"0", "0"};
     cert.theta_first = interval_to_decimal(th, d);
     cert.t_first = interval_to_decimal(t, d);
@@ -86,7 +86,7 @@ cover_level prove_cover_level(const resonant_pair<big_int>& p, const certify_opt
   if (!certainly_subset(loc.X, Yp) || !proof::certify_basin(K, mu, Yp))
     throw compute_error("certify: the basin of " + p.str() + " does not survive decimal rounding");
   I bound = interval_point(interval_upper(interval_sqr(loc.r)));
-  out.bound = format_scientific(interval_upper(bound), d, MPFR_RNDU);
+  out.bound = cover_bound_text(interval_upper(bound), bits);
   out.cover = proof::run_cover(K, proof::basins_by_lobe(K, loc.images, Yp), bound, opt, "", "");
   return out;
 }
@@ -172,7 +172,7 @@ certificate certify_pair(const resonant_pair<big_int>& p, unsigned digits, const
   cover_level level = prove_cover_level(p, opt, cover_bits);
   cert.cover_bits = cover_bits;
   cert.global_minimality = level.cover.proved;
-  cert.global_minimality_note = level.cover.proved ? "proved (" + level.cover.strategy + ")" : level.cover.note;
+  cert.global_minimality_note = level.cover.proved ? proved_note(level.cover.strategy) : level.cover.note;
   return certify_working_level(p, opt, level, std::move(cert));
 }
 

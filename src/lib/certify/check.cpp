@@ -66,8 +66,8 @@ check_verdict check_degenerate(const certificate& c, const resonant_pair<big_int
       field(*deg, "tau_mod4") != int_mod(p.tau(), big_int(4)).str() ||
       field(*deg, "sigma_mod4") != int_mod(p.sigma(), big_int(4)).str())
     return fail("obligation degenerate: recorded residues differ from the pair's");
-  if (c.global_minimality_note != "proved (integer arithmetic: delta = 2 mod 4)")
-    return fail("global_minimality_note: must be \"proved (integer arithmetic: delta = 2 mod 4)\"");
+  if (c.global_minimality_note != degenerate_note)
+    return fail(std::string("global_minimality_note: must be \"") + degenerate_note + "\"");
   scoped_digits sd(digits10_for_bits(c.working_bits));
   auto K = proof::constants_of(p);
   I th = K.c.pi / 2, t = K.c.sqrt_ts * th;
@@ -124,11 +124,11 @@ std::optional<check_verdict> check_cover_level(const certificate& c, const reson
   const std::string bits = std::to_string(c.cover_bits);
   if (field(basin, "bits") != bits || field(cover, "bits") != bits) return fail("obligations basin, cover: bits differ from cover_bits");
   I bound = interval_point(interval_upper(interval_sqr(loc.r)));
-  if (field(cover, "bound") != format_scientific(interval_upper(bound), certificate_digits_for_bits(c.cover_bits) + 2, MPFR_RNDU))
+  if (field(cover, "bound") != cover_bound_text(interval_upper(bound), c.cover_bits))
     return fail("obligation cover: bound is not r_hi^2 at cover_bits");
   const std::string strategy = field(cover, "strategy");
   const std::string& note = c.global_minimality_note;
-  if (c.global_minimality ? note != "proved (" + strategy + ")" : note.rfind("not proved", 0) != 0)
+  if (c.global_minimality ? note != proved_note(strategy) : note.rfind("not proved", 0) != 0)
     return fail("global_minimality_note: must be \"proved (strategy)\" or start with \"not proved\"");
   if (strategy.empty()) {  // no cover was attempted (the pair is beyond the producer's limits)
     if (c.global_minimality || field(cover, "lobes") != "0" || field(cover, "boxes") != "0")
