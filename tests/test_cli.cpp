@@ -155,7 +155,8 @@ TEST_CASE("certify writes a certificate that check accepts; tampering and corrup
 
   const std::string text = gyrores::test::read_text(file);
   auto j = nlohmann::json::parse(text);
-  CHECK(j["format"] == "gyrores-certificate/1");
+  CHECK(j["format"] == "gyrores-certificate/2");
+  CHECK(j["tau"] == "6");  // integers as exact decimal strings
   CHECK(j["claims"]["r_res"][0].get<std::string>().substr(0, 10) == "5.07458057");
   auto write = [&](const std::string& name, const std::string& body) {
     std::ofstream out(dir + "/" + name);
@@ -169,11 +170,22 @@ TEST_CASE("certify writes a certificate that check accepts; tampering and corrup
   CHECK(bad.status == 1);
   CHECK(bad.err.find("r_res") != std::string::npos);
   auto t2 = j;
-  t2["tau"] = 7;
+  t2["tau"] = "7";
   CHECK(cli_run("check " + write("pair.json", t2.dump())).status == 1);
   auto t3 = j;
-  t3["obligations"].erase(t3["obligations"].begin());
+  t3["minimiser_lobes"].erase(t3["minimiser_lobes"].begin());
   CHECK(cli_run("check " + write("drop.json", t3.dump())).status == 1);
+  auto t5 = j;
+  t5["tau"] = 6;  // a JSON number is not the format's integer
+  CHECK(cli_run("check " + write("number.json", t5.dump())).status == 2);
+  // The cover certificate (format /1) still round-trips, and dropping an obligation fails.
+  const std::string file1 = dir + "/c1.json";
+  REQUIRE(cli_run("certify 6 5 --digits 20 --cover --out " + file1).status == 0);
+  CHECK(cli_run("check " + file1).status == 0);
+  auto j1 = nlohmann::json::parse(gyrores::test::read_text(file1));
+  CHECK(j1["format"] == "gyrores-certificate/1");
+  j1["obligations"].erase(j1["obligations"].begin());
+  CHECK(cli_run("check " + write("drop1.json", j1.dump())).status == 1);
   // Unreadable or malformed: exit 2.
   CHECK(cli_run("check " + write("trunc.json", text.substr(0, text.size() / 2))).status == 2);
   CHECK(cli_run("check " + write("garbage.json", "not json")).status == 2);

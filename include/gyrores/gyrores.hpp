@@ -22,6 +22,7 @@
 #include <gyrores/inscribed/degenerate.hpp>  // delta = 2 mod 4: r_res = 0 by integer arithmetic
 #include <gyrores/inscribed/global_search.hpp>  // reference method: all critical points
 #include <gyrores/inscribed/lattice.hpp>     // O(log tau) method for any pair
+#include <gyrores/inscribed/lattice_theorem.hpp> // the proved one-lobe reduction: lobes and u*
 #include <gyrores/inscribed/cross_check.hpp> // lattice vs global search
 #include <gyrores/inscribed/asymptotic.hpp>  // the paper's theta_asy, error bound, r_res_asy
 #include <gyrores/inscribed/pair_analysis.hpp>  // everything reported about one pair
@@ -32,6 +33,7 @@
 #include <gyrores/certify/cover.hpp>         // R > bound away from the minimiser's basins
 #include <gyrores/certify/certify.hpp>       // the producer: certify_pair
 #include <gyrores/certify/check.hpp>         // the checker: check_certificate
+#include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem (default)
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
 #include <gyrores/design/coupling_report.hpp>  // the coupling analysis with verified digits

@@ -129,14 +129,16 @@ def asymptotics(tau, sigma, digits=17):
     return _convert(_gyrores._asymptotics(tau, sigma, digits), _real_converter(digits))
 
 
-def certify(tau, sigma, digits=30):
+def certify(tau, sigma, digits=30, cover=False):
     """An interval certificate of r_res, theta_first and t_first of (tau, sigma), qdot0 = 1.
 
-    Returns the dict of ``gyrores certify`` ("gyrores-certificate/1": enclosures as [lo, hi]
-    decimal strings with at least `digits` correct digits, the proof's obligations); pass it to
-    check(), or json.dump it for ``gyrores check``. Raises UsageError / ComputeError.
+    Returns the dict of ``gyrores certify``: by default "gyrores-certificate/2" (the lattice
+    theorem, any pair: the minimisers' lobes, a bracket of u*, enclosures as [lo, hi] decimal
+    strings with at least `digits` correct digits); with cover=True "gyrores-certificate/1" (the
+    interval cover, independent of the theorem, within its order limits). Pass it to check(),
+    or json.dump it for ``gyrores check``. Raises UsageError / ComputeError.
     """
-    return _gyrores._certify(tau, sigma, digits)
+    return _gyrores._certify(tau, sigma, digits, bool(cover))
 
 
 def check(cert):

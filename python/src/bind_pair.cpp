@@ -2,7 +2,7 @@
 // as the dict of `gyrores pair --json` (same keys, same order, reals as verified decimal
 // strings; gyrores/__init__.py converts them), optionally with the enclosures of a certificate
 // (certify/certify.hpp).
-#include <gyrores/certify/certify.hpp>
+#include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/verified_digits.hpp>
@@ -35,19 +35,20 @@ verified_pair_report run_verify(const resonant_pair<big_int>& p, long long digit
 }
 
 // The certificate's claims added to a pair's dict: enclosures [lo, hi] and the global-minimality
-// verdict. Certificates are for qdot0 = 1 (certificate.hpp).
+// verdict (always proved: lattice-theorem certificates cover every pair). Certificates are for
+// qdot0 = 1 (theorem_certificate.hpp).
 void add_certificate(json& j, const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0) {
   if (parse_rational(qdot0, "qdot0") != 1)
     throw usage_error("certified=True needs qdot0 = 1 (certificates are stated for qdot0 = 1), got " + qdot0);
-  const certificate c = call_library([&] { return certify_pair(p, digits); });
+  const theorem_certificate c = call_library([&] { return certify_by_theorem(p, digits); });
   auto enclosure = [](const std::pair<std::string, std::string>& e) {
     return e.first.empty() ? json(nullptr) : json::array({e.first, e.second});
   };
   j["r_res_enclosure"] = enclosure(c.r_res);
   j["theta_first_enclosure"] = enclosure(c.theta_first);
   j["t_first_enclosure"] = enclosure(c.t_first);
-  j["global_minimality"] = c.global_minimality;
-  j["global_minimality_note"] = c.global_minimality_note;
+  j["global_minimality"] = true;
+  j["global_minimality_note"] = "proved (" + c.theorem + ")";
 }
 
 py::object pair_dict(const py::object& tau, const py::object& sigma, long long digits, const std::string& qdot0,

@@ -1,11 +1,17 @@
-// gyrores certify TAU SIGMA [--digits D] [--out FILE]
+// gyrores certify TAU SIGMA [--digits D] [--cover] [--out FILE]
 // gyrores check FILE        (exit 0: holds; 1: a claim or obligation fails; 2: unreadable/malformed)
+//
+// certify writes a lattice-theorem certificate ("gyrores-certificate/2") by default, the cover
+// certificate ("gyrores-certificate/1", proved without the theorem) with --cover. check reads
+// either: /2 with the independent Arb checker (src/checker/), /1 with check_certificate.
 
 #include <gyrores/certify/check.hpp>
 #include <gyrores/certify/certify.hpp>
+#include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/io/certificate_json.hpp>
 #include <gyrores/io/files.hpp>
 
+#include "certificate_checker.hpp"
 #include "cli_options.hpp"
 #include "commands.hpp"
 
@@ -15,12 +21,15 @@ namespace {
 struct certify_args {
   std::string tau, sigma, out;
   int digits = 30;
+  bool cover = false;
 };
 
 std::string run_certify(const certify_args& a) {
   check_digits_flag(a.digits, 1, 10000);
   auto p = parse_pair_arguments(a.tau, a.sigma);
-  std::string text = json_dump(certificate_to_json(certify_pair(p, unsigned(a.digits)))) + "\n";
+  std::string text = json_dump(a.cover ? certificate_to_json(certify_pair(p, unsigned(a.digits)))
+                                       : certificate_to_json(certify_by_theorem(p, unsigned(a.digits)))) +
+                     "\n";
   if (a.out.empty()) return text;
   write_file_atomically(a.out, text);
   return "";
@@ -31,6 +40,9 @@ command_runner install_certify(CLI::App& app) {
   auto sub = options(app).subcommand("certify", "Interval certificate of r_res, theta_first and t_first (qdot0 = 1)");
   add_pair_arguments(sub, a->tau, a->sigma);
   add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1..10000)");
+  sub.flag("--cover", a->cover,
+           "the cover certificate (format /1: interval cover of every lobe, independent of the lattice theorem; "
+           "limited to the orders docs/mathematics.md gives)");
   sub.add("--out", a->out, "write the certificate to FILE (atomically) instead of stdout");
   return [a] { return run_certify(*a); };
 }
@@ -42,10 +54,25 @@ struct check_outcome {
   std::string line;
 };
 
+// The "format" field of a certificate's text, or "" when it has none (then read as /1).
+std::string format_of(const std::string& text) {
+  try {
+    auto j = nlohmann::json::parse(text);
+    if (j.is_object() && j.contains("format") && j["format"].is_string()) return j["format"].get<std::string>();
+  } catch (const std::exception&) {
+  }
+  return "";
+}
+
 check_outcome check_file(const std::string& file) {
+  std::string text = read_file(file);
+  if (format_of(text) == theorem_certificate_format) {
+    auto v = gyrores_checker::check_theorem_certificate(text);
+    return {v.status, "gyrores check: " + v.message};
+  }
   certificate c;
   try {
-    c = certificate_from_text(read_file(file));
+    c = certificate_from_text(text);
   } catch (const usage_error& e) {
     return {2, std::string("gyrores check: unreadable or malformed: ") + e.what()};
   }

@@ -134,6 +134,24 @@ json certificate_to_json(const certificate& c) {
               {"obligations", obligations_json(c.obligations)}};
 }
 
+json certificate_to_json(const theorem_certificate& c) {
+  json lobes = json::array();
+  for (const auto& f : c.lobes) lobes.push_back(json{{"k", f.k.str()}, {"j", f.j.str()}, {"m", f.m.str()}});
+  json claims{{"r_res", claim_json(c.r_res)}, {"theta_first", claim_json(c.theta_first)},
+              {"t_first", claim_json(c.t_first)}};
+  return json{{"format", c.format},
+              {"theorem", c.theorem},
+              {"tau", c.tau.str()},
+              {"sigma", c.sigma.str()},
+              {"digits", c.digits},
+              {"degenerate", c.m_min == 0},
+              {"m_min", c.m_min},
+              {"minimiser_count", c.lobes.size()},
+              {"minimiser_lobes", lobes},
+              {"u_star", claim_json(c.u_star)},
+              {"claims", claims}};
+}
+
 certificate certificate_from_text(const std::string& text) {
   try {
     auto j = nlohmann::json::parse(text);
