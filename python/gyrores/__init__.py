@@ -74,8 +74,7 @@ class PairResult:
     Fields are attributes (``r.r_res``, ``r.minimisers``, ``r.asymptotic``...) and items
     (``r["r_res"]``), in the CLI's order; reals are converted as the module docstring says. With
     ``certified=True`` also ``r_res_enclosure``, ``theta_first_enclosure``, ``t_first_enclosure``
-    (``(lo, hi)`` decimal strings, or None when not claimed), ``global_minimality`` and
-    ``global_minimality_note``.
+    (``(lo, hi)`` decimal strings), ``certified`` and ``theorem`` (the theorem the proof rests on).
     """
 
     def __init__(self, raw):
@@ -101,20 +100,21 @@ class PairResult:
     def __repr__(self):
         v = self._raw
         shown = ", ".join(f"{k}={v[k]}" for k in ("r_res", "theta_first", "t_first", "n"))
-        extra = f", global_minimality={v['global_minimality']}" if "global_minimality" in v else ""
+        extra = f", certified={v['certified']}" if "certified" in v else ""
         return (f"PairResult(tau={v['tau']}, sigma={v['sigma']}, {shown}, minimisers={len(v['minimisers'])}, "
                 f"degenerate={v['degenerate']}, method={v['method']!r}, digits={v['digits']}{extra})")
 
 
-def pair(tau, sigma, digits=17, qdot0="1", certified=False, method="lattice"):
+def pair(tau, sigma, digits=17, qdot0="1", certified=True, method="lattice"):
     """Inscribed radius, minimisers and first-hit time of the resonant pair (tau, sigma).
 
     tau, sigma: Python ints of any size, coprime, tau > sigma >= 1. digits: significant digits
     of every real, 1..10000, each verified (two runs at different precisions and Ziv's rounding
     test: a strong consistency check, not a proof). qdot0: impulse amplitude > 0 (decimal text,
     int or float). method: "lattice" (any pair) or "global" (the reference search, order <=
-    100000). certified: also prove r_res, theta_first and t_first with an interval certificate
-    (qdot0 must be 1). Returns a PairResult; raises UsageError / ComputeError.
+    100000). certified (default, as ``gyrores pair``): also the proved enclosures of r_res,
+    theta_first and t_first (the lattice theorem and interval arithmetic, any pair); False is
+    ``gyrores pair --estimate``. Returns a PairResult; raises UsageError / ComputeError.
     """
     return PairResult(_gyrores._pair(tau, sigma, digits, _text(qdot0), method, certified))
 

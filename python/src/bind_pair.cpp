@@ -3,6 +3,8 @@
 // strings; gyrores/__init__.py converts them), optionally with the enclosures of a certificate
 // (certify/certify.hpp).
 #include <gyrores/certify/theorem_certificate.hpp>
+
+#include <optional>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/verified_digits.hpp>
@@ -34,29 +36,14 @@ verified_pair_report run_verify(const resonant_pair<big_int>& p, long long digit
   return call_library([&] { return verify_pair(p, opt); });
 }
 
-// The certificate's claims added to a pair's dict: enclosures [lo, hi] and the global-minimality
-// verdict (always proved: lattice-theorem certificates cover every pair). Certificates are for
-// qdot0 = 1 (theorem_certificate.hpp).
-void add_certificate(json& j, const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0) {
-  if (parse_rational(qdot0, "qdot0") != 1)
-    throw usage_error("certified=True needs qdot0 = 1 (certificates are stated for qdot0 = 1), got " + qdot0);
-  const theorem_certificate c = call_library([&] { return certify_by_theorem(p, digits); });
-  auto enclosure = [](const std::pair<std::string, std::string>& e) {
-    return e.first.empty() ? json(nullptr) : json::array({e.first, e.second});
-  };
-  j["r_res_enclosure"] = enclosure(c.r_res);
-  j["theta_first_enclosure"] = enclosure(c.theta_first);
-  j["t_first_enclosure"] = enclosure(c.t_first);
-  j["global_minimality"] = true;
-  j["global_minimality_note"] = "proved (" + c.theorem + ")";
-}
-
 py::object pair_dict(const py::object& tau, const py::object& sigma, long long digits, const std::string& qdot0,
                      const std::string& method, bool certified) {
   const auto p = pair_of(tau, sigma);
   const verified_pair_report r = run_verify(p, digits, qdot0, method);
   json j = pair_report_json(p, r);
-  if (certified) add_certificate(j, p, r.digits, qdot0);
+  std::optional<certified_enclosures> proved;
+  if (certified) proved = call_library([&] { return certify_enclosures(p, r.digits, qdot0); });
+  add_enclosures_json(j, proved ? &*proved : nullptr);
   return to_python(j);
 }
 

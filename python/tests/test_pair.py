@@ -68,11 +68,14 @@ def test_qdot0_scales_r_res_and_global_method_agrees():
 
 def test_certified_pair_encloses_the_estimate():
     r = gyrores.pair(6, 5, digits=20, certified=True)
-    assert r.global_minimality is True
+    assert r.certified is True and r.theorem == "lattice-theorem/1"
     for key in ("r_res", "theta_first", "t_first"):
         lo, hi = r[key + "_enclosure"]
         assert float(lo) <= float(r.to_dict(raw=True)[key]) <= float(hi)
-    assert "global_minimality=True" in repr(r)
+    assert "certified=True" in repr(r)
+    r3 = gyrores.pair(6, 5, digits=20, certified=True, qdot0=3)
+    lo, hi = r3["r_res_enclosure"]
+    assert float(lo) <= 3 * float(r.to_dict(raw=True)["r_res"]) <= float(hi)
 
 
 @pytest.mark.parametrize("args, kwargs, message", [
@@ -82,7 +85,7 @@ def test_certified_pair_encloses_the_estimate():
     ((6, 5), {"qdot0": "-1"}, "qdot0"),
     ((6, 5), {"method": "fast"}, "method must be"),
     ((6.0, 5), {}, "tau must be an integer"),
-    ((6, 5), {"qdot0": 2, "certified": True}, "qdot0 = 1"),
+    ((6, 5), {"qdot0": "0", "certified": True}, "qdot0"),
 ])
 def test_bad_input_raises_value_error(args, kwargs, message):
     with pytest.raises(ValueError, match=None) as e:

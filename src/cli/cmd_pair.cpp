@@ -1,7 +1,11 @@
-// gyrores pair TAU SIGMA [--digits D] [--qdot0 V] [--json] [--method lattice|global]
-// The report of inscribed/verified_pair.hpp (verify_pair), as JSON or text.
+// gyrores pair TAU SIGMA [--digits D] [--qdot0 V] [--json] [--method lattice|global] [--estimate]
+// The report of inscribed/verified_pair.hpp (verify_pair), as JSON or text, with the proved
+// enclosures of r_res, theta_first and t_first (certify/theorem_certificate.hpp) unless
+// --estimate asks for the verified-digit estimates alone.
+#include <optional>
 #include <sstream>
 
+#include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/core/verified_digits.hpp>
 #include <gyrores/inscribed/global_search.hpp>
 #include <gyrores/inscribed/verified_pair.hpp>
@@ -18,7 +22,7 @@ namespace {
 struct pair_args {
   std::string tau, sigma, qdot0 = "1", method = "lattice";
   int digits = 17;
-  bool json = false;
+  bool json = false, estimate = false;
 };
 
 solver_choice parse_method(const std::string& method) {
@@ -38,7 +42,10 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
-std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pair_report& r) {
+std::string enclosure_text(const std::pair<std::string, std::string>& e) { return "[" + e.first + ", " + e.second + "]"; }
+
+std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pair_report& r,
+                             const std::optional<certified_enclosures>& proved) {
   std::ostringstream os;
   os << "pair " << p.str() << "  (order " << p.order().str() << ", delta " << big_int(p.delta()).str() << " = "
      << p.delta_mod4() << " mod 4, v2(delta) = " << p.v2_delta() << ")\n";
@@ -51,6 +58,12 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pai
   text_line(os, "H_z max", r.h_z_max);
   text_line(os, "theta_first", r.theta_first);
   text_line(os, "t_first", r.t_first);
+  if (proved) {
+    text_line(os, "proved", "r_res in " + enclosure_text(proved->r_res));
+    text_line(os, "", "theta_first in " + enclosure_text(proved->theta_first));
+    text_line(os, "", "t_first in " + enclosure_text(proved->t_first));
+    text_line(os, "", "(interval arithmetic on " + proved->theorem + ", proofs/lattice-theorem.md)");
+  }
   text_line(os, "pi/|n|", r.t_min_paper + "  (the paper's proxy for the first-hit time)");
   text_line(os, "minimisers", joined(r.minimisers));
   if (r.r_res_asy)
@@ -80,7 +93,12 @@ std::string run_pair(const pair_args& args) {
     throw compute_error("the global search is limited to order tau + sigma <= " + std::to_string(global_limit) +
                         "; use --method lattice for " + p.str());
   const verified_pair_report r = verify_pair(p, opt);
-  return args.json ? json_dump(pair_report_json(p, r)) + "\n" : pair_report_text(p, r);
+  std::optional<certified_enclosures> proved;
+  if (!args.estimate) proved = certify_enclosures(p, unsigned(args.digits), args.qdot0);
+  if (!args.json) return pair_report_text(p, r, proved);
+  json j = pair_report_json(p, r);
+  add_enclosures_json(j, proved ? &*proved : nullptr);
+  return json_dump(j) + "\n";
 }
 
 command_runner install_pair(CLI::App& app) {
@@ -91,6 +109,8 @@ command_runner install_pair(CLI::App& app) {
   sub.add("--qdot0", args->qdot0, "impulse amplitude qdot0 > 0 (decimal)", show::with_default);
   sub.add("--method", args->method, "lattice (any pair, cross-checked up to order 20000) or global (order <= 1e5)", show::with_default);
   add_json_flag(sub, args->json);
+  sub.flag("--estimate", args->estimate,
+           "the verified-digit estimates alone, without the proved enclosures of r_res, theta_first, t_first");
   return [args] { return run_pair(*args); };
 }
 

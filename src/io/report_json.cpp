@@ -117,4 +117,14 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   return j;
 }
 
+void add_enclosures_json(json& j, const certified_enclosures* proved) {
+  j["certified"] = proved != nullptr;
+  if (!proved) return;
+  auto enclosure = [](const std::pair<std::string, std::string>& e) { return json::array({e.first, e.second}); };
+  j["r_res_enclosure"] = enclosure(proved->r_res);
+  j["theta_first_enclosure"] = enclosure(proved->theta_first);
+  j["t_first_enclosure"] = enclosure(proved->t_first);
+  j["theorem"] = proved->theorem;
+}
+
 }  // namespace gyrores

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/inscribed/verified_pair.hpp>
 #include <gyrores/io/json.hpp>
@@ -25,6 +26,10 @@ json asymptotic_json(const verified_pair_report& r);
 
 // The whole object of `gyrores pair --json`, key for key.
 json pair_report_json(const resonant_pair<big_int>& p, const verified_pair_report& r);
+
+// Adds "certified" (whether `proved` is given) and, when it is, the enclosures
+// "r_res_enclosure", "theta_first_enclosure", "t_first_enclosure" ([lo, hi]) and "theorem".
+void add_enclosures_json(json& j, const certified_enclosures* proved);
 
 // The object of `gyrores coupling --json`. `input` is {"n": text} or {"n2": text} as the user gave
 // it, `horizon` the horizon's text, `digits` the digits asked for.

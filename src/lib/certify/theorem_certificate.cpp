@@ -85,4 +85,15 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
                       std::to_string(max_bits) + " bits");
 }
 
+certified_enclosures certify_enclosures(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0) {
+  theorem_certificate c = certify_by_theorem(p, digits);
+  certified_enclosures out{c.theorem, c.r_res, c.theta_first, c.t_first};
+  scoped_digits sd(digits + 30);
+  I v = interval_from_decimal(qdot0, qdot0);
+  if (!certainly_positive(v)) throw usage_error("qdot0 must be a decimal number > 0, got '" + qdot0 + "'");
+  if (interval_lower(v) == 1 && interval_upper(v) == 1) return out;
+  out.r_res = interval_to_decimal(interval_from_decimal(c.r_res.first, c.r_res.second) * v, digits + 10);
+  return out;
+}
+
 }  // namespace gyrores
