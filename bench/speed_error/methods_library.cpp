@@ -6,7 +6,7 @@
 
 #include "case_support.hpp"
 #include <gyrores/inscribed/asymptotic.hpp>
-#include <gyrores/certify/certify.hpp>
+#include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/inscribed/global_search.hpp>
 #include <gyrores/inscribed/lattice.hpp>
 #include "methods.hpp"
@@ -192,19 +192,14 @@ bench_case certified_case(const bench_pair& bp, const precision& pr, const refer
   const auto p = bp.p;
   const unsigned digits = pr.digits;
   bench_case c = new_case("certified", pr, bp);
-  c.timed = [=] { benchmark::DoNotOptimize(certify_pair(p, digits)); };
+  c.timed = [=] { benchmark::DoNotOptimize(certify_by_theorem(p, digits)); };
   c.pilot = [=] {
-    auto cert = certify_pair(p, digits);
+    auto cert = certify_by_theorem(p, digits);
     outcome o;
     scoped_digits d(digits + 30);
-    if (cert.global_minimality) {
-      o.r_res = enclosure_mid(cert.r_res);
-      o.theta = enclosure_mid(cert.theta_first);
-      o.r_enclosure = cert.r_res;
-    } else {
-      o.r_res = real_text(mpfr_real(cert.r_res.second));
-      o.note = "global minimality not proved: " + cert.global_minimality_note;
-    }
+    o.r_res = enclosure_mid(cert.r_res);
+    o.theta = enclosure_mid(cert.theta_first);
+    o.r_enclosure = cert.r_res;
     return o;
   };
   return c;
@@ -315,9 +310,6 @@ std::string skip_global(const bench_pair& bp, const precision& pr) {
 
 std::string skip_certified(const bench_pair& bp, const precision& pr) {
   if (!pr.is_mp()) return "certificates are MPFI enclosures with a decimal-digits target (30 to 10000)";
-  if (pr.name == "mp10000" && bp.name != "(6,5)")
-    return "~2 s or more per call at 10000 digits (precision doubled from 64 bits, MPFI at each level); (6,5) "
-           "alone shows the scaling";
   return "";
 }
 
@@ -357,8 +349,9 @@ std::vector<method_def> library_methods(const run_config&) {
        "coordinates at full precision; assumes nothing about where the minimum is",
        skip_global, global_case},
       {"certified", "certified",
-       "certify_pair(pair, digits): MPFI enclosures of r_res and theta_first with at least `digits` digits, plus "
-       "the proof of global minimality (interval Newton, basin, symmetry, cover); scored at the enclosure midpoint",
+       "certify_by_theorem(pair, digits): the lattice-theorem certificate (proofs/lattice-theorem.md): integer "
+       "facts, a proved bracket of u* and MPFI enclosures of r_res and theta_first with at least `digits` digits; "
+       "scored at the enclosure midpoint",
        skip_certified, certified_case},
       {"one_eval", "one_eval",
        "one evaluation of (q, q', z, z') at the first minimiser (resonant.hpp lobe_eval: four sines/cosines), "

@@ -67,7 +67,7 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pai
   text_line(os, "pi/|n|", r.t_min_paper + "  (the paper's proxy for the first-hit time)");
   text_line(os, "minimisers", joined(r.minimisers));
   if (r.r_res_asy)
-    text_line(os, "r_res_asy", *r.r_res_asy + "  (observed closed form v x |sin u* tan u*|; rel. error " +
+    text_line(os, "r_res_asy", *r.r_res_asy + "  (the x -> 0 limit v x |sin u* tan u*|; rel. error " +
                                    *r.r_res_asy_rel_error + ")");
   for (std::size_t i = 0; i < r.lobes.size(); ++i) {
     const auto& l = r.lobes[i];

@@ -1,5 +1,5 @@
 // The paper's lobe asymptotics (Thm. theta_asy, Thm. error_bound; docs/mathematics.md §2, P6, P7), computed
-// exactly as stated, beside the exact lobe root they approximate, and the observed closed form
+// exactly as stated, beside the exact lobe root they approximate, and the x -> 0 limit form
 // of r_res (docs/mathematics.md §3).
 //
 // Notation (docs/mathematics.md §1, §2): a = tau + sigma, b = tau - sigma, x = b/a. The paper picks the fast
@@ -378,7 +378,7 @@ asymptotic_lobe<T> asy_lobe(const resonant_pair<I>& p, const resonant_constants<
 // every lobe k = round(1/(2x)) (two on a tie) with u_asy, theta_asy (both forms), q'(theta_asy),
 // the exact lobe root theta_c, error = |theta_c - theta_asy| (cancellation-free), the paper's
 // bound pi^3 x^2/a and the ratio error/bound; whether theta_c is a global minimiser (exact
-// comparison with inscribed_lattice, O(log tau)); and the observed closed form r_res_asy with its
+// comparison with inscribed_lattice, O(log tau)); and the x -> 0 limit form r_res_asy with its
 // relative error against the exact r_res.
 // x >= 1/2: applicable = false, `reason` says why, nothing else is computed.
 // Heuristic (not proved) parts: theta_asy and r_res_asy are approximations; the bound is the

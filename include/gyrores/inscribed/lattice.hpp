@@ -7,18 +7,15 @@
 // it is found by one modular inverse (extended Euclid):
 //   delta odd:       2j+1 = a^{-1} mod 2b,            k = ((2j+1) a - 1)/(2b)
 //   delta = 0 mod 4: 2j+1 = (a/2)^{-1} mod (b/2)*2,   k = ((2j+1) a/2 - 1)/b
-// The global minimiser is the root of q' = 0 near that pass (u near 0 in the frame):
-//   x < 1/2: the root of q' in u in [-pi/2, pi/2] (q' changes sign there: f(-pi/2) = x cos(mu + x pi/2)
-//            > 0 > -x cos(mu - x pi/2) = f(pi/2) since |mu| + x pi/2 < pi/2);
-//   x >= 1/2: the root of q' in the interval [i pi/tau, (i+1) pi/tau] that contains the pass
-//            theta = 2 k pi/a (each such interval holds exactly one root, global_search.hpp).
-//            Observed on all 142506 pairs with x >= 1/2 up to order 1500 (the two neighbours on
-//            each side never do better); lattice_options::window_always solves all five.
-// The other minimisers are the exact images under theta -> 2 pi - theta (and theta -> theta + pi
-// when tau, sigma are odd): 2 minimisers for delta odd, 4 for delta = 0 mod 4.
-// STATUS: that the minimiser sits there is *observed* (docs/mathematics.md §3), not proved; the library
-// cross-checks it against the global search (tests: every pair up to order 300, and `gyrores
-// pair` for orders up to its documented threshold).
+// The global minimiser is the root of q' = 0 in u in [0, pi/2] of that frame: q' changes sign
+// there (f(0) = sin mu > 0 > -x cos(mu - x pi/2) = f(pi/2)) and has no other root (the lattice
+// theorem, proofs/lattice-theorem.md: the root is u* with x u + arctan(x tan u) = mu, and the
+// global minimisers are exactly its images). The other minimisers are the exact images under
+// theta -> 2 pi - theta (and theta -> theta + pi when tau, sigma are odd): 2 minimisers for
+// delta odd, 4 for delta = 0 mod 4. PROVED for every pair (lattice-theorem/1); the cross-check
+// against the global search (cross_check.hpp) remains as an independent test of the code.
+// lattice_options::window_always instead solves the q' roots of the five intervals
+// [i pi/tau, (i+1) pi/tau] around the pass and keeps the smallest R (a cross-check).
 //
 // Precision: the root is scouted in double (MPFR at 64 bits when the pair exceeds double's
 // exponent range) with TOMS 748, then polished in T by Newton's method; for mpfr_real with
@@ -95,7 +92,7 @@ scout_root<S> lattice_solve(const resonant_constants<S>& c, const lobe_frame<L>&
 
 template <class L> struct lattice_candidate_site {
   lobe_frame<L> frame;
-  L lo_num, hi_num, den;  // bracket as theta = pi * num / den (window mode), or den = 0: u in [-pi/2, pi/2]
+  L lo_num, hi_num, den;  // bracket as theta = pi * num / den (window mode), or den = 0: u in [0, pi/2]
 };
 
 // Candidate brackets for the minimiser (see the header comment).
@@ -118,14 +115,14 @@ template <class L> std::vector<lattice_candidate_site<L>> lattice_sites(const L&
 template <class S, class L>
 scout_root<S> lattice_solve_site(const resonant_constants<S>& c, const lattice_candidate_site<L>& s, const L& a) {
   if (s.den == 0) {
-    // x < 1/2: f(-pi/2) = x cos(mu + x pi/2) > 0 > f(pi/2). Safeguarded Newton from the
-    // small-angle root of u + tan u = mu/x (u ~ mu/(2x)), TOMS 748 if it does not converge.
+    // f(0) = sin mu > 0 > f(pi/2) (m = m_min > 0; header comment). Safeguarded Newton from
+    // u ~ mu/(2x) (u + tan u ~ 2u = mu/x for small u; for x -> 1 also H(u) ~ 2u = mu), TOMS 748
+    // if it does not converge.
     S h = c.pi / 2;
     auto fr = lobe_frame_real_of(c, s.frame, a);
     S floor = lobe_root_floor(fr);
     S u0 = fr.mu / (2 * c.x);
     if (u0 > h * S(0.9)) u0 = h * S(0.9);
-    if (u0 < -h * S(0.9)) u0 = -h * S(0.9);
     S q_last = 0;
     auto fdf = [&](const S& u) {
       auto e = lobe_qdot_newton(c, fr.mu, u);
@@ -133,9 +130,9 @@ scout_root<S> lattice_solve_site(const resonant_constants<S>& c, const lattice_c
       return std::pair<S, S>{e.f, e.df};
     };
     newton_result<S> nr;
-    if (root_newton_safeguarded(fdf, S(-h), h, +1, u0, floor, nr))
+    if (root_newton_safeguarded(fdf, S(0), h, +1, u0, floor, nr))
       return {nr.root, q_last * q_last, nr.evaluations};  // |q| at the last point: stationary
-    return lattice_solve(c, s.frame, a, S(-h), h);
+    return lattice_solve(c, s.frame, a, S(0), h);
   }
   return lattice_solve(c, s.frame, a, lobe_u_at(c, s.frame, a, s.lo_num, s.den), lobe_u_at(c, s.frame, a, s.hi_num, s.den));
 }
@@ -271,7 +268,7 @@ lattice_candidates<T> lattice_solve_full(const resonant_pair<I>& p, const T& v,
   auto c = resonant_constants_of<T>(p, v);
   for (const auto& s : sites) {
     const T h = c.pi / 2;
-    auto sr = s.den == 0 ? lattice_solve(c, s.frame, a, T(-h), h)
+    auto sr = s.den == 0 ? lattice_solve(c, s.frame, a, T(0), h)
                          : lattice_solve(c, s.frame, a, lobe_u_at(c, s.frame, a, s.lo_num, s.den),
                                          lobe_u_at(c, s.frame, a, s.hi_num, s.den));
     out.evaluations += sr.evaluations;
@@ -291,8 +288,7 @@ template <class T> std::size_t lattice_smallest(const lattice_candidates<T>& c) 
 template <class T, class L, pair_integer I>
 inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v, const lattice_options& opt) {
   const L tau = L(p.tau()), a = L(p.order()), b = L(p.delta());
-  // x >= 1/2 iff 2b >= a.
-  const bool window = opt.window_always || 2 * b >= a;
+  const bool window = opt.window_always;
   const auto sites = lattice_sites(tau, a, b, window, opt.window_always);
   const bool huge = to_big(p.order()) > (big_int(1) << 900);
   if (huge && !is_mpfr_v<T>)

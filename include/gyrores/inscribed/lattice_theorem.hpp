@@ -69,11 +69,11 @@ template <class T> std::pair<T, T> theorem_h(const T& x, const T& mu, const T& u
 }
 
 // u* to about 53 bits (64 in MPFR) in S, by safeguarded Newton on [0, pi/2] (H(0) - mu < 0 <
-// H(pi/2) - mu). Start: the smaller of mu/2 (H ~ 2u for small u) and mu/(2x) (the small-x form
-// u + tan u ~ 2u); the safeguard keeps any start inside the bracket.
+// H(pi/2) - mu). Start: mu/(2x) (H ~ 2xu for small u and x; H ~ 2u as x -> 1); the safeguard
+// keeps any start inside the bracket.
 template <class S> S theorem_root_scout(const S& x, const S& mu) {
   const S h = real_pi<S>() / 2;
-  S u0 = std::min(S(mu / 2), S(mu / (2 * x)));
+  S u0 = mu / (2 * x);
   if (u0 > h * S(0.9)) u0 = h * S(0.9);
   newton_result<S> nr;
   auto fdf = [&](const S& u) { return theorem_h(x, mu, u); };
@@ -83,17 +83,22 @@ template <class S> S theorem_root_scout(const S& x, const S& mu) {
 }
 
 // x = b/a and mu = pi m/(2a) in R at R's current precision.
-template <class R> std::pair<R, R> theorem_x_mu(const big_int& a, const big_int& b, int m) {
+template <class R> std::pair<R, R> theorem_x_mu(const big_int& a, const big_int& b, int m, const R& pi) {
   R ar = real_from_int<R>(a);
-  return {R(real_from_int<R>(b) / ar), R(real_pi<R>() * m / (2 * ar))};
+  return {R(real_from_int<R>(b) / ar), R(pi * m / (2 * ar))};
+}
+template <class R> std::pair<R, R> theorem_x_mu(const big_int& a, const big_int& b, int m) {
+  return theorem_x_mu(a, b, m, real_pi<R>());
 }
 
 }  // namespace detail
 
 // u* of pair p (m_min >= 1) in T, to T's precision: the scout, then Newton steps in T (for MPFR
 // with doubling precision, the last step at full precision). compute_error if Newton does not
-// settle; usage_error-free (p is a valid pair; degenerate pairs have u* = 0).
-template <class T, pair_integer I> T theorem_root(const resonant_pair<I>& p) {
+// settle; usage_error-free (p is a valid pair; degenerate pairs have u* = 0). With
+// settle = false only one full-precision step is taken and not checked (for a caller that
+// proves the result anyway, as the certificate's bracket does).
+template <class T, pair_integer I> T theorem_root(const resonant_pair<I>& p, bool settle = true) {
   using std::fabs;
   using std::ldexp;
   if (p.degenerate()) return T(0);
@@ -118,22 +123,33 @@ template <class T, pair_integer I> T theorem_root(const resonant_pair<I>& p) {
   }
   if constexpr (std::is_same_v<T, double>) return u;
   const unsigned full = real_bits<T>();
+  // pi once at full precision: MPFR caches it for one precision only, so asking for it at every
+  // level of the ladder would recompute it each time.
+  const T pi_full = real_pi<T>();
   if constexpr (is_mpfr_v<T>) {
     std::vector<unsigned> ladder;
-    for (unsigned bits = full / 2 + 16; bits > 2 * have_bits; bits = bits / 2 + 16) ladder.push_back(bits);
+    // Levels down to just above the scout's bits: each Newton step doubles the accurate bits, so the
+    // last level (>= have_bits + 8) leaves the full-precision step at least 2 (have_bits + 8) >= full
+    // bits whenever full <= 2 have_bits + 16; higher full precisions get more levels.
+    for (unsigned bits = full / 2 + 16; bits > have_bits + 8; bits = bits / 2 + 16) ladder.push_back(bits);
     std::reverse(ladder.begin(), ladder.end());
     for (unsigned bits : ladder) {
       scoped_digits d(digits10_for_bits(bits));
-      T uu = u;
+      T uu = u, pi;
       uu.precision(T::default_precision());
-      auto [x, mu] = detail::theorem_x_mu<T>(a, b, m);
+      mpfr_set(pi.backend().data(), pi_full.backend().data(), MPFR_RNDN);
+      auto [x, mu] = detail::theorem_x_mu<T>(a, b, m, pi);
       auto [f, df] = detail::theorem_h(x, mu, uu);
       u = uu - f / df;
     }
     u.precision(T::default_precision());
   }
-  auto [x, mu] = detail::theorem_x_mu<T>(a, b, m);
+  auto [x, mu] = detail::theorem_x_mu<T>(a, b, m, pi_full);
   const T tol = ldexp(T(1), -int(full / 2) + 4);
+  if (!settle) {
+    auto [f, df] = detail::theorem_h(x, mu, u);
+    return T(u - f / df);
+  }
   for (int it = 0; it < 8; ++it) {
     auto [f, df] = detail::theorem_h(x, mu, u);
     T step = f / df;

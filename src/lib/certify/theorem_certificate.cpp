@@ -4,7 +4,7 @@
 #include <gyrores/certify/theorem_certificate.hpp>
 
 #include <gyrores/certify/certificate.hpp>
-#include <gyrores/certify/proof_steps.hpp>
+#include <gyrores/certify/proof_steps.hpp>  // meets_digits
 #include <gyrores/core/error.hpp>
 #include <gyrores/inscribed/lattice_theorem.hpp>
 
@@ -15,27 +15,81 @@ namespace {
 using proof::I;
 using proof::P;
 
-// H(U) = x U + arctan(x tan U).
-I h_of(const proof::constants& K, const I& U) { return K.c.x * U + atan(K.c.x * tan(U)); }
+// What the enclosures need, as intervals at the current precision.
+struct constants {
+  I x, s1mx2, sqrt_ts, pi, a, mu;
+};
 
-// sqrt(G(U)) = x sqrt(1-x^2) sin^2 U/sqrt(cos^2 U + x^2 sin^2 U), U in [0, pi/2).
-I radius_of(const proof::constants& K, const I& U) {
-  I s2 = interval_sqr(sin(U));
-  return K.c.x * K.c.s1mx2 * s2 / sqrt(interval_sqr(cos(U)) + interval_sqr(K.c.x) * s2);
+constants constants_of(const resonant_pair<big_int>& p) {
+  constants K;
+  K.a = real_from_int<I>(p.order());
+  K.x = real_from_int<I>(big_int(p.delta())) / K.a;
+  K.sqrt_ts = sqrt(real_from_int<I>(p.tau())) * sqrt(real_from_int<I>(p.sigma()));
+  K.s1mx2 = 2 * K.sqrt_ts / K.a;
+  K.pi = real_pi<I>();
+  K.mu = K.pi * p.strand_offset_min() / (2 * K.a);
+  return K;
 }
 
-// The decimal bracket of u* at the current precision, proved: H(lo) < mu < H(hi) with lo, hi
-// read exactly (each a point interval holding the decimal). Empty when not proved here.
-std::pair<std::string, std::string> bracket_u_star(const resonant_pair<big_int>& p, const proof::constants& K,
+// sqrt(G(U)) = x sqrt(1-x^2) sin^2 U/sqrt(cos^2 U + x^2 sin^2 U), U in [0, pi/2).
+I radius_of(const constants& K, const I& U) {
+  I s2 = interval_sqr(sin(U));
+  return K.x * K.s1mx2 * s2 / sqrt(interval_sqr(cos(U)) + interval_sqr(K.x) * s2);
+}
+
+// Bounds by directed rounding (cheaper than MPFI, which rounds every operation both ways): on
+// u in (0, pi/2) with x in (0, 1) every step of H(u) = x u + atan(x tan u) and of
+// mu = pi m/(2a) is increasing in its inputs, so rounding every step down (up) gives a lower
+// (upper) bound. big_int inputs are rounded in the direction that keeps the bound.
+mpfr_rnd_t opposite(mpfr_rnd_t r) { return r == MPFR_RNDD ? MPFR_RNDU : MPFR_RNDD; }
+
+P int_bound(const big_int& n, mpfr_rnd_t rnd) {
+  P r;
+  mpfr_set_z(r.backend().data(), n.backend().data(), rnd);
+  return r;
+}
+
+P h_bound(const big_int& a, const big_int& b, const P& u, mpfr_rnd_t rnd) {
+  P x, t, h;
+  mpfr_div(x.backend().data(), int_bound(b, rnd).backend().data(), int_bound(a, opposite(rnd)).backend().data(), rnd);
+  mpfr_tan(t.backend().data(), u.backend().data(), rnd);
+  mpfr_mul(t.backend().data(), t.backend().data(), x.backend().data(), rnd);
+  mpfr_atan(t.backend().data(), t.backend().data(), rnd);
+  mpfr_mul(h.backend().data(), x.backend().data(), u.backend().data(), rnd);
+  mpfr_add(h.backend().data(), h.backend().data(), t.backend().data(), rnd);
+  return h;
+}
+
+P mu_bound(const big_int& a, int m, mpfr_rnd_t rnd) {
+  P mu;
+  mpfr_const_pi(mu.backend().data(), rnd);
+  mpfr_mul_si(mu.backend().data(), mu.backend().data(), m, rnd);
+  mpfr_div(mu.backend().data(), mu.backend().data(), int_bound(2 * a, opposite(rnd)).backend().data(), rnd);
+  return mu;
+}
+
+// A decimal read rounded in the direction rnd.
+P decimal_bound(const std::string& text, mpfr_rnd_t rnd) {
+  P r;
+  mpfr_set_str(r.backend().data(), text.c_str(), 10, rnd);
+  return r;
+}
+
+// The decimal bracket of u* at the current precision, proved: H(lo) < mu < H(hi), with the
+// bound of H(lo) from above (lo read upwards) and of H(hi) from below (hi read downwards).
+// Empty when not proved here.
+std::pair<std::string, std::string> bracket_u_star(const resonant_pair<big_int>& p, const constants& K,
                                                    unsigned bits, unsigned text_digits) {
-  P u = theorem_root<P>(p);
+  P u = theorem_root<P>(p, false);
   P rad = abs(u) * pow(P(2), -int(bits) + 16);
   std::pair<std::string, std::string> text{format_scientific(P(u - rad), text_digits, MPFR_RNDD),
                                            format_scientific(P(u + rad), text_digits, MPFR_RNDU)};
-  I mu = proof::mu_of(K, big_int(p.strand_offset_min()));
-  I lo = interval_from_decimal(text.first, text.first), hi = interval_from_decimal(text.second, text.second);
-  if (certainly_positive(lo) && certainly_less(h_of(K, lo), mu) && certainly_less(mu, h_of(K, hi)) &&
-      certainly_less(hi, K.c.pi / 2))
+  const big_int a = p.order(), b = big_int(p.delta());
+  const int m = p.strand_offset_min();
+  P lo = decimal_bound(text.first, MPFR_RNDD), hi = decimal_bound(text.second, MPFR_RNDU);
+  if (!(lo > 0) || !certainly_less(interval_point(hi), K.pi / 2)) return {};
+  if (h_bound(a, b, decimal_bound(text.first, MPFR_RNDU), MPFR_RNDU) < mu_bound(a, m, MPFR_RNDD) &&
+      mu_bound(a, m, MPFR_RNDU) < h_bound(a, b, decimal_bound(text.second, MPFR_RNDD), MPFR_RNDD))
     return text;
   return {};
 }
@@ -58,21 +112,20 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
     // Written digits: claims digits + 10 (outward rounding adds at most 2 10^-(digits+9) to a
     // width below 10^-(digits+1)); the bracket digits + 20, far inside what the claims need.
     const unsigned d = digits + 10;
-    auto K = proof::constants_of(p);
-    I lo = 0, hi = 0;
+    const constants K = constants_of(p);
+    I U = 0;
     if (c.m_min == 0) {
       c.u_star = {"0", "0"};
     } else {
       c.u_star = bracket_u_star(p, K, bits, digits + 20);
       if (c.u_star.first.empty()) continue;
-      lo = interval_from_decimal(c.u_star.first, c.u_star.first);
-      hi = interval_from_decimal(c.u_star.second, c.u_star.second);
+      U = interval_from_decimal(c.u_star.first, c.u_star.second);
     }
-    // r and theta are monotone in u (theorem, Step C): the hulls of the ends' values.
-    I r = c.m_min == 0 ? I(0) : interval_hull(radius_of(K, lo), radius_of(K, hi));
-    auto theta_at = [&](const I& u) { return proof::theta_of(K, first.k, first.m < 0 ? I(-u) : u); };
-    I theta = interval_hull(theta_at(lo), theta_at(hi));
-    I t = K.c.sqrt_ts * theta;
+    // One interval evaluation over U: the bracket is far narrower than the claims, so the
+    // dependency overestimate does not matter (the checker evaluates at the ends instead).
+    I r = c.m_min == 0 ? I(0) : radius_of(K, U);
+    I theta = 2 * (K.pi * real_from_int<I>(first.k) + (first.m < 0 ? I(-U) : U)) / K.a;  // 0 <= k < a
+    I t = K.sqrt_ts * theta;
     if (c.m_min != 0 && !proof::meets_digits(r, digits + 1)) continue;
     if (!proof::meets_digits(theta, digits + 1) || !proof::meets_digits(t, digits + 1)) continue;
     c.bits = bits;
