@@ -22,16 +22,10 @@ py::object certify_dict(const py::object& tau, const py::object& sigma, long lon
   return to_python(certificate_to_json(call_library([&] { return certify_by_theorem(p, d); })));
 }
 
-// The "format" field of a certificate's text ("" when absent or not JSON).
-std::string format_of(const std::string& text) {
-  auto j = nlohmann::json::parse(text, nullptr, false);
-  return j.is_object() && j.contains("format") && j["format"].is_string() ? j["format"].get<std::string>() : "";
-}
-
 // As `gyrores check`: malformed text is a usage_error (ValueError); a checker that cannot compute
 // its own enclosures has not re-proved the certificate, which is a failing verdict, not an error.
 py::tuple check_text(const std::string& text) {
-  if (format_of(text) == theorem_certificate_format) {
+  if (certificate_format_of(text) == theorem_certificate_format) {
     auto v = gyrores_checker::check_theorem_certificate(text);
     if (v.status == 2) throw usage_error("malformed certificate: " + v.message.substr(v.message.find(':') + 2));
     return py::make_tuple(v.status == 0, v.status == 0 ? std::string() : v.message);

@@ -54,19 +54,9 @@ struct check_outcome {
   std::string line;
 };
 
-// The "format" field of a certificate's text, or "" when it has none (then read as /1).
-std::string format_of(const std::string& text) {
-  try {
-    auto j = nlohmann::json::parse(text);
-    if (j.is_object() && j.contains("format") && j["format"].is_string()) return j["format"].get<std::string>();
-  } catch (const std::exception&) {
-  }
-  return "";
-}
-
 check_outcome check_file(const std::string& file) {
   std::string text = read_file(file);
-  if (format_of(text) == theorem_certificate_format) {
+  if (certificate_format_of(text) == theorem_certificate_format) {
     auto v = gyrores_checker::check_theorem_certificate(text);
     return {v.status, "gyrores check: " + v.message};
   }

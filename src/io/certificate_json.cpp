@@ -152,6 +152,11 @@ json certificate_to_json(const theorem_certificate& c) {
               {"claims", claims}};
 }
 
+std::string certificate_format_of(const std::string& text) {
+  auto j = nlohmann::json::parse(text, nullptr, false);
+  return j.is_object() && j.contains("format") && j["format"].is_string() ? j["format"].get<std::string>() : "";
+}
+
 certificate certificate_from_text(const std::string& text) {
   try {
     auto j = nlohmann::json::parse(text);

@@ -17,6 +17,10 @@ namespace gyrores {
 json certificate_to_json(const certificate& c);
 json certificate_to_json(const theorem_certificate& c);
 
+// The "format" field of a certificate's text, or "" when the text is not a JSON object with a
+// string "format" (such a text is then read as /1, whose reader says what is wrong).
+std::string certificate_format_of(const std::string& text);
+
 // Parses a "gyrores-certificate/1" text. Throws usage_error("malformed certificate: ...") on any problem
 // (not JSON, a missing field, a wrong type, a claim that is not ["lo", "hi"] or null). The
 // numbers' content is not checked here: check_certificate (certify/check.hpp) does that.

@@ -1,6 +1,7 @@
 // The producer of lattice-theorem certificates (certify/theorem_certificate.hpp): the integer
-// facts, then, at increasing precision, an MPFI proof that the decimal bracket of u* holds and
-// the claims it implies, until every claim has the digits asked for.
+// facts, then, at increasing precision, a proof by directed rounding that the decimal bracket of
+// u* holds and MPFI enclosures of the claims it implies, until every claim has the digits asked
+// for.
 #include <gyrores/certify/theorem_certificate.hpp>
 
 #include <gyrores/certify/certificate.hpp>
@@ -17,7 +18,7 @@ using proof::P;
 
 // What the enclosures need, as intervals at the current precision.
 struct constants {
-  I x, s1mx2, sqrt_ts, pi, a, mu;
+  I x, s1mx2, sqrt_ts, pi, a;
 };
 
 constants constants_of(const resonant_pair<big_int>& p) {
@@ -27,7 +28,6 @@ constants constants_of(const resonant_pair<big_int>& p) {
   K.sqrt_ts = sqrt(real_from_int<I>(p.tau())) * sqrt(real_from_int<I>(p.sigma()));
   K.s1mx2 = 2 * K.sqrt_ts / K.a;
   K.pi = real_pi<I>();
-  K.mu = K.pi * p.strand_offset_min() / (2 * K.a);
   return K;
 }
 
