@@ -1,4 +1,4 @@
-// gyrores sweep --max-order M [--min-order m] [--check LIST] [--out FILE] [--format csv|jsonl]
+// gyrores sweep --max-order M [--min-order m] [--check LIST] [--certified] [--out FILE] [--format csv|jsonl]
 //               [--summary FILE] [--threads N] [--shard I/N] [--resume] [--digits D] [--json] ...
 // Visits every coprime pair with m <= tau + sigma <= M, checks the paper's claims per pair and
 // prints a summary. The engine is include/gyrores/sweep/, the files io/sweep_files.hpp; what
@@ -54,7 +54,7 @@ struct sweep_args {
   std::int64_t max_order = 0, min_order = 3;
   std::string checks = "all", out, format, summary, shard = "0/1", state;
   unsigned threads = 0;
-  bool resume = false, quiet = false, json = false;
+  bool resume = false, quiet = false, json = false, certified = false;
   int digits = 15;
   std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t examples = 5;
@@ -163,6 +163,7 @@ sweep_config config_of(const sweep_args& a) {
   cfg.max_examples = a.examples;
   if (a.digits < 1 || a.digits > 1000) throw usage_error("--digits must be in [1, 1000], got " + std::to_string(a.digits));
   cfg.digits = unsigned(a.digits);
+  cfg.certified = a.certified;
   sweep_validate(cfg);
   return cfg;
 }
@@ -218,6 +219,9 @@ command_runner install_sweep(CLI::App& app) {
   sub.add("--threads", a->threads, "worker threads (0: all cores; mpfr runs use 1)", show::with_default);
   sub.add("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'",
           show::with_default);
+  sub.flag("--certified", a->certified,
+           "decide degeneracy, paper-node, structure and asy-bound by exact integers and interval arithmetic "
+           "(the lattice theorem): a pass is a proof");
   sub.flag("--resume", a->resume, "continue an interrupted run from its resume state");
   sub.add("--digits", a->digits,
           "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits",

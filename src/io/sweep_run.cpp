@@ -13,6 +13,7 @@ json sweep_run_json(const sweep_config& c, const std::string& type, unsigned dig
   j["max_examples"] = c.max_examples;
   j["type"] = type;
   j["digits"] = digits;
+  if (c.certified) j["certified"] = true;  // absent in uncertified runs (files of earlier versions)
   return j;
 }
 

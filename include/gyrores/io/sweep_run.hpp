@@ -12,7 +12,7 @@
 namespace gyrores {
 
 // {min_order (at least 3), max_order, shard, checks, cross_check_max_order, max_examples, type,
-// digits}; `type` is the working real type's name, `digits` the significant digits of its reals
+// digits[, certified: true]}; `type` is the working real type's name, `digits` the significant digits of its reals
 // in rows (17 for double).
 json sweep_run_json(const sweep_config& c, const std::string& type, unsigned digits);
 template <class T> json sweep_run_json(const sweep_config& c) {

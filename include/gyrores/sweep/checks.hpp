@@ -42,6 +42,7 @@ struct sweep_config {
   std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t max_examples = 5;  // violating pairs listed per check
   unsigned digits = 17;          // significant digits of reals in rows when T is wider than double
+  bool certified = false;        // decide the checks by exact integers and intervals (sweep/certified.hpp)
   bool operator==(const sweep_config&) const = default;
 };
 

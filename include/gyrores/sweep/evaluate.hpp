@@ -28,6 +28,13 @@
 //    cross-check the lattice method against the global search (inscribed/cross_check.hpp), for
 //                non-degenerate pairs of order <= cross_check_max_order (default 300: the global
 //                search costs O(order) per pair, ~0.1 ms at order 300 in double).
+//  With cfg.certified (`gyrores sweep --certified`) degeneracy, paper-node, structure and
+//  asy-bound are decided by sweep_prove_pair (sweep/certified.hpp: exact integers, the lattice
+//  theorem, MPFI) instead of in T: a pass is a proof. structure also requires the row's lattice
+//  values to agree with the proved ones (count, first lobe, r_res and theta_first within 2^-42
+//  relative of their enclosures); the asy columns hold proved upper bounds (asy_bound a lower
+//  bound). A check that could not be decided (a resource limit) fails with "not proved" in the
+//  note. cross-check stays a floating-point comparison of two methods.
 //  A pair whose computation throws (compute_error, usage_error, domain_error) is an error row:
 //  counted and listed, never silently dropped.
 #pragma once
@@ -43,6 +50,7 @@
 #include <gyrores/inscribed/cross_check.hpp>
 #include <gyrores/inscribed/lattice.hpp>
 #include <gyrores/model/resonant.hpp>
+#include <gyrores/sweep/certified.hpp>
 #include <gyrores/sweep/checks.hpp>
 #include <gyrores/sweep/real_text.hpp>
 
@@ -206,22 +214,92 @@ void sweep_check_cross(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, co
   }
 }
 
+// v inside [lo, hi] widened by 2^-42 relative (the proved enclosures are about 2^-50 wide; the
+// lattice values in T carry a few ulps of rounding).
+template <class T> bool sweep_near_enclosure(const T& v, double lo, double hi) {
+  using std::fabs;
+  const double tol = 0x1p-42;
+  return v >= T(lo - tol * fabs(lo)) && v <= T(hi + tol * fabs(hi));
+}
+
+// The certified checks (see the header comment), from the proofs of sweep_prove_pair.
 template <class T>
-void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
-  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
-  const T v = T(1);
-  const auto c = resonant_constants_of<T>(p, v);
-  const auto lr = inscribed_lattice<T>(p, v);
+void sweep_check_certified(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const inscribed_result<T>& lr,
+                           const sweep_config& cfg) {
   const auto& ck = cfg.checks;
-  sweep_fill_values(r, p, c, lr);
+  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+  const sweep_proof pr = sweep_prove_pair(p, sweep_has_check(ck, sweep_check::asy_bound));
+  if (!pr.note.empty()) sweep_add_note(r.note, pr.note);
+  const bool degenerate = p.delta_mod4() == 2;
+  if (!degenerate) {
+    sweep_lobes m;
+    for (const auto& f : pr.lobes) m.lobe[m.count++] = std::int64_t(f.k);  // alpha = k pi + sign(m) u*, u* < pi/2
+    sweep_check_paper_node(r, p, m, sweep_has_check(ck, sweep_check::paper_node));
+  }
+  if (sweep_has_check(ck, sweep_check::degeneracy)) {
+    // P3: R(pi/2) = 0 exactly iff delta = 2 mod 4; r_res = 0 there by the theorem (m_min = 0),
+    // else 0 < r_res <= sqrt(R(pi/2)) from the enclosure.
+    bool ok = (pr.quarter_R_scaled == 0) == degenerate;
+    if (ok) ok = degenerate ? pr.m_min == 0 : pr.enclosed && pr.r_lo > 0 && pr.r_below_R_half_pi;
+    r.status[int(sweep_check::degeneracy)] = ok ? sweep_status::pass : sweep_status::fail;
+    if (!ok) sweep_add_note(r.note, "degeneracy: 4 a^2 R(pi/2) = " + to_decimal(pr.quarter_R_scaled));
+  }
+  if (sweep_has_check(ck, sweep_check::structure)) {
+    const std::size_t expected = pr.m_min == 2 ? 4 : 2;
+    bool theorem = pr.lobes.size() == expected && pr.m_min == p.strand_offset_min();
+    for (const auto& f : pr.lobes)
+      theorem = theorem && (2 * f.j + 1) * a - 2 * f.k * b == f.m && (f.m == pr.m_min || f.m == -pr.m_min) &&
+                f.k >= 0 && f.k < a;
+    // (lr.first is not set for degenerate pairs; their theta_first = pi/2 is compared instead.)
+    bool agree = pr.enclosed && lr.minimisers.size() == expected &&
+                 (degenerate || sweep_lobe_of(std::int64_t(lr.first.k), lr.first.u, a) == std::int64_t(pr.lobes.front().k)) &&
+                 sweep_near_enclosure(lr.theta_first, pr.theta_lo, pr.theta_hi) &&
+                 (degenerate ? lr.r_res == 0 : sweep_near_enclosure(lr.r_res, pr.r_lo, pr.r_hi));
+    r.status[int(sweep_check::structure)] = theorem && agree ? sweep_status::pass : sweep_status::fail;
+    if (!theorem) sweep_add_note(r.note, "structure: the theorem's lobes do not check");
+    else if (!agree && pr.enclosed) sweep_add_note(r.note, "structure: the lattice values are outside the proved enclosures");
+  }
+  if (sweep_has_check(ck, sweep_check::asy_bound) && pr.has_asy) {
+    r.has_asy = true;
+    r.asy_error = T(pr.asy_error_hi);
+    r.asy_bound = T(pr.asy_bound_lo);
+    r.asy_ratio = T(pr.asy_ratio_hi);
+    r.asy_constant = T(pr.asy_constant_hi);
+    const bool ok = pr.asy_enclosed && pr.asy_ratio_hi <= 1;
+    r.status[int(sweep_check::asy_bound)] = ok ? sweep_status::pass : sweep_status::fail;
+  }
+}
+
+// The checks in T (uncertified runs).
+template <class T>
+void sweep_evaluate_checks(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const resonant_constants<T>& c,
+                           const inscribed_result<T>& lr, const sweep_config& cfg) {
+  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+  const auto& ck = cfg.checks;
   if (!p.degenerate())
     sweep_check_paper_node(r, p, sweep_minimiser_lobes(p, lr), sweep_has_check(ck, sweep_check::paper_node));
   if (sweep_has_check(ck, sweep_check::degeneracy)) sweep_check_degeneracy(r, p, c, lr, cfg.digits);
   if (sweep_has_check(ck, sweep_check::structure)) sweep_check_structure(r, p, lr);
   if (sweep_has_check(ck, sweep_check::asy_bound) && 2 * b < a) sweep_check_asy_bound(r, p, c);
+}
+
+template <class T>
+void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
+  const std::int64_t a = std::int64_t(p.order());
+  const T v = T(1);
+  const auto c = resonant_constants_of<T>(p, v);
+  const auto lr = inscribed_lattice<T>(p, v);
+  const auto& ck = cfg.checks;
+  sweep_fill_values(r, p, c, lr);
+  if (cfg.certified) {
+    sweep_check_certified(r, p, lr, cfg);
+  } else {
+    sweep_evaluate_checks(r, p, c, lr, cfg);
+  }
   if (sweep_has_check(ck, sweep_check::cross_check) && !p.degenerate() && a <= cfg.cross_check_max_order)
     sweep_check_cross(r, p, v, lr);
 }
+
 
 // The row's identity columns (filled for every row, error rows included).
 template <class T> sweep_row<T> sweep_row_of(const resonant_pair<std::int64_t>& p) {

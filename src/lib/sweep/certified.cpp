@@ -1,0 +1,366 @@
+// include/gyrores/sweep/certified.hpp: the per-pair proofs of a certified sweep, in MPFI at an
+// explicit precision (the sweep runs them on several threads; Boost's MPFR wrappers keep one
+// process-wide default precision, so they are not used here).
+#include <gyrores/sweep/certified.hpp>
+
+#include <mpfi.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <gyrores/inscribed/asymptotic.hpp>      // u_plus_tan_u_root (the scout of u_a)
+#include <gyrores/inscribed/lattice_theorem.hpp>  // minimiser_lobes, the scout of u*
+
+namespace gyrores {
+
+namespace {
+
+// An MPFI interval at a fixed precision.
+class ival {
+ public:
+  explicit ival(mpfr_prec_t prec) { mpfi_init2(v_, prec); }
+  ~ival() { mpfi_clear(v_); }
+  ival(const ival&) = delete;
+  ival& operator=(const ival&) = delete;
+  operator mpfi_ptr() { return v_; }
+  operator mpfi_srcptr() const { return v_; }
+  double lo() const { return mpfr_get_d(&v_->left, MPFR_RNDD); }
+  double hi() const { return mpfr_get_d(&v_->right, MPFR_RNDU); }
+  mpfr_srcptr left() const { return &v_->left; }
+  mpfr_srcptr right() const { return &v_->right; }
+
+ private:
+  mpfi_t v_;
+};
+
+// Relative width (hi - lo)/|lo| <= 2^-e, for an interval not containing 0.
+bool narrow(const ival& A, int e) {
+  if (mpfi_has_zero(A)) return false;
+  const double lo = std::fabs(A.lo()), hi = std::fabs(A.hi());
+  return std::fabs(hi - lo) <= std::ldexp(std::min(lo, hi), -e);
+}
+
+// The pair's constants as intervals at one precision.
+struct constants {
+  explicit constants(mpfr_prec_t p) : prec(p), pi(p), x(p), x2(p), s1mx2(p), one_m_x2(p) {}
+  mpfr_prec_t prec;
+  ival pi, x, x2, s1mx2, one_m_x2;  // x = b/a, sqrt(1 - x^2) = 2 sqrt(tau sigma)/a, 1 - x^2 = 4 tau sigma/a^2
+};
+
+void set_constants(constants& K, std::int64_t tau, std::int64_t sigma) {
+  const std::int64_t a = tau + sigma, b = tau - sigma;
+  mpfi_const_pi(K.pi);
+  mpfi_set_si(K.x, b);
+  mpfi_div_si(K.x, K.x, a);
+  mpfi_sqr(K.x2, K.x);
+  mpfi_set_si(K.one_m_x2, tau);
+  mpfi_mul_si(K.one_m_x2, K.one_m_x2, sigma);
+  mpfi_mul_ui(K.one_m_x2, K.one_m_x2, 4);
+  mpfi_div_si(K.one_m_x2, K.one_m_x2, a);
+  mpfi_div_si(K.one_m_x2, K.one_m_x2, a);
+  mpfi_sqrt(K.s1mx2, K.one_m_x2);
+}
+
+// out = pi n/d, n, d integers.
+void pi_ratio(ival& out, const constants& K, std::int64_t n, std::int64_t d) {
+  mpfi_mul_si(out, K.pi, n);
+  mpfi_div_si(out, out, d);
+}
+
+// An MPFR number at a fixed precision.
+class fr {
+ public:
+  explicit fr(mpfr_prec_t prec) { mpfr_init2(v_, prec); }
+  ~fr() { mpfr_clear(v_); }
+  fr(const fr&) = delete;
+  fr& operator=(const fr&) = delete;
+  operator mpfr_ptr() { return v_; }
+  operator mpfr_srcptr() const { return v_; }
+
+ private:
+  mpfr_t v_;
+};
+
+// tan u for the double u in (0, pi/2): the interval [down, up] from one MPFR call rounded in
+// direction rnd (the other end is the neighbouring float, which lies on the other side of the
+// exact value).
+void tan_at(ival& out, double u, mpfr_rnd_t rnd, mpfr_prec_t prec) {
+  fr t(prec), o(prec);
+  mpfr_set_d(t, u, MPFR_RNDN);  // exact: prec >= 53
+  mpfr_tan(t, t, rnd);
+  mpfr_set(o, t, MPFR_RNDN);
+  if (rnd == MPFR_RNDU) mpfr_nextbelow(o);
+  else mpfr_nextabove(o);
+  if (rnd == MPFR_RNDU) mpfi_interv_fr(out, o, t);
+  else mpfi_interv_fr(out, t, o);
+}
+
+// One side of H(u) = x u + arctan(x tan u), given tan u as an interval: the upper bound
+// (rnd = RNDU) or the lower bound (RNDD); every step of H is increasing in x and in tan u.
+void h_side(fr& out, const constants& K, double u, const ival& tan_u, mpfr_rnd_t rnd) {
+  fr x(K.prec), t(K.prec);
+  const bool up = rnd == MPFR_RNDU;
+  mpfr_set(x, up ? K.x.right() : K.x.left(), rnd);
+  mpfr_set(t, up ? tan_u.right() : tan_u.left(), rnd);
+  mpfr_mul(t, t, x, rnd);
+  mpfr_atan(t, t, rnd);
+  mpfr_mul_d(out, x, u, rnd);
+  mpfr_add(out, out, t, rnd);
+}
+
+// A bracket [lo, hi] of u*, the root of H(u) = mu in (0, pi/2) near the double u0, proved by
+// H(lo) < mu < H(hi) (H increases); relative half-widths 2^-46, 2^-36, 2^-26 are tried. On
+// success T holds tan([lo, hi]). False when none is proved.
+bool bracket_u_star(const constants& K, double u0, const ival& mu, double& lo, double& hi, ival& T) {
+  ival tlo(K.prec), thi(K.prec);
+  fr h(K.prec);
+  const double half_pi = K.pi.lo() / 2;
+  for (int e : {46, 36, 26}) {
+    lo = u0 - std::ldexp(u0, -e);
+    hi = u0 + std::ldexp(u0, -e);
+    if (!(lo > 0) || !(hi < half_pi)) continue;
+    tan_at(tlo, lo, MPFR_RNDU, K.prec);
+    h_side(h, K, lo, tlo, MPFR_RNDU);
+    if (!(mpfr_cmp(h, mu.left()) < 0)) continue;
+    tan_at(thi, hi, MPFR_RNDD, K.prec);
+    h_side(h, K, hi, thi, MPFR_RNDD);
+    if (!(mpfr_cmp(h, mu.right()) > 0)) continue;
+    mpfi_interv_fr(T, tlo.left(), thi.right());
+    return true;
+  }
+  return false;
+}
+
+// A bracket of u_a, the root of u + tan u = s in (0, pi/2) near u0, proved like bracket_u_star.
+bool bracket_u_asy(const constants& K, double u0, const ival& s, double& lo, double& hi, ival& T) {
+  ival tlo(K.prec), thi(K.prec);
+  fr g(K.prec);
+  const double half_pi = K.pi.lo() / 2;
+  for (int e : {46, 36, 26}) {
+    lo = u0 - std::ldexp(u0, -e);
+    hi = u0 + std::ldexp(u0, -e);
+    if (!(lo > 0) || !(hi < half_pi)) continue;
+    tan_at(tlo, lo, MPFR_RNDU, K.prec);
+    mpfr_add_d(g, tlo.right(), lo, MPFR_RNDU);
+    if (!(mpfr_cmp(g, s.left()) < 0)) continue;
+    tan_at(thi, hi, MPFR_RNDD, K.prec);
+    mpfr_add_d(g, thi.left(), hi, MPFR_RNDD);
+    if (!(mpfr_cmp(g, s.right()) > 0)) continue;
+    mpfi_interv_fr(T, tlo.left(), thi.right());
+    return true;
+  }
+  return false;
+}
+
+// r_res and theta_first of a non-degenerate pair: false if the bracket of u* is not proved.
+bool enclose_minimum(sweep_proof& pr, const constants& K, std::int64_t a, double u0) {
+  ival mu(K.prec), T(K.prec);
+  pi_ratio(mu, K, pr.m_min, 2 * a);
+  double lo = 0, hi = 0;
+  if (!bracket_u_star(K, u0, mu, lo, hi, T)) return false;
+  // sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u: increasing in t, so
+  // the interval evaluation over T = tan([lo, hi]) encloses r_res.
+  ival t2(K.prec), d1(K.prec), d2(K.prec), r(K.prec);
+  mpfi_sqr(t2, T);
+  mpfi_add_ui(d1, t2, 1);
+  mpfi_mul(d2, t2, K.x2);
+  mpfi_add_ui(d2, d2, 1);
+  mpfi_mul(d1, d1, d2);
+  mpfi_sqrt(d1, d1);
+  mpfi_div(r, t2, d1);
+  mpfi_mul(r, r, K.x);
+  mpfi_mul(r, r, K.s1mx2);
+  // theta_first = 2 (k pi + sign(m) u*)/a in the first lobe.
+  const auto& f = pr.lobes.front();
+  ival th(K.prec), U(K.prec);
+  mpfi_interv_d(U, lo, hi);
+  mpfi_mul_si(th, K.pi, long(f.k));
+  if (f.m < 0) mpfi_sub(th, th, U);
+  else mpfi_add(th, th, U);
+  mpfi_mul_ui(th, th, 2);
+  mpfi_div_si(th, th, a);
+  if (!narrow(r, 40) || !narrow(th, 40)) return false;
+  pr.r_lo = r.lo();
+  pr.r_hi = r.hi();
+  pr.theta_lo = th.lo();
+  pr.theta_hi = th.hi();
+  // r_res^2 <= R(pi/2) = N/(4 a^2).
+  ival R(K.prec);
+  mpfi_set_z(R, to_big(pr.quarter_R_scaled).backend().data());
+  mpfi_div_si(R, R, a);
+  mpfi_div_si(R, R, a);
+  mpfi_div_ui(R, R, 4);
+  mpfi_sqr(r, r);
+  pr.r_below_R_half_pi = mpfr_cmp(r.right(), R.left()) <= 0;
+  return true;
+}
+
+// f'(u) = 1 + (1 + t^2)/(1 + x^2 t^2) and f''(u) = 2 t (1 - x^2)(1 + t^2)/(1 + x^2 t^2)^2,
+// t = tan u, over the interval t (u in [0, pi/2)).
+void f_derivatives(ival& d1, ival* d2, const constants& K, const ival& t) {
+  ival t2(K.prec), num(K.prec), den(K.prec);
+  mpfi_sqr(t2, t);
+  mpfi_add_ui(num, t2, 1);
+  mpfi_mul(den, K.x2, t2);
+  mpfi_add_ui(den, den, 1);
+  mpfi_div(d1, num, den);
+  mpfi_add_ui(d1, d1, 1);
+  if (d2) {
+    mpfi_mul(*d2, t, K.one_m_x2);
+    mpfi_mul(*d2, *d2, num);
+    mpfi_mul_ui(*d2, *d2, 2);
+    mpfi_sqr(den, den);
+    mpfi_div(*d2, *d2, den);
+  }
+}
+
+// D = t - arctan(x t)/x >= 0 over T = tan(U_a): by the alternating series
+// x^2 t^3 sum_n (-1)^n (x t)^(2n)/(2n+3) when x t < 1/16 (no cancellation), directly otherwise.
+void d_of(ival& D, const constants& K, const ival& T) {
+  ival y(K.prec), y2(K.prec), c(K.prec), rem(K.prec);
+  mpfi_mul(y, K.x, T);
+  if (y.hi() < 1.0 / 16) {
+    mpfi_sqr(y2, y);
+    const int terms = int(K.prec / 8) + 2;  // y^(2 terms) < 2^-(8 terms) < 2^-prec
+    // Horner for sum_{n < terms} (-1)^n y2^n/(2n+3); the tail is at most y2^terms/(2 terms + 3).
+    mpfi_set_ui(c, 1);
+    mpfi_div_ui(c, c, unsigned(2 * (terms - 1) + 3));
+    for (int n = terms - 2; n >= 0; --n) {
+      mpfi_mul(c, c, y2);
+      mpfi_neg(c, c);
+      mpfi_set_ui(rem, 1);
+      mpfi_div_ui(rem, rem, unsigned(2 * n + 3));
+      mpfi_add(c, c, rem);
+    }
+    mpfi_set(rem, y2);
+    for (int n = 1; n < terms; ++n) mpfi_mul(rem, rem, y2);
+    mpfi_div_ui(rem, rem, unsigned(2 * terms + 3));
+    const double tail = rem.hi();
+    mpfi_interv_d(rem, -tail, tail);  // |tail| <= that (directed: hi() rounds up)
+    mpfi_add(c, c, rem);
+    mpfi_mul(D, c, y2);
+    mpfi_mul(D, D, T);
+  } else {
+    mpfi_atan(D, y);
+    mpfi_div(D, D, K.x);
+    mpfi_sub(D, T, D);
+  }
+}
+
+// The paper's error in the lobe k = round(a/(2b)) (x < 1/2): false if not proved at this precision.
+bool enclose_asy_error(sweep_proof& pr, const constants& K, std::int64_t a, std::int64_t b) {
+  const std::int64_t twob = 2 * b, rem = int_mod(a, twob);
+  const std::int64_t k = rem == b ? (a - b) / twob : int_floor_div(a + b, twob);
+  const std::int64_t m = a - 2 * k * b, am = m < 0 ? -m : m;
+  ival d(K.prec);
+  if (am == 0) {
+    mpfi_set_ui(d, 0);  // s = 0: u_a = u_c = 0 exactly
+  } else {
+    ival s(K.prec);
+    pi_ratio(s, K, am, twob);
+    const double u0 = u_plus_tan_u_root(double(M_PI) * double(am) / double(twob));
+    double lo = 0, hi = 0;
+    ival T(K.prec), D(K.prec), F1(K.prec), F2(K.prec), TXi(K.prec), d1(K.prec), t(K.prec);
+    if (!bracket_u_asy(K, u0, s, lo, hi, T)) return false;
+    d_of(D, K, T);
+    if (!narrow(D, 20)) return false;
+    // First order: d = D/f'(xi), xi in Xi = [u_a, u_a + D/2] (f' >= 2); tan(Xi) is [tan lo, tan(hi + D/2)].
+    f_derivatives(F1, nullptr, K, T);
+    const double xi_hi = std::nextafter(hi + D.hi() / 2, 2.0);  // >= hi + D/2 despite the rounding of the sum
+    if (!(xi_hi < K.pi.lo() / 2)) return false;
+    tan_at(t, xi_hi, MPFR_RNDU, K.prec);
+    mpfi_interv_fr(TXi, T.left(), t.right());
+    ival F1xi(K.prec);
+    f_derivatives(F1xi, &F2, K, TXi);
+    mpfi_div(d1, D, F1xi);
+    // Second order: d = (D - f''(eta) d^2/2)/f'(u_a), eta in Xi; intersected with the first.
+    mpfi_sqr(t, d1);
+    mpfi_mul(t, t, F2);
+    mpfi_div_ui(t, t, 2);
+    mpfi_sub(d, D, t);
+    mpfi_div(d, d, F1);
+    mpfi_intersect(d, d, d1);
+    if (mpfi_is_empty(d)) return false;  // cannot happen: both enclose u_c - u_a
+  }
+  // error = 2 d/a, bound = pi^3 x^2/a, ratio = 2 d/(pi^3 x^2), constant = 2 d/x^2.
+  ival e(K.prec), bound(K.prec), ratio(K.prec), cst(K.prec);
+  mpfi_mul_ui(e, d, 2);
+  mpfi_div_si(e, e, a);
+  mpfi_sqr(bound, K.pi);
+  mpfi_mul(bound, bound, K.pi);
+  mpfi_mul(bound, bound, K.x2);
+  mpfi_div_si(bound, bound, a);
+  mpfi_div(ratio, e, bound);
+  mpfi_mul_ui(cst, d, 2);
+  mpfi_div(cst, cst, K.x2);
+  pr.asy_error_hi = e.hi();
+  pr.asy_bound_lo = bound.lo();
+  pr.asy_ratio_lo = ratio.lo();
+  pr.asy_ratio_hi = ratio.hi();
+  pr.asy_constant_hi = cst.hi();
+  return true;
+}
+
+// sqrt(2) sin(k pi/4) and sqrt(2) cos(k pi/4) for odd k; sin, cos for even k (all in {0, +-1}).
+int sin_quarter(std::int64_t k) {
+  static const int t[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+  return t[int_mod(k, std::int64_t(8))];
+}
+int cos_quarter(std::int64_t k) {
+  static const int t[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+  return t[int_mod(k, std::int64_t(8))];
+}
+
+}  // namespace
+
+// With alpha = a pi/4, beta = b pi/4 (theta = pi/2) and v = 1: q = sqrt(1-x^2) sin alpha cos beta,
+// q' = cos alpha cos beta - x sin alpha sin beta (docs/mathematics.md §1), so
+// 4 a^2 R = 4 (a^2 - b^2) (sA cB)^2 + 4 (a cA cB - b sA sB)^2. For odd a (b odd too) every
+// sine and cosine is +-1/sqrt(2), each product is (+-1)/2; for even a they are 0 or +-1.
+int128 sweep_quarter_R_scaled(std::int64_t a, std::int64_t b) {
+  const int sa = sin_quarter(a), ca = cos_quarter(a), sb = sin_quarter(b), cb = cos_quarter(b);
+  const int128 A = a, B = b, diff = A * A - B * B;
+  const int128 q = A * (ca * cb) - B * (sa * sb);
+  if (a % 2 != 0) return diff + q * q;
+  return 4 * diff * (sa * cb) * (sa * cb) + 4 * q * q;
+}
+
+sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, bool asy) {
+  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+  sweep_proof pr;
+  pr.quarter_R_scaled = sweep_quarter_R_scaled(a, b);
+  const int amod = int(int_mod(a, std::int64_t(4)));
+  pr.m_min = std::min(amod, 4 - amod);
+  pr.lobes = minimiser_lobes(int128(a), int128(b));
+  pr.has_asy = asy && 2 * b < a;
+  const double u0 = pr.m_min == 0 ? 0.0
+                                  : detail::theorem_root_scout(double(b) / double(a),
+                                                               double(M_PI) * pr.m_min / (2 * double(a)));
+  bool done_r = false, done_asy = !pr.has_asy;
+  for (mpfr_prec_t prec = 64; prec <= 512 && !(done_r && done_asy); prec *= 2) {
+    constants K(prec);
+    set_constants(K, p.tau(), p.sigma());
+    if (!done_r) {
+      if (pr.m_min == 0) {
+        ival th(prec);  // theta_first = 2 k pi/a, u* = 0; r_res = 0 exactly
+        mpfi_mul_si(th, K.pi, long(pr.lobes.front().k));
+        mpfi_mul_ui(th, th, 2);
+        mpfi_div_si(th, th, a);
+        pr.theta_lo = th.lo();
+        pr.theta_hi = th.hi();
+        done_r = true;
+      } else {
+        done_r = enclose_minimum(pr, K, a, u0);
+      }
+    }
+    if (!done_asy) done_asy = enclose_asy_error(pr, K, a, b);
+  }
+  pr.enclosed = done_r;
+  pr.asy_enclosed = pr.has_asy && done_asy;
+  if (!done_r) pr.note = "not proved: the bracket of u* was not decided within 512 bits";
+  if (pr.has_asy && !done_asy)
+    pr.note += std::string(pr.note.empty() ? "" : "; ") + "not proved: the asy error was not enclosed within 512 bits";
+  return pr;
+}
+
+}  // namespace gyrores
