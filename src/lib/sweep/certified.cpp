@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/inscribed/asymptotic.hpp>      // u_plus_tan_u_root (the scout of u_a)
 #include <gyrores/inscribed/lattice_theorem.hpp>  // minimiser_lobes, the scout of u*
 
@@ -15,36 +16,11 @@ namespace gyrores {
 
 namespace {
 
-// An MPFI interval at a fixed precision.
-class ival {
- public:
-  explicit ival(mpfr_prec_t prec) { mpfi_init2(v_, prec); }
-  ~ival() { mpfi_clear(v_); }
-  ival(const ival&) = delete;
-  ival& operator=(const ival&) = delete;
-  operator mpfi_ptr() { return v_; }
-  operator mpfi_srcptr() const { return v_; }
-  double lo() const { return mpfr_get_d(&v_->left, MPFR_RNDD); }
-  double hi() const { return mpfr_get_d(&v_->right, MPFR_RNDU); }
-  mpfr_srcptr left() const { return &v_->left; }
-  mpfr_srcptr right() const { return &v_->right; }
-
- private:
-  mpfi_t v_;
-};
-
-// Relative width (hi - lo)/|lo| <= 2^-e, for an interval not containing 0.
-bool narrow(const ival& A, int e) {
-  if (mpfi_has_zero(A)) return false;
-  const double lo = std::fabs(A.lo()), hi = std::fabs(A.hi());
-  return std::fabs(hi - lo) <= std::ldexp(std::min(lo, hi), -e);
-}
-
 // The pair's constants as intervals at one precision.
 struct constants {
   explicit constants(mpfr_prec_t p) : prec(p), pi(p), x(p), x2(p), s1mx2(p), one_m_x2(p) {}
   mpfr_prec_t prec;
-  ival pi, x, x2, s1mx2, one_m_x2;  // x = b/a, sqrt(1 - x^2) = 2 sqrt(tau sigma)/a, 1 - x^2 = 4 tau sigma/a^2
+  fixed_mpfi pi, x, x2, s1mx2, one_m_x2;  // x = b/a, sqrt(1 - x^2) = 2 sqrt(tau sigma)/a, 1 - x^2 = 4 tau sigma/a^2
 };
 
 void set_constants(constants& K, std::int64_t tau, std::int64_t sigma) {
@@ -62,30 +38,16 @@ void set_constants(constants& K, std::int64_t tau, std::int64_t sigma) {
 }
 
 // out = pi n/d, n, d integers.
-void pi_ratio(ival& out, const constants& K, std::int64_t n, std::int64_t d) {
+void pi_ratio(fixed_mpfi& out, const constants& K, std::int64_t n, std::int64_t d) {
   mpfi_mul_si(out, K.pi, n);
   mpfi_div_si(out, out, d);
 }
 
-// An MPFR number at a fixed precision.
-class fr {
- public:
-  explicit fr(mpfr_prec_t prec) { mpfr_init2(v_, prec); }
-  ~fr() { mpfr_clear(v_); }
-  fr(const fr&) = delete;
-  fr& operator=(const fr&) = delete;
-  operator mpfr_ptr() { return v_; }
-  operator mpfr_srcptr() const { return v_; }
-
- private:
-  mpfr_t v_;
-};
-
 // tan u for the double u in (0, pi/2): the interval [down, up] from one MPFR call rounded in
 // direction rnd (the other end is the neighbouring float, which lies on the other side of the
 // exact value).
-void tan_at(ival& out, double u, mpfr_rnd_t rnd, mpfr_prec_t prec) {
-  fr t(prec), o(prec);
+void tan_at(fixed_mpfi& out, double u, mpfr_rnd_t rnd, mpfr_prec_t prec) {
+  fixed_mpfr t(prec), o(prec);
   mpfr_set_d(t, u, MPFR_RNDN);  // exact: prec >= 53
   mpfr_tan(t, t, rnd);
   mpfr_set(o, t, MPFR_RNDN);
@@ -97,8 +59,8 @@ void tan_at(ival& out, double u, mpfr_rnd_t rnd, mpfr_prec_t prec) {
 
 // One side of H(u) = x u + arctan(x tan u), given tan u as an interval: the upper bound
 // (rnd = RNDU) or the lower bound (RNDD); every step of H is increasing in x and in tan u.
-void h_side(fr& out, const constants& K, double u, const ival& tan_u, mpfr_rnd_t rnd) {
-  fr x(K.prec), t(K.prec);
+void h_side(fixed_mpfr& out, const constants& K, double u, const fixed_mpfi& tan_u, mpfr_rnd_t rnd) {
+  fixed_mpfr x(K.prec), t(K.prec);
   const bool up = rnd == MPFR_RNDU;
   mpfr_set(x, up ? K.x.right() : K.x.left(), rnd);
   mpfr_set(t, up ? tan_u.right() : tan_u.left(), rnd);
@@ -111,9 +73,9 @@ void h_side(fr& out, const constants& K, double u, const ival& tan_u, mpfr_rnd_t
 // A bracket [lo, hi] of u*, the root of H(u) = mu in (0, pi/2) near the double u0, proved by
 // H(lo) < mu < H(hi) (H increases); relative half-widths 2^-46, 2^-36, 2^-26 are tried. On
 // success T holds tan([lo, hi]). False when none is proved.
-bool bracket_u_star(const constants& K, double u0, const ival& mu, double& lo, double& hi, ival& T) {
-  ival tlo(K.prec), thi(K.prec);
-  fr h(K.prec);
+bool bracket_u_star(const constants& K, double u0, const fixed_mpfi& mu, double& lo, double& hi, fixed_mpfi& T) {
+  fixed_mpfi tlo(K.prec), thi(K.prec);
+  fixed_mpfr h(K.prec);
   const double half_pi = K.pi.lo() / 2;
   for (int e : {46, 36, 26}) {
     lo = u0 - std::ldexp(u0, -e);
@@ -132,9 +94,9 @@ bool bracket_u_star(const constants& K, double u0, const ival& mu, double& lo, d
 }
 
 // A bracket of u_a, the root of u + tan u = s in (0, pi/2) near u0, proved like bracket_u_star.
-bool bracket_u_asy(const constants& K, double u0, const ival& s, double& lo, double& hi, ival& T) {
-  ival tlo(K.prec), thi(K.prec);
-  fr g(K.prec);
+bool bracket_u_asy(const constants& K, double u0, const fixed_mpfi& s, double& lo, double& hi, fixed_mpfi& T) {
+  fixed_mpfi tlo(K.prec), thi(K.prec);
+  fixed_mpfr g(K.prec);
   const double half_pi = K.pi.lo() / 2;
   for (int e : {46, 36, 26}) {
     lo = u0 - std::ldexp(u0, -e);
@@ -154,13 +116,13 @@ bool bracket_u_asy(const constants& K, double u0, const ival& s, double& lo, dou
 
 // r_res and theta_first of a non-degenerate pair: false if the bracket of u* is not proved.
 bool enclose_minimum(sweep_proof& pr, const constants& K, std::int64_t a, double u0) {
-  ival mu(K.prec), T(K.prec);
+  fixed_mpfi mu(K.prec), T(K.prec);
   pi_ratio(mu, K, pr.m_min, 2 * a);
   double lo = 0, hi = 0;
   if (!bracket_u_star(K, u0, mu, lo, hi, T)) return false;
   // sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u: increasing in t, so
   // the interval evaluation over T = tan([lo, hi]) encloses r_res.
-  ival t2(K.prec), d1(K.prec), d2(K.prec), r(K.prec);
+  fixed_mpfi t2(K.prec), d1(K.prec), d2(K.prec), r(K.prec);
   mpfi_sqr(t2, T);
   mpfi_add_ui(d1, t2, 1);
   mpfi_mul(d2, t2, K.x2);
@@ -172,20 +134,20 @@ bool enclose_minimum(sweep_proof& pr, const constants& K, std::int64_t a, double
   mpfi_mul(r, r, K.s1mx2);
   // theta_first = 2 (k pi + sign(m) u*)/a in the first lobe.
   const auto& f = pr.lobes.front();
-  ival th(K.prec), U(K.prec);
+  fixed_mpfi th(K.prec), U(K.prec);
   mpfi_interv_d(U, lo, hi);
   mpfi_mul_si(th, K.pi, long(f.k));
   if (f.m < 0) mpfi_sub(th, th, U);
   else mpfi_add(th, th, U);
   mpfi_mul_ui(th, th, 2);
   mpfi_div_si(th, th, a);
-  if (!narrow(r, 40) || !narrow(th, 40)) return false;
+  if (!fixed_narrow(r, 40) || !fixed_narrow(th, 40)) return false;
   pr.r_lo = r.lo();
   pr.r_hi = r.hi();
   pr.theta_lo = th.lo();
   pr.theta_hi = th.hi();
   // r_res^2 <= R(pi/2) = N/(4 a^2).
-  ival R(K.prec);
+  fixed_mpfi R(K.prec);
   mpfi_set_z(R, to_big(pr.quarter_R_scaled).backend().data());
   mpfi_div_si(R, R, a);
   mpfi_div_si(R, R, a);
@@ -197,8 +159,8 @@ bool enclose_minimum(sweep_proof& pr, const constants& K, std::int64_t a, double
 
 // f'(u) = 1 + (1 + t^2)/(1 + x^2 t^2) and f''(u) = 2 t (1 - x^2)(1 + t^2)/(1 + x^2 t^2)^2,
 // t = tan u, over the interval t (u in [0, pi/2)).
-void f_derivatives(ival& d1, ival* d2, const constants& K, const ival& t) {
-  ival t2(K.prec), num(K.prec), den(K.prec);
+void f_derivatives(fixed_mpfi& d1, fixed_mpfi* d2, const constants& K, const fixed_mpfi& t) {
+  fixed_mpfi t2(K.prec), num(K.prec), den(K.prec);
   mpfi_sqr(t2, t);
   mpfi_add_ui(num, t2, 1);
   mpfi_mul(den, K.x2, t2);
@@ -216,8 +178,8 @@ void f_derivatives(ival& d1, ival* d2, const constants& K, const ival& t) {
 
 // D = t - arctan(x t)/x >= 0 over T = tan(U_a): by the alternating series
 // x^2 t^3 sum_n (-1)^n (x t)^(2n)/(2n+3) when x t < 1/16 (no cancellation), directly otherwise.
-void d_of(ival& D, const constants& K, const ival& T) {
-  ival y(K.prec), y2(K.prec), c(K.prec), rem(K.prec);
+void d_of(fixed_mpfi& D, const constants& K, const fixed_mpfi& T) {
+  fixed_mpfi y(K.prec), y2(K.prec), c(K.prec), rem(K.prec);
   mpfi_mul(y, K.x, T);
   if (y.hi() < 1.0 / 16) {
     mpfi_sqr(y2, y);
@@ -252,25 +214,25 @@ bool enclose_asy_error(sweep_proof& pr, const constants& K, std::int64_t a, std:
   const std::int64_t twob = 2 * b, rem = int_mod(a, twob);
   const std::int64_t k = rem == b ? (a - b) / twob : int_floor_div(a + b, twob);
   const std::int64_t m = a - 2 * k * b, am = m < 0 ? -m : m;
-  ival d(K.prec);
+  fixed_mpfi d(K.prec);
   if (am == 0) {
     mpfi_set_ui(d, 0);  // s = 0: u_a = u_c = 0 exactly
   } else {
-    ival s(K.prec);
+    fixed_mpfi s(K.prec);
     pi_ratio(s, K, am, twob);
     const double u0 = u_plus_tan_u_root(double(M_PI) * double(am) / double(twob));
     double lo = 0, hi = 0;
-    ival T(K.prec), D(K.prec), F1(K.prec), F2(K.prec), TXi(K.prec), d1(K.prec), t(K.prec);
+    fixed_mpfi T(K.prec), D(K.prec), F1(K.prec), F2(K.prec), TXi(K.prec), d1(K.prec), t(K.prec);
     if (!bracket_u_asy(K, u0, s, lo, hi, T)) return false;
     d_of(D, K, T);
-    if (!narrow(D, 20)) return false;
+    if (!fixed_narrow(D, 20)) return false;
     // First order: d = D/f'(xi), xi in Xi = [u_a, u_a + D/2] (f' >= 2); tan(Xi) is [tan lo, tan(hi + D/2)].
     f_derivatives(F1, nullptr, K, T);
     const double xi_hi = std::nextafter(hi + D.hi() / 2, 2.0);  // >= hi + D/2 despite the rounding of the sum
     if (!(xi_hi < K.pi.lo() / 2)) return false;
     tan_at(t, xi_hi, MPFR_RNDU, K.prec);
     mpfi_interv_fr(TXi, T.left(), t.right());
-    ival F1xi(K.prec);
+    fixed_mpfi F1xi(K.prec);
     f_derivatives(F1xi, &F2, K, TXi);
     mpfi_div(d1, D, F1xi);
     // Second order: d = (D - f''(eta) d^2/2)/f'(u_a), eta in Xi; intersected with the first.
@@ -283,7 +245,7 @@ bool enclose_asy_error(sweep_proof& pr, const constants& K, std::int64_t a, std:
     if (mpfi_is_empty(d)) return false;  // cannot happen: both enclose u_c - u_a
   }
   // error = 2 d/a, bound = pi^3 x^2/a, ratio = 2 d/(pi^3 x^2), constant = 2 d/x^2.
-  ival e(K.prec), bound(K.prec), ratio(K.prec), cst(K.prec);
+  fixed_mpfi e(K.prec), bound(K.prec), ratio(K.prec), cst(K.prec);
   mpfi_mul_ui(e, d, 2);
   mpfi_div_si(e, e, a);
   mpfi_sqr(bound, K.pi);
@@ -342,7 +304,7 @@ sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, bool asy) {
     set_constants(K, p.tau(), p.sigma());
     if (!done_r) {
       if (pr.m_min == 0) {
-        ival th(prec);  // theta_first = 2 k pi/a, u* = 0; r_res = 0 exactly
+        fixed_mpfi th(prec);  // theta_first = 2 k pi/a, u* = 0; r_res = 0 exactly
         mpfi_mul_si(th, K.pi, long(pr.lobes.front().k));
         mpfi_mul_ui(th, th, 2);
         mpfi_div_si(th, th, a);
