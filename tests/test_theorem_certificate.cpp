@@ -44,6 +44,8 @@ const std::vector<std::pair<std::string, std::string>> hard_cases{
     {"4611686018427387905", "4611686018427387903"},  // (2^62+1, 2^62-1): the sum exceeds 64 bits
     {"18446744073709551617", "18446744073709551616"},  // (2^64+1, 2^64)
     {"1000000000000000003", "1000000000000000001"}, {"1000000000000000000000000000003", "1000000000000000000000000000001"},
+    // Beyond double's exponent range (order > 2^900): the root's scout runs in MPFR.
+    {"1" + std::string(399, '0') + "1", "1" + std::string(400, '0')},
 };
 
 }  // namespace

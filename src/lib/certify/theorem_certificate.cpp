@@ -221,7 +221,8 @@ std::pair<std::string, std::string> bracket_u_star(const resonant_pair<big_int>&
   } else {
     scoped_digits d(20);
     auto [x, mu] = detail::theorem_x_mu<mpfr_real>(a, b, m);
-    mpfr_set(u, detail::theorem_root_scout(x, mu).backend().data(), MPFR_RNDN);
+    const mpfr_real scout = detail::theorem_root_scout(x, mu);  // named: backend() of a temporary is moved from
+    mpfr_set(u, scout.backend().data(), MPFR_RNDN);
     acc = 56;
   }
   iv tc(bits), wc(bits);
