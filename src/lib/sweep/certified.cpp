@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <gyrores/certify/theorem_bracket.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/inscribed/asymptotic.hpp>      // u_plus_tan_u_root (the scout of u_a)
 #include <gyrores/inscribed/lattice_theorem.hpp>  // minimiser_lobes, the scout of u*
@@ -16,25 +17,16 @@ namespace gyrores {
 
 namespace {
 
-// The pair's constants as intervals at one precision.
-struct constants {
-  explicit constants(mpfr_prec_t p) : prec(p), pi(p), x(p), x2(p), s1mx2(p), one_m_x2(p) {}
-  mpfr_prec_t prec;
-  fixed_mpfi pi, x, x2, s1mx2, one_m_x2;  // x = b/a, sqrt(1 - x^2) = 2 sqrt(tau sigma)/a, 1 - x^2 = 4 tau sigma/a^2
+// The pair's constants as intervals at one precision: the theorem's (certify/theorem_bracket.hpp)
+// and 1 - x^2.
+struct constants : theorem_constants {
+  explicit constants(mpfr_prec_t p) : theorem_constants(p), one_m_x2(p) {}
+  fixed_mpfi one_m_x2;
 };
 
-void set_constants(constants& K, std::int64_t tau, std::int64_t sigma) {
-  const std::int64_t a = tau + sigma, b = tau - sigma;
-  mpfi_const_pi(K.pi);
-  mpfi_set_si(K.x, b);
-  mpfi_div_si(K.x, K.x, a);
-  mpfi_sqr(K.x2, K.x);
-  mpfi_set_si(K.one_m_x2, tau);
-  mpfi_mul_si(K.one_m_x2, K.one_m_x2, sigma);
-  mpfi_mul_ui(K.one_m_x2, K.one_m_x2, 4);
-  mpfi_div_si(K.one_m_x2, K.one_m_x2, a);
-  mpfi_div_si(K.one_m_x2, K.one_m_x2, a);
-  mpfi_sqrt(K.s1mx2, K.one_m_x2);
+void set_constants(constants& K, const resonant_pair<big_int>& p) {
+  set_theorem_constants(K, p);
+  mpfi_sqr(K.one_m_x2, K.s1mx2);
 }
 
 // out = pi n/d, n, d integers.
@@ -57,43 +49,9 @@ void tan_at(fixed_mpfi& out, double u, mpfr_rnd_t rnd, mpfr_prec_t prec) {
   else mpfi_interv_fr(out, t, o);
 }
 
-// One side of H(u) = x u + arctan(x tan u), given tan u as an interval: the upper bound
-// (rnd = RNDU) or the lower bound (RNDD); every step of H is increasing in x and in tan u.
-void h_side(fixed_mpfr& out, const constants& K, double u, const fixed_mpfi& tan_u, mpfr_rnd_t rnd) {
-  fixed_mpfr x(K.prec), t(K.prec);
-  const bool up = rnd == MPFR_RNDU;
-  mpfr_set(x, up ? K.x.right() : K.x.left(), rnd);
-  mpfr_set(t, up ? tan_u.right() : tan_u.left(), rnd);
-  mpfr_mul(t, t, x, rnd);
-  mpfr_atan(t, t, rnd);
-  mpfr_mul_d(out, x, u, rnd);
-  mpfr_add(out, out, t, rnd);
-}
-
-// A bracket [lo, hi] of u*, the root of H(u) = mu in (0, pi/2) near the double u0, proved by
-// H(lo) < mu < H(hi) (H increases); relative half-widths 2^-46, 2^-36, 2^-26 are tried. On
-// success T holds tan([lo, hi]). False when none is proved.
-bool bracket_u_star(const constants& K, double u0, const fixed_mpfi& mu, double& lo, double& hi, fixed_mpfi& T) {
-  fixed_mpfi tlo(K.prec), thi(K.prec);
-  fixed_mpfr h(K.prec);
-  const double half_pi = K.pi.lo() / 2;
-  for (int e : {46, 36, 26}) {
-    lo = u0 - std::ldexp(u0, -e);
-    hi = u0 + std::ldexp(u0, -e);
-    if (!(lo > 0) || !(hi < half_pi)) continue;
-    tan_at(tlo, lo, MPFR_RNDU, K.prec);
-    h_side(h, K, lo, tlo, MPFR_RNDU);
-    if (!(mpfr_cmp(h, mu.left()) < 0)) continue;
-    tan_at(thi, hi, MPFR_RNDD, K.prec);
-    h_side(h, K, hi, thi, MPFR_RNDD);
-    if (!(mpfr_cmp(h, mu.right()) > 0)) continue;
-    mpfi_interv_fr(T, tlo.left(), thi.right());
-    return true;
-  }
-  return false;
-}
-
-// A bracket of u_a, the root of u + tan u = s in (0, pi/2) near u0, proved like bracket_u_star.
+// A bracket [lo, hi] of u_a, the root of u + tan u = s in (0, pi/2) near the double u0, proved
+// by lo + tan lo < s < hi + tan hi (g increases); relative half-widths 2^-46, 2^-36, 2^-26 are
+// tried. On success T holds tan([lo, hi]). False when none is proved.
 bool bracket_u_asy(const constants& K, double u0, const fixed_mpfi& s, double& lo, double& hi, fixed_mpfi& T) {
   fixed_mpfi tlo(K.prec), thi(K.prec);
   fixed_mpfr g(K.prec);
@@ -114,28 +72,25 @@ bool bracket_u_asy(const constants& K, double u0, const fixed_mpfi& s, double& l
   return false;
 }
 
-// r_res and theta_first of a non-degenerate pair: false if the bracket of u* is not proved.
-bool enclose_minimum(sweep_proof& pr, const constants& K, std::int64_t a, double u0) {
-  fixed_mpfi mu(K.prec), T(K.prec);
-  pi_ratio(mu, K, pr.m_min, 2 * a);
-  double lo = 0, hi = 0;
-  if (!bracket_u_star(K, u0, mu, lo, hi, T)) return false;
-  // sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u: increasing in t, so
-  // the interval evaluation over T = tan([lo, hi]) encloses r_res.
-  fixed_mpfi t2(K.prec), d1(K.prec), d2(K.prec), r(K.prec);
-  mpfi_sqr(t2, T);
-  mpfi_add_ui(d1, t2, 1);
-  mpfi_mul(d2, t2, K.x2);
-  mpfi_add_ui(d2, d2, 1);
-  mpfi_mul(d1, d1, d2);
-  mpfi_sqrt(d1, d1);
-  mpfi_div(r, t2, d1);
-  mpfi_mul(r, r, K.x);
-  mpfi_mul(r, r, K.s1mx2);
+// r_res and theta_first of a non-degenerate pair (certify/theorem_bracket.hpp): a bracket of
+// relative half-width 2^-(prec-16) about the approximate u*, proved. False if not proved.
+bool enclose_minimum(sweep_proof& pr, const constants& K, const resonant_pair<big_int>& p, std::int64_t a) {
+  theorem_centre z(K.prec);
+  if (!theorem_centre_of(z, K, p)) return false;
+  fixed_mpfr rad(K.prec), end(K.prec);
+  mpfr_abs(rad, z.u, MPFR_RNDN);
+  mpfr_mul_2si(rad, rad, -int(K.prec) + 16, MPFR_RNDN);
+  fixed_mpfi lo(K.prec), hi(K.prec), T(K.prec), U(K.prec), r(K.prec);
+  mpfr_sub(end, z.u, rad, MPFR_RNDD);
+  mpfi_set_fr(lo, end);
+  mpfr_add(end, z.u, rad, MPFR_RNDU);
+  mpfi_set_fr(hi, end);
+  if (!prove_theorem_bracket(K, z, lo, hi, T)) return false;
+  mpfi_union(U, lo, hi);
+  theorem_radius(r, K, T);
   // theta_first = 2 (k pi + sign(m) u*)/a in the first lobe.
   const auto& f = pr.lobes.front();
-  fixed_mpfi th(K.prec), U(K.prec);
-  mpfi_interv_d(U, lo, hi);
+  fixed_mpfi th(K.prec);
   mpfi_mul_si(th, K.pi, long(f.k));
   if (f.m < 0) mpfi_sub(th, th, U);
   else mpfi_add(th, th, U);
@@ -295,13 +250,11 @@ sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, bool asy) {
   pr.m_min = std::min(amod, 4 - amod);
   pr.lobes = minimiser_lobes(int128(a), int128(b));
   pr.has_asy = asy && 2 * b < a;
-  const double u0 = pr.m_min == 0 ? 0.0
-                                  : detail::theorem_root_scout(double(b) / double(a),
-                                                               double(M_PI) * pr.m_min / (2 * double(a)));
+  const resonant_pair<big_int> pb(big_int(p.tau()), big_int(p.sigma()));
   bool done_r = false, done_asy = !pr.has_asy;
   for (mpfr_prec_t prec = 64; prec <= 512 && !(done_r && done_asy); prec *= 2) {
     constants K(prec);
-    set_constants(K, p.tau(), p.sigma());
+    set_constants(K, pb);
     if (!done_r) {
       if (pr.m_min == 0) {
         fixed_mpfi th(prec);  // theta_first = 2 k pi/a, u* = 0; r_res = 0 exactly
@@ -312,7 +265,7 @@ sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, bool asy) {
         pr.theta_hi = th.hi();
         done_r = true;
       } else {
-        done_r = enclose_minimum(pr, K, a, u0);
+        done_r = enclose_minimum(pr, K, pb, a);
       }
     }
     if (!done_asy) done_asy = enclose_asy_error(pr, K, a, b);
