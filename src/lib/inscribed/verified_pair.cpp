@@ -3,6 +3,7 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/rational.hpp>
 #include <gyrores/core/verified_digits.hpp>
 
 namespace gyrores {
@@ -15,6 +16,45 @@ bool pair_needs_mpfr(const resonant_pair<big_int>& p) { return boost::multipreci
 template <class F> auto with_pair_integer(const resonant_pair<big_int>& p, F&& f) {
   if (pair_fits_int64(p)) return f(pair_cast<std::int64_t>(p));
   return f(p);
+}
+
+// The fields whose exact value follows from the integers (and qdot0's decimal text), as exact
+// rationals: they are rounded once from that value (format_rational_scientific, ties to even),
+// never verified in floating point (an exact value on a rounding boundary, such as the beat
+// ratio 2305843009213693950 at 18 digits, could never pass Ziv's test). beat_ratio = a/b always;
+// qdot0 when its text is an exact decimal; n = b/sqrt(tau sigma) and rho0 = qdot0 sqrt(tau
+// sigma)/a when tau sigma is a square; omega1 = sqrt(tau/sigma), omega2 = 1/omega1 when tau and
+// sigma are squares (coprime); h_z_max = qdot0^2/2 for degenerate pairs (r_res = h_min = 0).
+using exact_fields = std::map<std::string, big_rational>;
+
+exact_fields exact_fields_of(const resonant_pair<big_int>& p, const std::string& qdot0) {
+  exact_fields e;
+  const big_int a = p.order(), b = big_int(p.delta()), tau = p.tau(), sigma = p.sigma();
+  e["beat_ratio"] = big_rational(a, b);
+  std::optional<big_rational> v;
+  try {
+    v = parse_rational(qdot0, "qdot0");
+  } catch (const usage_error&) {
+    // A decimal form parse_rational does not take (e.g. "1e999999"): qdot0 stays a float field.
+  }
+  if (v) e["qdot0"] = *v;
+  big_int rts, rt, rs;
+  if (int_is_square(big_int(tau * sigma), rts)) {
+    e["n"] = big_rational(b, rts);
+    if (v) e["rho0"] = *v * big_rational(rts, a);
+  }
+  if (int_is_square(tau, rt) && int_is_square(sigma, rs)) {
+    e["omega1"] = big_rational(rt, rs);
+    e["omega2"] = big_rational(rs, rt);
+  }
+  if (p.degenerate() && v) e["h_z_max"] = *v * *v / 2;
+  return e;
+}
+
+// Diagnostics (core/verified_digits.hpp): the paper's asymptotics, which are approximations
+// compared with the answer, not the answer; they never block it.
+bool is_diagnostic_field(const std::string& name) {
+  return name.rfind("asy.", 0) == 0 || name == "r_res_asy" || name == "r_res_asy_rel_error";
 }
 
 // Which fields a run reports: all of analyse_pair's, or the verified_pair_values subset.
@@ -34,7 +74,8 @@ template <class T> void put_asymptotic_fields(real_fields& f, const asymptotic_r
   }
 }
 
-template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_set set) {
+// The floating fields of a run: every field of `set` but the exact ones (exact_fields_of).
+template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_set set, const exact_fields& exact) {
   real_fields f;
   put_field(f, "n", a.n);
   put_field(f, "r_res", a.inscribed.r_res);
@@ -42,7 +83,10 @@ template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_
   put_field(f, "theta_first", a.inscribed.theta_first);
   put_field(f, "t_first", a.inscribed.t_first);
   put_field(f, "t_min_paper", a.t_min_paper);
-  if (set == field_set::values) return f;
+  if (set == field_set::values) {
+    for (const auto& [name, value] : exact) f.erase(name);
+    return f;
+  }
   put_field(f, "beat_ratio", a.beat_ratio);
   put_field(f, "omega1", a.omega1);
   put_field(f, "omega2", a.omega2);
@@ -51,13 +95,16 @@ template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_
   put_field(f, "h_z_max", a.inscribed.h_z_max);
   for (const auto& m : a.inscribed.minimisers) f["minimisers"].push_back(real_to_mpfr(m));
   put_asymptotic_fields(f, a.asymptotic);
+  for (const auto& [name, value] : exact) f.erase(name);
   return f;
 }
 
 // analyse_pair in each plan's type, verified. The cross-check (it runs in double whatever the
 // plan) is done in the first run only; cross_checked says whether it was.
+// The exact fields are left out of the runs and added to the result, rounded once.
 verified_run verified_analysis(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0,
                                const analysis_options& opt, field_set set, bool& cross_checked) {
+  const exact_fields exact = exact_fields_of(p, qdot0);
   bool first = true;
   auto compute = [&](const precision_plan& plan) {
     analysis_options o = opt;
@@ -68,13 +115,16 @@ verified_run verified_analysis(const resonant_pair<big_int>& p, unsigned digits,
       return with_pair_integer(p, [&](const auto& pp) {
         auto a = analyse_pair<T>(pp, v, o);
         if (first && a.cross_checked) cross_checked = true;
-        return analysis_fields(a, set);
+        return analysis_fields(a, set, exact);
       });
     });
     first = false;
     return f;
   };
-  return compute_verified(digits, pair_needs_mpfr(p), compute);
+  verified_run run = compute_verified(digits, pair_needs_mpfr(p), compute, is_diagnostic_field);
+  for (const auto& [name, value] : exact)
+    if (set == field_set::full || name == "n") run.fields[name] = {format_rational_scientific(value, digits)};
+  return run;
 }
 
 // The integer and boolean parts of the asymptotics (precision independent): in double, or in
@@ -137,6 +187,8 @@ void fill_pair_report(verified_pair_report& r, const verified_run& run) {
     r.r_res_asy = first_value(run, "r_res_asy");
     r.r_res_asy_rel_error = first_value(run, "r_res_asy_rel_error");
   }
+  for (const auto& [name, settled] : run.unsettled)
+    r.unsettled[name.rfind("asy.", 0) == 0 ? "asymptotic.lobes." + name.substr(4) : name] = settled;
 }
 
 std::string method_of(const resonant_pair<big_int>& p, solver_choice solver) {
