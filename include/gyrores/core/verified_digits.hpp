@@ -15,7 +15,8 @@
 // all cancellation) never block the main answer: once every main field has settled, a
 // diagnostic that has not settled by the second round is reported with the digits that did
 // settle (fewer than D), or, when not one did, as an estimated bound on its magnitude; the
-// result lists it in `unsettled`. compute_error is kept for the main fields.
+// result lists it in `unsettled`; a diagnostic the check run does not have is left out of the
+// result. compute_error is kept for the main fields.
 //
 // What this guarantees, and what not: it is a strong consistency check, an *estimate* of the
 // error, not a proof. Test 2 assumes that the MPFR run has lost at most 12 bits, which is not

@@ -11,7 +11,7 @@
 // core/verified_digits.hpp (the plan's type for D digits, then MPFR with 64 more bits; Ziv's
 // test; the precision doubles, at most 5 rounds in all, then compute_error). That is a strong
 // consistency check, not a proof (see that header); certificates (certify/) prove. Pairs whose
-// order exceeds 2^900 run in MPFR whatever D (double's exponent range). The lattice result is cross-checked against
+// order exceeds 2^180 run in MPFR whatever D (double's exponent range: r_res ~ a^-2.5, x^2). The lattice result is cross-checked against
 // the global search (cross_check.hpp) once, in the first run, for orders up to
 // cross_check_max_order.
 #pragma once

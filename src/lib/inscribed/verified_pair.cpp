@@ -9,8 +9,11 @@
 namespace gyrores {
 namespace {
 
-// Beyond 2^900 the pair's integers leave double's (and float128's) exponent range.
-bool pair_needs_mpfr(const resonant_pair<big_int>& p) { return boost::multiprecision::msb(p.order()) > 900; }
+// Beyond 2^900 the pair's integers leave double's (and float128's) exponent range; well before,
+// the quantities do: r_res falls like a^-2.5 (x near 1), h_min like its square, and the
+// asymptotics work with x^2 ~ a^-2 (TOMS 748 on denormals failed at a ~ 1e160). From 2^180 on
+// every run is MPFR, whose exponent range holds them all.
+bool pair_needs_mpfr(const resonant_pair<big_int>& p) { return boost::multiprecision::msb(p.order()) > 180; }
 
 // f(p) with p as 64-bit integers when they fit (the fast path), else as big integers.
 template <class F> auto with_pair_integer(const resonant_pair<big_int>& p, F&& f) {
@@ -75,7 +78,9 @@ template <class T> void put_asymptotic_fields(real_fields& f, const asymptotic_r
 }
 
 // The floating fields of a run: every field of `set` but the exact ones (exact_fields_of).
-template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_set set, const exact_fields& exact) {
+// Without the asymptotics (`with_asymptotics` false) once a run could not compute them.
+template <class T>
+real_fields analysis_fields(const pair_analysis<T>& a, field_set set, const exact_fields& exact, bool with_asymptotics) {
   real_fields f;
   put_field(f, "n", a.n);
   put_field(f, "r_res", a.inscribed.r_res);
@@ -94,16 +99,33 @@ template <class T> real_fields analysis_fields(const pair_analysis<T>& a, field_
   put_field(f, "qdot0", a.qdot0);
   put_field(f, "h_z_max", a.inscribed.h_z_max);
   for (const auto& m : a.inscribed.minimisers) f["minimisers"].push_back(real_to_mpfr(m));
-  put_asymptotic_fields(f, a.asymptotic);
+  if (with_asymptotics) put_asymptotic_fields(f, a.asymptotic);
   for (const auto& [name, value] : exact) f.erase(name);
   return f;
 }
 
+// r_res_asy_rel_error = |r_res_asy - r_res|/r_res of a non-degenerate pair is never zero, but
+// both runs print 0 when r_res_asy and r_res round alike in each (they agree to 1e-900 for some
+// pairs): a shared rounding that Ziv's test, which takes an exact zero as settled, cannot see. It
+// is then reported as the estimated bound 2^-(bits - 12) of the plan's run (bits: its precision),
+// with no digit settled.
+void bound_cancelled_zero(verified_run& run) {
+  auto it = run.fields.find("r_res_asy_rel_error");
+  if (it == run.fields.end() || run.unsettled.count(it->first)) return;
+  scoped_digits sd(30);
+  if (mpfr_real(it->second.at(0)) != 0) return;
+  it->second = {format_scientific(ldexp(mpfr_real(1), -int(run.plan.bits) + 12), 2, MPFR_RNDU)};
+  run.unsettled[it->first] = 0;
+}
+
 // analyse_pair in each plan's type, verified. The cross-check (it runs in double whatever the
 // plan) is done in the first run only; cross_checked says whether it was.
-// The exact fields are left out of the runs and added to the result, rounded once.
+// The exact fields are left out of the runs and added to the result, rounded once. When a run
+// cannot compute the asymptotics (a diagnostic), asymptotic_failure says why and every later
+// run leaves them out (the check run's lack drops them from the result).
 verified_run verified_analysis(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0,
-                               const analysis_options& opt, field_set set, bool& cross_checked) {
+                               const analysis_options& opt, field_set set, bool& cross_checked,
+                               std::string& asymptotic_failure) {
   const exact_fields exact = exact_fields_of(p, qdot0);
   bool first = true;
   auto compute = [&](const precision_plan& plan) {
@@ -115,7 +137,8 @@ verified_run verified_analysis(const resonant_pair<big_int>& p, unsigned digits,
       return with_pair_integer(p, [&](const auto& pp) {
         auto a = analyse_pair<T>(pp, v, o);
         if (first && a.cross_checked) cross_checked = true;
-        return analysis_fields(a, set, exact);
+        if (asymptotic_failure.empty()) asymptotic_failure = a.asymptotic_failure;
+        return analysis_fields(a, set, exact, asymptotic_failure.empty());
       });
     });
     first = false;
@@ -124,6 +147,7 @@ verified_run verified_analysis(const resonant_pair<big_int>& p, unsigned digits,
   verified_run run = compute_verified(digits, pair_needs_mpfr(p), compute, is_diagnostic_field);
   for (const auto& [name, value] : exact)
     if (set == field_set::full || name == "n") run.fields[name] = {format_rational_scientific(value, digits)};
+  if (!p.degenerate()) bound_cancelled_zero(run);
   return run;
 }
 
@@ -156,6 +180,11 @@ asymptotic_exact asymptotic_exact_of(const resonant_pair<big_int>& p) {
   }
   return with_pair_integer(p, [](const auto& pp) { return exact_part(paper_asymptotics<double>(pp, 1.0)); });
 }
+
+// The asymptotics of the report: the exact parts merged with the verified reals; when they could
+// not be computed (a diagnostic: never an error), not applicable, with the reason.
+void set_asymptotics(verified_pair_report& r, const resonant_pair<big_int>& p, const verified_run& run,
+                     const std::string& failure);
 
 const std::string& first_value(const verified_run& run, const std::string& name) { return run.fields.at(name).at(0); }
 
@@ -214,6 +243,29 @@ template <class T, pair_integer I> real_fields paper_lobe_fields(const resonant_
   return f;
 }
 
+void set_asymptotics(verified_pair_report& r, const resonant_pair<big_int>& p, const verified_run& run,
+                     const std::string& failure) {
+  std::string why = failure;
+  if (why.empty()) {
+    try {
+      asymptotic_exact exact = asymptotic_exact_of(p);
+      r.lobes = merged_lobes(run, std::move(exact.lobes));
+      r.asymptotic_applicable = exact.applicable;
+      r.asymptotic_reason = exact.reason;
+      return;
+    } catch (const compute_error& e) {
+      why = e.what();
+    }
+  }
+  r.asymptotic_applicable = false;
+  r.asymptotic_reason = "the asymptotics could not be computed (" + why + ")";
+  r.lobes.clear();
+  r.r_res_asy.reset();
+  r.r_res_asy_rel_error.reset();
+  for (auto it = r.unsettled.begin(); it != r.unsettled.end();)
+    it = is_diagnostic_field(it->first) || it->first.rfind("asymptotic.", 0) == 0 ? r.unsettled.erase(it) : std::next(it);
+}
+
 }  // namespace
 
 void check_qdot0_text(const std::string& text, const std::string& what) {
@@ -229,12 +281,11 @@ verified_pair_report verify_pair(const resonant_pair<big_int>& p, const verified
   analysis.solver = opt.solver;
   analysis.cross_check_max_order = opt.cross_check_max_order;
   verified_pair_report r;
-  const verified_run run = verified_analysis(p, opt.digits, opt.qdot0, analysis, field_set::full, r.cross_checked);
+  std::string asymptotic_failure;
+  const verified_run run =
+      verified_analysis(p, opt.digits, opt.qdot0, analysis, field_set::full, r.cross_checked, asymptotic_failure);
   fill_pair_report(r, run);
-  asymptotic_exact exact = asymptotic_exact_of(p);
-  r.asymptotic_applicable = exact.applicable;
-  r.asymptotic_reason = exact.reason;
-  r.lobes = merged_lobes(run, std::move(exact.lobes));
+  set_asymptotics(r, p, run, asymptotic_failure);
   r.degenerate = p.degenerate();
   r.method = method_of(p, opt.solver);
   r.digits = opt.digits;
@@ -245,7 +296,9 @@ verified_pair_report verify_pair(const resonant_pair<big_int>& p, const verified
 verified_pair_values verify_pair_values(const resonant_pair<big_int>& p, unsigned digits) {
   check_verified_digits(digits);
   verified_pair_values v;
-  const verified_run run = verified_analysis(p, digits, "1", analysis_options{}, field_set::values, v.cross_checked);
+  std::string asymptotic_failure;  // the values set has no asymptotics
+  const verified_run run =
+      verified_analysis(p, digits, "1", analysis_options{}, field_set::values, v.cross_checked, asymptotic_failure);
   for (auto [name, val] : {std::pair{"n", &v.n}, {"r_res", &v.r_res}, {"h_min", &v.h_min}, {"t_first", &v.t_first},
                            {"theta_first", &v.theta_first}, {"t_min_paper", &v.t_min_paper}})
     *val = first_value(run, name);
