@@ -209,7 +209,7 @@ TEST_CASE("pair: a minimiser near 0 and its mirror near 2 pi are printed right (
     auto j = cli_json("pair " + tau + " " + sigma + " --json --estimate --digits " + d);
     const std::string th = std::string(d) == "5" ? "1.5708e-50" : "1.57079632679e-50";
     CHECK(j["theta_first"] == th);
-    CHECK(j["t_first"].get<std::string>().substr(0, 6) == "2.7207");
+    CHECK(j["t_first"] == (std::string(d) == "5" ? "2.7207e+00" : "2.72069904635e+00"));
     REQUIRE(j["minimisers"].size() == 2);
     CHECK(j["minimisers"][0] == th);
     CHECK(j["minimisers"][1] == (std::string(d) == "5" ? "6.2832e+00" : "6.28318530718e+00"));
@@ -229,8 +229,12 @@ TEST_CASE("pair: exact ties and unsettled diagnostics do not exit 3 (issue 12)",
   auto r = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --estimate");
   REQUIRE(r.status == 0);
   CHECK(r.out.find("r_res ") != std::string::npos);
-  auto k = cli_json("pair " + big.substr(0, 400) + "1 " + big + " --json --estimate");
-  // The closed form's relative error is nearly all cancellation: marked, not blocking.
-  REQUIRE(k["unsettled"].contains("r_res_asy_rel_error"));
-  CHECK(k["unsettled"]["r_res_asy_rel_error"].get<int>() < 17);
+  // The closed form's relative error is nearly all cancellation: marked, not blocking. (The JSON
+  // holds 401-digit integers, beyond what the parser takes: read as text.)
+  auto k = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --json --estimate");
+  REQUIRE(k.status == 0);
+  const auto at = k.out.find("\"unsettled\": {");
+  REQUIRE(at != std::string::npos);
+  CHECK(k.out.substr(at, k.out.find('}', at) - at).find("\"r_res_asy_rel_error\": 0") != std::string::npos);
+  CHECK(r.out.find("rel. error < ") != std::string::npos);  // the text marks the bound
 }

@@ -77,7 +77,8 @@ TEST_CASE("verify_pair: the minimiser 1.57e-50 and its mirror at every digit cou
   scoped_digits sd(450);
   const test::naive_forms<mpfr_real> f(real_from_int<mpfr_real>(tau), real_from_int<mpfr_real>(sigma));
   const mpfr_real theta = naive_minimiser(f, mpfr_real("1.4e-50"), mpfr_real("1.7e-50"), 1200);
-  const mpfr_real mirror = 2 * real_pi<mpfr_real>() - theta, t_first = sqrt(real_from_int<mpfr_real>(big_int(tau * sigma))) * theta;
+  const mpfr_real mirror = 2 * real_pi<mpfr_real>() - theta;
+  const mpfr_real t_first = sqrt(real_from_int<mpfr_real>(big_int(tau * sigma))) * theta;
   const mpfr_real r_res = sqrt(f.R(theta));
   CHECK(format_scientific(theta, 5) == "1.5708e-50");
   CHECK(format_scientific(t_first, 5) == "2.7207e+00");

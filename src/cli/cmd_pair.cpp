@@ -84,7 +84,8 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pai
     text_line(os, i == 0 ? "paper lobe" : "",
               "theta_asy " + diagnostic_text(r, pre + "theta_asy", l.theta_asy) + ", theta_c " +
                   diagnostic_text(r, pre + "theta_c", l.theta_c) + ", |error| " +
-                  diagnostic_text(r, pre + "error", l.error) + " <= bound " + diagnostic_text(r, pre + "bound", l.bound));
+                  diagnostic_text(r, pre + "error", l.error) + " <= bound " +
+                  diagnostic_text(r, pre + "bound", l.bound));
   }
   os << "  method " << r.method << (r.cross_checked ? " (cross-checked against the global search)" : "") << "; "
      << r.digits << " digits, each verified" << (r.unsettled.empty() ? "" : " (diagnostics marked [..] excepted)")

@@ -80,7 +80,8 @@ template <class T> void put_asymptotic_fields(real_fields& f, const asymptotic_r
 // The floating fields of a run: every field of `set` but the exact ones (exact_fields_of).
 // Without the asymptotics (`with_asymptotics` false) once a run could not compute them.
 template <class T>
-real_fields analysis_fields(const pair_analysis<T>& a, field_set set, const exact_fields& exact, bool with_asymptotics) {
+real_fields analysis_fields(const pair_analysis<T>& a, field_set set, const exact_fields& exact,
+                            bool with_asymptotics) {
   real_fields f;
   put_field(f, "n", a.n);
   put_field(f, "r_res", a.inscribed.r_res);
@@ -263,7 +264,8 @@ void set_asymptotics(verified_pair_report& r, const resonant_pair<big_int>& p, c
   r.r_res_asy.reset();
   r.r_res_asy_rel_error.reset();
   for (auto it = r.unsettled.begin(); it != r.unsettled.end();)
-    it = is_diagnostic_field(it->first) || it->first.rfind("asymptotic.", 0) == 0 ? r.unsettled.erase(it) : std::next(it);
+    it = (is_diagnostic_field(it->first) || it->first.rfind("asymptotic.", 0) == 0) ? r.unsettled.erase(it)
+                                                                                    : std::next(it);
 }
 
 }  // namespace
