@@ -6,14 +6,16 @@
 // roots are rational; h_z_max of degenerate pairs) are rounded once from their exact rational
 // value, to nearest with ties to even (core/rational.hpp), not verified in floating point.
 // Diagnostics (the paper's asymptotics) that do not settle are printed with the digits that did
-// and listed in verified_pair_report::unsettled; they never cause compute_error.
-// Other fields: every real field is printed with D significant digits accepted by the two-run test of
-// core/verified_digits.hpp (the plan's type for D digits, then MPFR with 64 more bits; Ziv's
-// test; the precision doubles, at most 5 rounds in all, then compute_error). That is a strong
-// consistency check, not a proof (see that header); certificates (certify/) prove. Pairs whose
-// order exceeds 2^180 run in MPFR whatever D (double's exponent range: r_res ~ a^-2.5, x^2). The lattice result is cross-checked against
-// the global search (cross_check.hpp) once, in the first run, for orders up to
-// cross_check_max_order.
+// and listed in verified_pair_report::unsettled; they never cause compute_error (asymptotics
+// that cannot be computed are reported as not applicable, with the reason). The minimisers are
+// ordered on their exact lobe frames (lattice.hpp), never on rounded angles.
+// Other fields: every real field is printed with D significant digits accepted by the two-run
+// test of core/verified_digits.hpp (the plan's type for D digits, then MPFR with 64 more bits;
+// Ziv's test; the precision doubles, at most 5 rounds in all, then compute_error). That is a
+// strong consistency check, not a proof (see that header); certificates (certify/) prove. Pairs
+// whose order exceeds 2^180 run in MPFR whatever D (double's exponent range: r_res falls like
+// a^-2.5, the asymptotics use x^2). The lattice result is cross-checked against the global
+// search (cross_check.hpp) once, in the first run, for orders up to cross_check_max_order.
 #pragma once
 #include <map>
 #include <optional>
