@@ -197,3 +197,44 @@ TEST_CASE("certify writes a certificate that check accepts; tampering and corrup
   CHECK(cli_run("certify 6 4").status == 2);
   CHECK(cli_run("certify 6 5 --digits 0").status == 2);
 }
+
+// Issue 12: the inputs that printed a wrong number or exited 3. The values are the independent
+// reference's (tests/test_pair_truth.cpp checks them at every digit count against
+// src/testing/high_precision_reference.hpp).
+TEST_CASE("pair: a minimiser near 0 and its mirror near 2 pi are printed right (issue 12)", "[cli]") {
+  if (!cli_available()) return;
+  const std::string sigma = "1" + std::string(50, '0'), tau = "3" + std::string(49, '0') + "1";
+  for (const char* d : {"5", "12"}) {
+    INFO("digits " << d);
+    auto j = cli_json("pair " + tau + " " + sigma + " --json --estimate --digits " + d);
+    const std::string th = std::string(d) == "5" ? "1.5708e-50" : "1.57079632679e-50";
+    CHECK(j["theta_first"] == th);
+    CHECK(j["t_first"] == (std::string(d) == "5" ? "2.7207e+00" : "2.72069904635e+00"));
+    REQUIRE(j["minimisers"].size() == 2);
+    CHECK(j["minimisers"][0] == th);
+    CHECK(j["minimisers"][1] == (std::string(d) == "5" ? "6.2832e+00" : "6.28318530718e+00"));
+  }
+  const auto r = cli_run("pair " + tau + " " + sigma + " --estimate --digits 5");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("theta_first   1.5708e-50") != std::string::npos);
+  CHECK(r.out.find("minimisers    1.5708e-50, 6.2832e+00") != std::string::npos);
+}
+
+TEST_CASE("pair: exact ties and unsettled diagnostics do not exit 3 (issue 12)", "[cli]") {
+  if (!cli_available()) return;
+  auto j = cli_json("pair 2305843009213693951 2305843009213693949 --json --estimate");
+  CHECK(j["beat_ratio"] == "2.3058430092136940e+18");
+  CHECK(j["unsettled"].is_object());
+  const std::string big = "1" + std::string(400, '0');
+  auto r = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --estimate");
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("r_res ") != std::string::npos);
+  // The closed form's relative error is nearly all cancellation: marked, not blocking. (The JSON
+  // holds 401-digit integers, beyond what the parser takes: read as text.)
+  auto k = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --json --estimate");
+  REQUIRE(k.status == 0);
+  const auto at = k.out.find("\"unsettled\": {");
+  REQUIRE(at != std::string::npos);
+  CHECK(k.out.substr(at, k.out.find('}', at) - at).find("\"r_res_asy_rel_error\": 0") != std::string::npos);
+  CHECK(r.out.find("rel. error < ") != std::string::npos);  // the text marks the bound
+}

@@ -191,6 +191,25 @@ TEST_CASE("coupling: end point, zero horizon and limits", "[coupling]") {
   CHECK(a.t_min == b.t_min);
 }
 
+TEST_CASE("coupling: the too-long-horizon message states the count without overflow (issue 12)", "[coupling]") {
+  auto message = [](double n, double horizon) {
+    try {
+      horizon_minimum<double>(n, 1.0, horizon);
+    } catch (const usage_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // 2 T W1/pi critical points: W1 ~ sqrt(n) for large n (modal_frequencies_of).
+  const std::string huge = message(1e308, 100.0), big = message(1e30, 100.0), small = message(0.5, 1e9);
+  INFO(huge << " | " << big << " | " << small);
+  CHECK(huge.find("more than 1.8e+308 critical points") != std::string::npos);
+  CHECK(big.find("about ") != std::string::npos);
+  CHECK(big.find("e+") != std::string::npos);
+  CHECK(small.find("about ") != std::string::npos);
+  for (const auto& m : {huge, big, small}) CHECK(m.find('-') == std::string::npos);
+}
+
 // ------------------------------------------------------------------------------------ CLI
 
 TEST_CASE("cli coupling: resonance detection and JSON keys", "[coupling][cli]") {
@@ -249,4 +268,5 @@ TEST_CASE("cli coupling: bad input exits 2 with one line and no stdout", "[coupl
   for (const char* bad : {"coupling", "coupling 1 --n2 1/12", "coupling abc", "coupling 0", "coupling --n2 0",
                           "coupling 1/0", "coupling 2 --horizon -1", "coupling 2 --horizon 1e9", "coupling 2 --digits 0"})
     check_rejected(bad);
+  check_rejected("coupling 1e308", 2, "more than 1.8e+308 critical points");
 }

@@ -15,6 +15,7 @@
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/inscribed/global_search.hpp>
 #include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/inscribed/lattice_theorem.hpp>
 #include "testing/test_support.hpp"
 
 using gyrores::mpfr_real;
@@ -193,4 +194,37 @@ TEST_CASE("cross_check_lattice accepts a true result and rejects tampered ones",
     lat.r_res *= 1 + mpfr_real("1e-6");
     CHECK_THROWS_AS(gyrores::cross_check_lattice(p, mpfr_real(2), lat), gyrores::compute_error);
   }
+}
+
+// Issue 12: the minimiser 2u*/a ~ 1.57e-50 of (3 10^50 + 1, 10^50) and its mirror 2 pi - 1.57e-50,
+// which rounds to 2 pi in every type. The order is decided on the exact frames, so the mirror
+// comes last whatever the rounding; the frames are reduced to k in [0, a), theorem order
+// (lattice_theorem.hpp: minimiser_lobes, an independent ordering of the same frames).
+template <class T> void check_near_zero_minimiser() {
+  using gyrores::big_int;
+  big_int sigma = 1;
+  for (int i = 0; i < 50; ++i) sigma *= 10;
+  const big_int tau = 3 * sigma + 1;
+  const resonant_pair<big_int> p(tau, sigma);
+  const auto r = gyrores::inscribed_lattice<T>(p, T(1));
+  REQUIRE(r.minimisers.size() == 2);
+  CHECK(r.theta_first == r.minimisers[0]);
+  CHECK(double(r.theta_first) > 1.5707e-50);
+  CHECK(double(r.theta_first) < 1.5709e-50);
+  CHECK(double(r.minimisers[1]) > 6.28);
+  CHECK(r.first.k >= 0);
+  CHECK(r.first.k < p.order());
+  const auto lobes = gyrores::minimiser_lobes(big_int(p.order()), big_int(p.delta()));
+  REQUIRE(lobes.size() == 2);
+  CHECK(r.first.k == lobes[0].k);
+  CHECK(r.first.m == lobes[0].m);
+  CHECK((r.first.u > 0) == (lobes[0].m > 0));
+}
+
+TEST_CASE("lattice: a minimiser just past 0 sorts before its mirror just below 2 pi (issue 12)", "[lattice]") {
+  check_near_zero_minimiser<double>();
+  check_near_zero_minimiser<long double>();
+  check_near_zero_minimiser<gyrores::float128>();
+  scoped_digits d(40);
+  check_near_zero_minimiser<mpfr_real>();
 }

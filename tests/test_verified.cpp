@@ -63,6 +63,40 @@ TEST_CASE("verified digits: settled values are accepted, unsettled ones throw co
   CHECK_THROWS_AS(check_verified_digits(10001), usage_error);
 }
 
+TEST_CASE("verified digits: a diagnostic that does not settle is partial or a bound, never an error", "[verified]") {
+  // x settles; "partial" = 1/3 + 10^-15 per bit of the run: the runs differ by 6.4e-14, so 12
+  // or 13 digits settle, not 20; "noise" = 2^-bits (pure rounding noise, like a closed form's
+  // relative error): no digit settles.
+  int rounds = 0;
+  auto compute = [&](const precision_plan& plan) {
+    ++rounds;
+    scoped_digits d(80);
+    real_fields f;
+    f["x"] = {mpfr_real(mpfr_real(1) / 7)};
+    f["partial"] = {mpfr_real(mpfr_real(1) / 3 + mpfr_real(plan.bits) * mpfr_real("1e-15"))};
+    f["noise"] = {ldexp(mpfr_real(1), -int(plan.bits))};
+    return f;
+  };
+  auto diagnostic = [](const std::string& name) { return name != "x"; };
+  const auto run = compute_verified(20, false, compute, diagnostic);
+  CHECK(rounds == 4);  // the diagnostics get a second round, then are accepted as they are
+  scoped_digits d(40);
+  CHECK(run.fields.at("x").at(0) == format_scientific(mpfr_real(mpfr_real(1) / 7), 20));
+  REQUIRE(run.unsettled.count("partial"));
+  const unsigned settled = run.unsettled.at("partial");
+  CHECK(settled >= 10u);
+  CHECK(settled <= 13u);
+  CHECK(run.fields.at("partial").at(0) ==
+        format_scientific(mpfr_real(mpfr_real(1) / 3 + mpfr_real(run.plan.bits) * mpfr_real("1e-15")), settled));
+  REQUIRE(run.unsettled.count("noise"));
+  CHECK(run.unsettled.at("noise") == 0u);
+  // The bound covers both runs' values (2^-226 and 2^-290 in the second round).
+  CHECK(mpfr_real(run.fields.at("noise").at(0)) >= ldexp(mpfr_real(1), -int(run.plan.bits)));
+  CHECK(run.unsettled.count("x") == 0);
+  // Without the predicate the same computation is refused.
+  CHECK_THROWS_AS(compute_verified(20, false, compute), compute_error);
+}
+
 TEST_CASE("verify_pair: every real of (6, 5) against the global search at higher precision", "[verified]") {
   for (unsigned digits : {16u, 30u}) {
     verified_pair_options opt;

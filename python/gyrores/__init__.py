@@ -124,7 +124,9 @@ def asymptotics(tau, sigma, digits=17):
 
     A dict: applicable, reason, lobes (per lobe k, m, s, u_asy, theta_asy, the exact lobe root
     theta_c, error, bound pi^3 x^2/a, ratio, holds_global_min), r_res_asy (the observed closed
-    form) and r_res_asy_rel_error (None when not applicable), digits; qdot0 = 1.
+    form) and r_res_asy_rel_error (None when not applicable), unsettled (the diagnostics that did
+    not settle to ``digits`` digits: name -> digits that did, 0 for a magnitude bound; see
+    docs/formats.md), digits; qdot0 = 1.
     """
     return _convert(_gyrores._asymptotics(tau, sigma, digits), _real_converter(digits))
 

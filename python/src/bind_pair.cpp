@@ -53,6 +53,7 @@ py::object asymptotics_dict(const py::object& tau, const py::object& sigma, long
   json j = asymptotic_json(r);
   j["r_res_asy"] = r.r_res_asy ? json(*r.r_res_asy) : json(nullptr);
   j["r_res_asy_rel_error"] = r.r_res_asy_rel_error ? json(*r.r_res_asy_rel_error) : json(nullptr);
+  j["unsettled"] = pair_report_json(p, r)["unsettled"];  // diagnostics printed with fewer digits (docs/formats.md)
   j["digits"] = r.digits;
   return to_python(j);
 }

@@ -42,6 +42,14 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
+// A diagnostic's value with its mark when it did not settle to D digits (verified_pair_report::unsettled).
+std::string diagnostic_text(const verified_pair_report& r, const std::string& name, const std::string& value) {
+  auto it = r.unsettled.find(name);
+  if (it == r.unsettled.end()) return value;
+  if (it->second == 0) return "< " + value + " [no digit settled; estimated bound on |value|]";
+  return value + " [" + std::to_string(it->second) + " digits settled]";
+}
+
 std::string enclosure_text(const std::pair<std::string, std::string>& e) { return "[" + e.first + ", " + e.second + "]"; }
 
 std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pair_report& r,
@@ -67,15 +75,21 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const verified_pai
   text_line(os, "pi/|n|", r.t_min_paper + "  (the paper's proxy for the first-hit time)");
   text_line(os, "minimisers", joined(r.minimisers));
   if (r.r_res_asy)
-    text_line(os, "r_res_asy", *r.r_res_asy + "  (the x -> 0 limit v x |sin u* tan u*|; rel. error " +
-                                   *r.r_res_asy_rel_error + ")");
+    text_line(os, "r_res_asy", diagnostic_text(r, "r_res_asy", *r.r_res_asy) +
+                                   "  (the x -> 0 limit v x |sin u* tan u*|; rel. error " +
+                                   diagnostic_text(r, "r_res_asy_rel_error", *r.r_res_asy_rel_error) + ")");
   for (std::size_t i = 0; i < r.lobes.size(); ++i) {
     const auto& l = r.lobes[i];
+    const std::string pre = "asymptotic.lobes." + std::to_string(i) + ".";
     text_line(os, i == 0 ? "paper lobe" : "",
-              "theta_asy " + l.theta_asy + ", theta_c " + l.theta_c + ", |error| " + l.error + " <= bound " + l.bound);
+              "theta_asy " + diagnostic_text(r, pre + "theta_asy", l.theta_asy) + ", theta_c " +
+                  diagnostic_text(r, pre + "theta_c", l.theta_c) + ", |error| " +
+                  diagnostic_text(r, pre + "error", l.error) + " <= bound " +
+                  diagnostic_text(r, pre + "bound", l.bound));
   }
   os << "  method " << r.method << (r.cross_checked ? " (cross-checked against the global search)" : "") << "; "
-     << r.digits << " digits, each verified; working precision " << r.working_precision.name() << " ("
+     << r.digits << " digits, each verified" << (r.unsettled.empty() ? "" : " (diagnostics marked [..] excepted)")
+     << "; working precision " << r.working_precision.name() << " ("
      << r.working_precision.bits << " bits)\n";
   return os.str();
 }

@@ -86,6 +86,11 @@ json pair_report_json(const resonant_pair<big_int>& p, const verified_pair_repor
   j["asymptotic"] = asymptotic_json(r);
   j["r_res_asy"] = r.r_res_asy ? json(*r.r_res_asy) : json(nullptr);
   j["r_res_asy_rel_error"] = r.r_res_asy_rel_error ? json(*r.r_res_asy_rel_error) : json(nullptr);
+  // Diagnostics that did not settle to `digits` digits: name -> digits that did (0: the value
+  // is an estimated bound on its magnitude). Empty when every field settled.
+  json unsettled = json::object();
+  for (const auto& [name, settled] : r.unsettled) unsettled[name] = settled;
+  j["unsettled"] = unsettled;
   j["method"] = r.method;
   j["cross_checked"] = r.cross_checked;
   j["digits"] = r.digits;

@@ -25,6 +25,13 @@ template <class T> T real_from_rational(const big_rational& q) {
   return real_from_ratio<T>(big_int(boost::multiprecision::numerator(q)), big_int(boost::multiprecision::denominator(q)));
 }
 
+// q in scientific notation d.ddd...e+XX with `digits` significant digits (at least 1), rounded
+// once from the exact value, to nearest with ties to even (the rule of format_scientific,
+// core/decimal.hpp, for binary values). Zero prints as 0.000...e+00. This is how exact
+// quantities (beat ratio, qdot0, ...) are printed: an exact tie such as 2305843009213693950 at
+// 18 digits has no floating Ziv test that could ever settle it.
+std::string format_rational_scientific(const big_rational& q, unsigned digits);
+
 // True when v >= 0 is a perfect square; root receives floor(sqrt(v)).
 bool int_is_square(const big_int& v, big_int& root);
 

@@ -11,6 +11,13 @@
 // If any field fails, the plan becomes MPFR with twice the bits and both runs repeat, at most 5
 // rounds in all; then compute_error ("could not settle D digits: <field> ...").
 //
+// Diagnostics (fields the caller names as such, e.g. the relative error of a closed form, nearly
+// all cancellation) never block the main answer: once every main field has settled, a
+// diagnostic that has not settled by the second round is reported with the digits that did
+// settle (fewer than D), or, when not one did, as an estimated bound on its magnitude; the
+// result lists it in `unsettled`; a diagnostic the check run does not have is left out of the
+// result. compute_error is kept for the main fields.
+//
 // What this guarantees, and what not: it is a strong consistency check, an *estimate* of the
 // error, not a proof. Test 2 assumes that the MPFR run has lost at most 12 bits, which is not
 // proved; and two runs can round the same way and both be wrong (an error that does not shrink
@@ -40,7 +47,14 @@ using verified_fields = std::map<std::string, std::vector<std::string>>;
 struct verified_run {
   verified_fields fields;
   precision_plan plan;  // the plan whose run produced the accepted digits (the first of the pair)
+  // Diagnostic fields that did not settle to D digits, with the digits that did (the fewest over
+  // the field's values): d in [1, D) means its strings have d significant digits; 0 means not
+  // one digit settled and its strings are estimated bounds on |value| (2 digits, rounded up).
+  std::map<std::string, unsigned> unsettled;
 };
+
+// Which fields are diagnostics (see the header comment); none by default.
+using diagnostic_predicate = std::function<bool(const std::string&)>;
 
 // Largest number of digits the verified APIs of gyrores accept.
 inline constexpr unsigned verified_digits_max = 10000;
@@ -57,9 +71,10 @@ template <class T> void put_field(real_fields& f, const std::string& name, const
 // names with the same number of values at every precision (a field missing or with another count
 // in the check run fails the round); fields the check run has in addition are ignored. Every
 // field of the first run is in the result. Precondition: digits >= 1 (not checked). Throws
-// compute_error after 5 failed rounds; exceptions from compute pass through.
+// compute_error after 5 rounds in which a main field failed; exceptions from compute pass through.
 verified_run compute_verified(unsigned digits, bool needs_mpfr,
-                              const std::function<real_fields(const precision_plan&)>& compute);
+                              const std::function<real_fields(const precision_plan&)>& compute,
+                              const diagnostic_predicate& is_diagnostic = {});
 
 // The same, for a generic computation written once for every real type: per_type(T{}) returns
 // the real_fields computed in T (with_real_type, core/precision.hpp).

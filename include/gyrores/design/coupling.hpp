@@ -37,7 +37,10 @@
 #pragma once
 #include <boost/multiprecision/gmp.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <optional>
 #include <string>
 #include <vector>
@@ -179,6 +182,16 @@ std::optional<T> horizon_root(const F& f, const T& lo, T hi, const T& horizon, c
   return root.root;
 }
 
+// A large count for a message: "about N" while N fits comfortably in long long, else in
+// scientific notation (a cast of 1e308 to long long overflows), "more than 1.8e+308" beyond double.
+inline std::string approximate_count_text(double count) {
+  if (count < 1e18) return "about " + std::to_string(static_cast<long long>(count));
+  if (!std::isfinite(count)) return "more than 1.8e+308";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", count);
+  return std::string("about ") + buf;
+}
+
 }  // namespace detail
 
 // min of H_q = (q^2 + q'^2)/2 over [0, horizon] for coupling n != 0 (|n| is used) and impulse
@@ -198,7 +211,7 @@ template <class T> horizon_min_result<T> horizon_minimum(const T& n_in, const T&
   const T rho0 = impulse_rho0(n, v), pi = real_pi<T>();
   const T step = pi / m.W1;
   if (T count = 2 * horizon / step; count > T(double(horizon_max_critical_points)))
-    throw usage_error("the horizon is too long: about " + std::to_string(static_cast<long long>(static_cast<double>(count))) +
+    throw usage_error("the horizon is too long: " + detail::approximate_count_text(static_cast<double>(count)) +
                       " critical points (limit " + std::to_string(horizon_max_critical_points) + ")");
   auto qdot = [&m](const T& t) { return m.qdot(t); };
   auto zdot = [&m](const T& t) { return m.zdot(t); };

@@ -201,25 +201,55 @@ lobe_polish_result<T> lobe_root_polish(const resonant_pair<I>& p, const T& v, co
 
 namespace detail {
 
+// A minimiser as an exact lobe frame (k reduced to [0, a)) and the sign of its u = +-u*, u* in
+// (0, pi/2): theta = 2 (k pi + u)/a. Its place in [0, 2 pi) is decided by integers alone: by
+// k, then by the sign of u (|u| < pi/2 keeps every lobe inside (k - 1/2, k + 1/2) pi 2/a), and
+// a k = 0 lobe with u < 0 lies just below 2 pi (theta = 2 pi + 2u/a), so it comes last. No
+// theta formed in floating point is compared, reduced mod 2 pi or subtracted from 2 pi: a
+// minimiser at 2 pi - 1e-50 must not round to 2 pi and wrap to 0 (issue 12).
+template <class L> struct lattice_minimiser {
+  lobe_frame<L> frame;  // k in [0, a)
+  bool negative;        // u = -u*
+  L key;                // k, or a for the wrapped lobe (k = 0, u < 0)
+};
+
+template <class L> lattice_minimiser<L> lattice_minimiser_of(const lobe_frame<L>& f, bool negative, const L& a,
+                                                            const L& b) {
+  L t = int_floor_div(f.k, a);
+  lobe_frame<L> g{L(f.k - t * a), L(f.j - t * b), f.m};
+  return {g, negative, (g.k == 0 && negative) ? a : g.k};
+}
+
+// theta = 2 (key pi + u)/a from the exact key; only formed for output.
+template <class T, class L> T lattice_theta(const resonant_constants<T>& c, const L& key, const L& a, const T& u) {
+  T at = real_from_int<T>(a);
+  return 2 * (c.pi * real_from_int<T>(key) + u) / at;
+}
+
 template <class T, class L>
 void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a,
                   const L& b, const T& u, const T& rsq, int m_min) {
-  std::vector<std::pair<T, lobe_frame<L>>> pts;
-  auto add = [&](const lobe_frame<L>& g, const T& ug) { pts.push_back({lobe_theta(c, g, a, ug), g}); };
-  add(f, u);
-  add(lobe_mirror(f, a, b), T(-u));
+  using std::fabs;
+  // u* > 0 and the frame's u has the sign of its m (the theorem: u = sign(m) u*).
+  const bool f_negative = u < 0;
+  const T ustar = fabs(u);
+  std::vector<lattice_minimiser<L>> pts;
+  pts.push_back(lattice_minimiser_of(f, f_negative, a, b));
+  pts.push_back(lattice_minimiser_of(lobe_mirror(f, a, b), !f_negative, a, b));
   if (m_min == 2) {
     auto s = lobe_shift(f, a, b);
-    add(s, u);
-    add(lobe_mirror(s, a, b), T(-u));
+    pts.push_back(lattice_minimiser_of(s, f_negative, a, b));
+    pts.push_back(lattice_minimiser_of(lobe_mirror(s, a, b), !f_negative, a, b));
   }
-  std::sort(pts.begin(), pts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::sort(pts.begin(), pts.end(), [](const auto& x, const auto& y) {
+    if (x.key != y.key) return x.key < y.key;
+    return x.negative && !y.negative;
+  });
   std::vector<T> thetas;
-  for (auto& p : pts) thetas.push_back(p.first);
+  for (const auto& p : pts) thetas.push_back(lattice_theta(c, p.key, a, p.negative ? T(-ustar) : ustar));
   set_minimum(r, rsq, c.v, c.sqrt_ts, std::move(thetas));
-  const auto& g = pts.front().second;
-  bool mirrored = (g.m < 0) != (f.m < 0);
-  r.first = {to_big(g.k), to_big(g.j), to_big(g.m), mirrored ? T(-u) : u};
+  const auto& g = pts.front();
+  r.first = {to_big(g.frame.k), to_big(g.frame.j), to_big(g.frame.m), g.negative ? T(-ustar) : ustar};
 }
 
 // The q' root and R at every candidate site, before the choice of the minimiser.

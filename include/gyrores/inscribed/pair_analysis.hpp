@@ -30,6 +30,9 @@ template <class T> struct pair_analysis {
   inscribed_result<T> inscribed;
   bool cross_checked = false;
   asymptotic_report<T> asymptotic;  // the paper's theta_asy per lobe, and the observed r_res_asy
+  // The asymptotics are a diagnostic: when they cannot be computed in T (compute_error), this
+  // says why, `asymptotic` is left empty (not applicable) and the answer stands.
+  std::string asymptotic_failure;
 };
 
 template <class T, pair_integer I>
@@ -53,7 +56,12 @@ pair_analysis<T> analyse_pair(const resonant_pair<I>& p, const T& v, const analy
       r.cross_checked = true;
     }
   }
-  r.asymptotic = paper_asymptotics<T>(p, v);
+  try {
+    r.asymptotic = paper_asymptotics<T>(p, v);
+  } catch (const compute_error& e) {
+    r.asymptotic = {};
+    r.asymptotic_failure = e.what();
+  }
   return r;
 }
 

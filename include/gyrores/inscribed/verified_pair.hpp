@@ -2,14 +2,22 @@
 // digits: the library side of `gyrores pair`, and the lighter pair values of the design, Pareto,
 // coupling and report commands.
 //
-// Digits: every real field is printed with D significant digits accepted by the two-run test of
-// core/verified_digits.hpp (the plan's type for D digits, then MPFR with 64 more bits; Ziv's
-// test; the precision doubles, at most 5 rounds in all, then compute_error). That is a strong
-// consistency check, not a proof (see that header); certificates (certify/) prove. Pairs whose
-// order exceeds 2^900 run in MPFR whatever D (double's exponent range). The lattice result is cross-checked against
-// the global search (cross_check.hpp) once, in the first run, for orders up to
-// cross_check_max_order.
+// Exact fields (beat_ratio; qdot0 from its decimal text; n, rho0, omega1, omega2 when the square
+// roots are rational; h_z_max of degenerate pairs) are rounded once from their exact rational
+// value, to nearest with ties to even (core/rational.hpp), not verified in floating point.
+// Diagnostics (the paper's asymptotics) that do not settle are printed with the digits that did
+// and listed in verified_pair_report::unsettled; they never cause compute_error (asymptotics
+// that cannot be computed are reported as not applicable, with the reason). The minimisers are
+// ordered on their exact lobe frames (lattice.hpp), never on rounded angles.
+// Other fields: every real field is printed with D significant digits accepted by the two-run
+// test of core/verified_digits.hpp (the plan's type for D digits, then MPFR with 64 more bits;
+// Ziv's test; the precision doubles, at most 5 rounds in all, then compute_error). That is a
+// strong consistency check, not a proof (see that header); certificates (certify/) prove. Pairs
+// whose order exceeds 2^180 run in MPFR whatever D (double's exponent range: r_res falls like
+// a^-2.5, the asymptotics use x^2). The lattice result is cross-checked against the global
+// search (cross_check.hpp) once, in the first run, for orders up to cross_check_max_order.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +54,11 @@ struct verified_pair_report {
   std::string asymptotic_reason;
   std::vector<verified_asymptotic_lobe> lobes;
   std::optional<std::string> r_res_asy, r_res_asy_rel_error;  // when the asymptotics apply
+  // Diagnostics (the paper's asymptotics: r_res_asy, r_res_asy_rel_error and the lobes' reals)
+  // that did not settle to D digits, by name ("r_res_asy_rel_error", "asymptotic.lobes.<i>.<field>"):
+  // d in [1, D) digits settled and the string has d digits, or 0: the string is an estimated
+  // bound on |value| (core/verified_digits.hpp). They never block the main fields.
+  std::map<std::string, unsigned> unsettled;
   bool degenerate = false;
   std::string method;           // "degenerate-exact", "lattice" or "global-search" (method_name)
   bool cross_checked = false;   // the lattice result was cross-checked against the global search

@@ -2,6 +2,7 @@
 #include <gyrores/core/rational.hpp>
 
 #include <cctype>
+#include <cstdio>
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
@@ -68,6 +69,52 @@ std::string rational_str(const big_rational& r) {
   const big_int q = boost::multiprecision::denominator(r);
   const std::string s = boost::multiprecision::numerator(r).str();
   return q == 1 ? s : s + "/" + q.str();
+}
+
+namespace {
+
+big_int pow10(long e) {
+  big_int r = 1;
+  for (big_int base = 10; e > 0; e >>= 1, base *= base)
+    if (e & 1) r *= base;
+  return r;
+}
+
+long decimal_length(const big_int& v) { return long(v.str().size()); }
+
+}  // namespace
+
+std::string format_rational_scientific(const big_rational& q, unsigned digits) {
+  if (digits < 1) digits = 1;
+  const long d = long(digits);
+  if (q == 0) return "0" + (d > 1 ? "." + std::string(std::size_t(d - 1), '0') : std::string()) + "e+00";
+  big_int num = boost::multiprecision::numerator(q), den = boost::multiprecision::denominator(q);
+  const bool neg = num < 0;
+  if (neg) num = -num;
+  // e10 = floor(log10 |q|): 10^e10 <= num/den < 10^(e10+1); the length difference is within 1.
+  long e10 = decimal_length(num) - decimal_length(den);
+  auto at_least = [&](long e) { return e >= 0 ? num >= den * pow10(e) : num * pow10(-e) >= den; };
+  if (!at_least(e10)) --e10;
+  // N = round(|q| 10^(d-1-e10)) with ties to even, in integers.
+  const long s = d - 1 - e10;
+  big_int top = s >= 0 ? big_int(num * pow10(s)) : num, bottom = s >= 0 ? den : big_int(den * pow10(-s));
+  big_int n = top / bottom, rem = top - n * bottom;
+  const int cmp = big_int(2 * rem).compare(bottom);
+  if (cmp > 0 || (cmp == 0 && (n & 1) != 0)) ++n;
+  if (n == pow10(d)) {  // rounded up to 10^d: one more decade, d digits 100...0
+    n = pow10(d - 1);
+    ++e10;
+  }
+  const std::string digs = n.str();
+  std::string out = neg ? "-" : "";
+  out += digs[0];
+  if (d > 1) {
+    out += '.';
+    out.append(digs, 1, std::string::npos);
+  }
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "e%c%02ld", e10 < 0 ? '-' : '+', e10 < 0 ? -e10 : e10);
+  return out + buf;
 }
 
 bool int_is_square(const big_int& v, big_int& root) {

@@ -1,6 +1,7 @@
 // include/gyrores/core/verified_digits.hpp
 #include <gyrores/core/verified_digits.hpp>
 
+#include <algorithm>
 #include <optional>
 
 #include <gyrores/core/error.hpp>
@@ -12,33 +13,104 @@ constexpr int verification_rounds = 5;
 constexpr unsigned check_extra_bits = 64;
 constexpr int ziv_lost_bits = 12;  // bits the check run is assumed to have lost (Ziv's test)
 
-// The D-digit strings of the plan's run, if the check run confirms every field; else nullopt,
-// with `problem` saying which field failed and how.
-std::optional<verified_fields> confirmed_fields(const real_fields& a, const real_fields& b, unsigned digits,
-                                                unsigned check_bits, std::string& problem) {
-  mpfr_real rel;
-  {
-    scoped_digits d(30);
-    rel = ldexp(mpfr_real(1), -int(check_bits) + ziv_lost_bits);
+constexpr int diagnostic_rounds = 2;  // rounds after which an unsettled diagnostic is accepted as partial
+
+mpfr_real ziv_rel(unsigned check_bits) {
+  scoped_digits d(30);
+  return ldexp(mpfr_real(1), -int(check_bits) + ziv_lost_bits);
+}
+
+// True when a and b round to the same `digits` digits and b passes Ziv's test.
+bool value_settled(const mpfr_real& a, const mpfr_real& b, const mpfr_real& rel, unsigned digits) {
+  return format_scientific(a, digits) == format_scientific(b, digits) && digits_settled(b, rel, digits);
+}
+
+// The D-digit strings of field `name` (values va of the plan's run, vb of the check run), or
+// nullopt with `problem` saying how it failed.
+std::optional<std::vector<std::string>> settled_field(const std::string& name, const std::vector<mpfr_real>& va,
+                                                      const std::vector<mpfr_real>* vb, unsigned digits,
+                                                      unsigned check_bits, const mpfr_real& rel, std::string& problem) {
+  if (!vb || vb->size() != va.size()) {
+    problem = name + " has a different number of values at " + std::to_string(check_bits) + " bits";
+    return std::nullopt;
   }
-  verified_fields out;
-  for (const auto& [name, va] : a) {
-    auto it = b.find(name);
-    if (it == b.end() || it->second.size() != va.size()) {
-      problem = name + " has a different number of values at " + std::to_string(check_bits) + " bits";
+  std::vector<std::string> strs;
+  for (std::size_t i = 0; i < va.size(); ++i) {
+    if (!value_settled(va[i], (*vb)[i], rel, digits)) {
+      problem = name + " is not settled to " + std::to_string(digits) + " digits (" + format_scientific(va[i], digits) +
+                " vs " + format_scientific((*vb)[i], digits) + ")";
       return std::nullopt;
     }
-    std::vector<std::string> strs;
-    for (std::size_t i = 0; i < va.size(); ++i) {
-      std::string sa = format_scientific(va[i], digits), sb = format_scientific(it->second[i], digits);
-      if (sa != sb || !digits_settled(it->second[i], rel, digits)) {
-        problem = name + " is not settled to " + std::to_string(digits) + " digits (" + sa + " vs " + sb + ")";
-        return std::nullopt;
-      }
-      strs.push_back(sa);
-    }
-    out[name] = strs;
+    strs.push_back(format_scientific(va[i], digits));
   }
+  return strs;
+}
+
+// The most digits (< D) on which a and b agree and settle, or 0.
+unsigned partial_digits(const mpfr_real& a, const mpfr_real& b, const mpfr_real& rel, unsigned digits) {
+  if (digits <= 1) return 0;
+  scoped_digits sd(30);
+  // Start near -log10 of the larger of the runs' relative difference and Ziv's error.
+  unsigned top = digits - 1;
+  if (!mpfr_zero_p(b.backend().data())) {
+    mpfr_real diff = abs(mpfr_real(a - b)) / abs(b);
+    if (diff < rel) diff = rel;
+    const double lg = -log10(diff).convert_to<double>();
+    if (lg + 2 < double(top)) top = lg + 2 < 1 ? 1u : unsigned(lg + 2);
+  }
+  for (unsigned d = top; d >= 1; --d)
+    if (value_settled(a, b, rel, d)) return d;
+  return 0;
+}
+
+// A diagnostic that did not settle: its values with the digits that did (the fewest over its
+// values), or estimated bounds on |value| (max(|a|, |b|) + |a - b|, 2 digits rounded up).
+std::vector<std::string> partial_field(const std::vector<mpfr_real>& va, const std::vector<mpfr_real>& vb,
+                                       const mpfr_real& rel, unsigned digits, unsigned& settled) {
+  settled = digits;
+  for (std::size_t i = 0; i < va.size(); ++i) settled = std::min(settled, partial_digits(va[i], vb[i], rel, digits));
+  std::vector<std::string> strs;
+  for (std::size_t i = 0; i < va.size(); ++i) {
+    if (settled > 0) {
+      strs.push_back(format_scientific(va[i], settled));
+      continue;
+    }
+    const mpfr_real aa = abs(va[i]), ab = abs(vb[i]);
+    mpfr_real bound = (aa > ab ? aa : ab) + abs(mpfr_real(va[i] - vb[i]));
+    strs.push_back(format_scientific(bound, 2, MPFR_RNDU));
+  }
+  return strs;
+}
+
+// One round's verdict: every main field settled (the run), or nullopt with `problem`. A
+// diagnostic that fails makes `diagnostics_pending` true; with accept_partial it is reported
+// partially instead (verified_run::unsettled).
+std::optional<verified_run> confirmed_fields(const real_fields& a, const real_fields& b, unsigned digits,
+                                             unsigned check_bits, const diagnostic_predicate& is_diagnostic,
+                                             bool accept_partial, bool& diagnostics_pending, std::string& problem) {
+  const mpfr_real rel = ziv_rel(check_bits);
+  verified_run out;
+  diagnostics_pending = false;
+  for (const auto& [name, va] : a) {
+    auto it = b.find(name);
+    const std::vector<mpfr_real>* vb = it == b.end() ? nullptr : &it->second;
+    std::string why;
+    if (auto strs = settled_field(name, va, vb, digits, check_bits, rel, why)) {
+      out.fields[name] = std::move(*strs);
+      continue;
+    }
+    const bool diagnostic = is_diagnostic && is_diagnostic(name);
+    if (!diagnostic) {
+      problem = why;
+      return std::nullopt;
+    }
+    if (!vb || vb->size() != va.size()) continue;  // a diagnostic the check run could not compute: left out
+    diagnostics_pending = true;
+    unsigned settled = 0;
+    out.fields[name] = partial_field(va, *vb, rel, digits, settled);
+    out.unsettled[name] = settled;
+  }
+  if (diagnostics_pending && !accept_partial) problem = "diagnostics not settled";
   return out;
 }
 
@@ -50,13 +122,23 @@ void check_verified_digits(unsigned digits) {
 }
 
 verified_run compute_verified(unsigned digits, bool needs_mpfr,
-                              const std::function<real_fields(const precision_plan&)>& compute) {
+                              const std::function<real_fields(const precision_plan&)>& compute,
+                              const diagnostic_predicate& is_diagnostic) {
   precision_plan plan = plan_for_digits(digits, needs_mpfr);
   std::string last_problem;
+  std::optional<verified_run> main_settled;  // the first round whose main fields all settled
   for (int round = 0; round < verification_rounds; ++round) {
     const precision_plan check{real_kind::mpfr, plan.bits + check_extra_bits};
     real_fields a = compute(plan), b = compute(check);
-    if (auto fields = confirmed_fields(a, b, digits, check.bits, last_problem)) return {std::move(*fields), plan};
+    bool pending = false;
+    const bool accept_partial = round + 1 >= diagnostic_rounds || round + 1 == verification_rounds;
+    if (auto run = confirmed_fields(a, b, digits, check.bits, is_diagnostic, accept_partial, pending, last_problem)) {
+      run->plan = plan;
+      if (!pending || accept_partial) return std::move(*run);
+      if (!main_settled) main_settled = std::move(*run);
+    } else if (main_settled) {
+      return std::move(*main_settled);  // a later round failed a main field: keep the settled one
+    }
     plan = {real_kind::mpfr, 2 * plan.bits};
   }
   throw compute_error("could not settle " + std::to_string(digits) + " digits: " + last_problem);
