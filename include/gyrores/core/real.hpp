@@ -116,8 +116,9 @@ template <class T> T real_from_int(int128 v) {
   else return real_from_int<T>(to_big(v));
 }
 
-// Integers to T with one rounding where T allows it (MPFR: exact rounding; double: via the
-// built-in conversion; others via decimal text, correctly rounded by their parsers).
+// Integers to T with one rounding where T allows it (MPFR: exact rounding; double, long double:
+// the built-in conversion from int64 or int128 below 2^126; others via decimal text, correctly
+// rounded by their parsers).
 template <class T> T real_from_int(const big_int& v) {
   if constexpr (is_variable_precision_v<T>) {
     return T(v);

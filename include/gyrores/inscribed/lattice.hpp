@@ -20,6 +20,11 @@
 // Precision: the root is scouted in double (MPFR at 64 bits when the pair exceeds double's
 // exponent range) with TOMS 748, then polished in T by Newton's method; for mpfr_real with
 // precision doubling, so the last step is the only one at full precision.
+// Cost: each evaluation is two fused sine-cosine pairs (real_sin_cos, core/real.hpp: Arb's
+// arb_sin_cos for mpfr_real), the per-pair constants are formed once per call, and the frame
+// integers are int64 or int128 whenever they fit (also for pairs held as big_int), so that the
+// exact result costs about what Arb's own Newton refinement of the root alone costs at 1000 and
+// 10000 digits, and about the paper's theta_asy in double (bench/RESULTS.md, H1 and H5).
 #pragma once
 #include <algorithm>
 #include <memory>
@@ -373,6 +378,10 @@ lobe_polish_result<T> lattice_default_root(const lattice_ints<L>& z, const reson
   }
 }
 
+// p.strand_offset_min() from b = delta in L (no GMP temporaries for big_int pairs): 1 for b
+// odd, 2 for b = 0 mod 4 (b = 2 mod 4, degenerate, never reaches the lattice).
+template <class L> int lattice_offset_min(const L& b) { return int_mod(b, L(2)) == 1 ? 1 : 2; }
+
 template <class L> bool lattice_is_huge(const L& a) {
   if constexpr (std::is_same_v<L, big_int>) return mpz_sizeinbase(a.backend().data(), 2) > 901;  // a > 2^900
   else return false;
@@ -396,7 +405,7 @@ inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v
     const auto root = lattice_default_root(z, c, site, huge);
     r.critical_points = 1;
     r.evaluations = root.evaluations;
-    lattice_fill(r, c, site.frame, a, b, root.u, root.radius_sq, p.strand_offset_min());
+    lattice_fill(r, c, site.frame, a, b, root.u, root.radius_sq, lattice_offset_min(b));
     return r;
   }
   const auto sites = lattice_sites(z.tau, a, b, window, opt.window_always);
@@ -423,7 +432,7 @@ inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v
   }
   r.critical_points = sites.size();
   r.evaluations = cand.evaluations;
-  lattice_fill(r, c, sites[best].frame, a, b, u, rsq, p.strand_offset_min());
+  lattice_fill(r, c, sites[best].frame, a, b, u, rsq, lattice_offset_min(b));
   return r;
 }
 
