@@ -97,7 +97,8 @@ template <class T> T real_pi() { return boost::math::constants::pi<T>(); }
 // sin x and cos x of one argument, together: the lattice method's evaluations need both of two
 // angles. Generic types: std/Boost sin and cos (GCC fuses them into one sincos for double).
 // mpfr_real: one fused evaluation by Arb (src/lib/core/real_sin_cos.cpp), results at the current
-// default precision and faithful (error < 1 ulp; not always correctly rounded, unlike sin(x)).
+// default precision and correctly rounded (Ziv's test on Arb's ball, MPFR when undecided), so
+// equal to sin(x) and cos(x) bit for bit.
 template <class T> struct sin_cos_pair {
   T s, c;
 };

@@ -180,15 +180,15 @@ template <class T> polish_constants<T> polish_constants_rounded(const polish_con
 }
 
 // One Newton step u -= q'/q'' at the working precision: two fused sine-cosine evaluations
-// (real_sin_cos) and eight products. rsq = q^2 at the old u. Returns the step.
+// (real_sin_cos) and ten products. rsq = q^2 at the old u. Returns the step.
 template <class T> T polish_step(const polish_constants<T>& k, T& u, T& rsq) {
   const T w = k.mu - k.x * u;
   const auto a = real_sin_cos(u);
   const auto b = real_sin_cos(w);
-  const T susw = a.s * b.s, cucw = a.c * b.c;
-  const T f = a.c * b.s - k.x * (a.s * b.c);
-  const T df = -(k.one_plus_x2 * susw + k.two_x * cucw);
-  const T q = k.amp * susw;  // |q| alone at a q' root (resonant.hpp)
+  // f and q grouped as lobe_qdot_newton and lobe_eval (resonant.hpp) group them.
+  const T f = a.c * b.s - k.x * a.s * b.c;
+  const T df = -(k.one_plus_x2 * (a.s * b.s) + k.two_x * (a.c * b.c));
+  const T q = k.amp * a.s * b.s;  // |q| alone at a q' root (resonant.hpp)
   rsq = q * q;
   T step = f / df;
   u -= step;
