@@ -228,3 +228,28 @@ TEST_CASE("lattice: a minimiser just past 0 sorts before its mirror just below 2
   scoped_digits d(40);
   check_near_zero_minimiser<mpfr_real>();
 }
+
+// Pairs held as big_int that fit in 128 bits run the lattice in int128 arithmetic (no GMP
+// temporaries); the window mode of the same pair needs a tau beyond 2^124 and stays in big_int.
+// Both must give the same minimiser: the same r_res and theta_first to a few ulps, in double
+// and at 1000 digits (where the polish uses the fused sine-cosine and the precision ladder).
+TEST_CASE("lattice: int128 and big_int arithmetic agree on (10^30+1, 10^30) and (2^100+3, 2^100-1)", "[lattice][big]") {
+  using gyrores::big_int;
+  for (auto [t, s] : {std::pair<const char*, const char*>{"1000000000000000000000000000001", "1000000000000000000000000000000"},
+                      {"1267650600228229401496703205379", "1267650600228229401496703205375"}}) {
+    const resonant_pair<big_int> p{big_int(t), big_int(s)};
+    INFO(p.str());
+    const gyrores::lattice_options window{.window_always = true};
+    {
+      auto d = gyrores::inscribed_lattice<double>(p, 1.0), w = gyrores::inscribed_lattice<double>(p, 1.0, window);
+      CHECK(gyrores::test::rel_error(d.r_res, w.r_res) <= 1e-14);
+      CHECK(gyrores::test::rel_error(d.theta_first, w.theta_first) <= 1e-14);
+    }
+    scoped_digits sd(1000);
+    auto d = gyrores::inscribed_lattice<mpfr_real>(p, mpfr_real(1)),
+         w = gyrores::inscribed_lattice<mpfr_real>(p, mpfr_real(1), window);
+    const mpfr_real tol("1e-995");
+    CHECK(gyrores::test::rel_error(d.r_res, w.r_res) <= tol);
+    CHECK(gyrores::test::rel_error(d.theta_first, w.theta_first) <= tol);
+  }
+}

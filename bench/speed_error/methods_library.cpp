@@ -354,7 +354,8 @@ std::vector<method_def> library_methods(const run_config&) {
        "scored at the enclosure midpoint",
        skip_certified, certified_case},
       {"one_eval", "one_eval",
-       "one evaluation of (q, q', z, z') at the first minimiser (resonant.hpp lobe_eval: four sines/cosines), "
+       "one evaluation of (q, q', z, z') at the first minimiser (resonant.hpp lobe_eval: two real_sin_cos, "
+       "for MPFR Arb's arb_sin_cos), "
        "constants precomputed: the unit of work",
        skip_never, one_eval_case},
       {"naive_toms748", "naive_toms748",

@@ -41,12 +41,23 @@ inline std::string to_decimal(int128 v) {
 inline big_int to_big(const big_int& v) { return v; }
 inline big_int to_big(std::int64_t v) { return big_int(v); }
 inline big_int to_big(int128 v) {
+  if (v >= INT64_MIN && v <= INT64_MAX) return big_int(std::int64_t(v));  // one GMP operation
   bool neg = v < 0;
   unsigned __int128 u = neg ? (unsigned __int128)(-(v + 1)) + 1 : (unsigned __int128)v;
-  big_int r = big_int(std::uint64_t(u >> 64));
-  r <<= 64;
-  r += big_int(std::uint64_t(u));
-  return neg ? big_int(-r) : r;
+  const std::uint64_t limbs[2] = {std::uint64_t(u), std::uint64_t(u >> 64)};  // least significant first
+  big_int r;
+  mpz_import(r.backend().data(), 2, -1, sizeof(std::uint64_t), 0, 0, limbs);
+  if (neg) mpz_neg(r.backend().data(), r.backend().data());
+  return r;
+}
+
+// v as int128. Precondition (not checked): |v| < 2^127.
+inline int128 to_int128(const big_int& v) {
+  mpz_srcptr z = v.backend().data();
+  unsigned __int128 u = 0;
+  const std::size_t n = mpz_size(z);
+  for (std::size_t i = n; i-- > 0;) u = (u << 64) | (unsigned __int128)mpz_getlimbn(z, mp_size_t(i));
+  return mpz_sgn(z) < 0 ? -int128(u) : int128(u);
 }
 
 // Greatest common divisor of |x| and |y|; gcd(0, 0) = 0.

@@ -94,14 +94,41 @@ inline unsigned digits10_for_bits(unsigned bits) { return bits_to_digits10(bits)
 
 template <class T> T real_pi() { return boost::math::constants::pi<T>(); }
 
-// Integers to T with one rounding where T allows it (MPFR: exact rounding; double: via the
-// built-in conversion; others via decimal text, correctly rounded by their parsers).
+// sin x and cos x of one argument, together: the lattice method's evaluations need both of two
+// angles. Generic types: std/Boost sin and cos (GCC fuses them into one sincos for double).
+// mpfr_real: one fused evaluation by Arb (src/lib/core/real_sin_cos.cpp), results at the current
+// default precision and correctly rounded (Ziv's test on Arb's ball, MPFR when undecided), so
+// equal to sin(x) and cos(x) bit for bit.
+template <class T> struct sin_cos_pair {
+  T s, c;
+};
+template <class T> sin_cos_pair<T> real_sin_cos(const T& x) {
+  using std::cos;
+  using std::sin;
+  return {sin(x), cos(x)};
+}
+sin_cos_pair<mpfr_real> real_sin_cos(const mpfr_real& x);
+
+template <class T> T real_from_int(const big_int& v);
+template <class T> T real_from_int(int128 v) {
+  if (v >= std::numeric_limits<std::int64_t>::min() && v <= std::numeric_limits<std::int64_t>::max())
+    return T(std::int64_t(v));
+  if constexpr (std::is_floating_point_v<T>) return T(v);  // built-in rounding conversion
+  else return real_from_int<T>(to_big(v));
+}
+
+// Integers to T with one rounding where T allows it (MPFR: exact rounding; double, long double:
+// the built-in conversion from int64 or int128 below 2^126; others via decimal text, correctly
+// rounded by their parsers).
 template <class T> T real_from_int(const big_int& v) {
   if constexpr (is_variable_precision_v<T>) {
     return T(v);
   } else {
-    if (boost::multiprecision::msb(boost::multiprecision::abs(v == 0 ? big_int(1) : v)) < 62)
-      return T(std::int64_t(v));
+    if (v == 0) return T(0);
+    const std::size_t top = mpz_sizeinbase(v.backend().data(), 2) - 1;  // msb(|v|), no temporary
+    if (top < 62) return T(std::int64_t(v));
+    if constexpr (std::is_floating_point_v<T>)
+      if (top < 126) return T(to_int128(v));  // the built-in conversion: one rounding, no text
     if constexpr (std::is_floating_point_v<T>)
       return T(std::stold(v.str()));
     else
@@ -109,12 +136,6 @@ template <class T> T real_from_int(const big_int& v) {
   }
 }
 template <class T> T real_from_int(std::int64_t v) { return T(v); }
-template <class T> T real_from_int(int128 v) {
-  if (v >= std::numeric_limits<std::int64_t>::min() && v <= std::numeric_limits<std::int64_t>::max())
-    return T(std::int64_t(v));
-  if constexpr (std::is_floating_point_v<T>) return T(v);  // built-in rounding conversion
-  else return real_from_int<T>(to_big(v));
-}
 
 // p/q in T (two integer roundings and one division: relative error <= 1.5 ulp).
 template <class T, class I> T real_from_ratio(const I& p, const I& q) {

@@ -20,6 +20,11 @@
 // Precision: the root is scouted in double (MPFR at 64 bits when the pair exceeds double's
 // exponent range) with TOMS 748, then polished in T by Newton's method; for mpfr_real with
 // precision doubling, so the last step is the only one at full precision.
+// Cost: each evaluation is two fused sine-cosine pairs (real_sin_cos, core/real.hpp: Arb's
+// arb_sin_cos for mpfr_real), the per-pair constants are formed once per call, and the frame
+// integers are int64 or int128 whenever they fit (also for pairs held as big_int), so that the
+// exact result costs about what Arb's own Newton refinement of the root alone costs at 1000 and
+// 10000 digits, and about the paper's theta_asy in double (bench/RESULTS.md, H1 and H5).
 #pragma once
 #include <algorithm>
 #include <memory>
@@ -155,48 +160,88 @@ template <class T> struct lobe_polish_result {
   std::uintmax_t evaluations;
 };
 
+namespace detail {
 
-template <class T, class L, pair_integer I>
-lobe_polish_result<T> lobe_root_polish(const resonant_pair<I>& p, const T& v, const lobe_frame<L>& f, const L& a, const T& u0,
-                           unsigned start_bits) {
+// What one Newton step on q' needs, formed once from the per-pair constants: x, mu, 1 + x^2,
+// 2x and v sqrt(1 - x^2) (|q| = that times |sin u sin w|).
+template <class T> struct polish_constants {
+  T x, mu, one_plus_x2, two_x, amp;
+};
+template <class T> polish_constants<T> polish_constants_of(const resonant_constants<T>& c, const T& mu) {
+  return {c.x, mu, T(1 + c.x * c.x), T(2 * c.x), T(c.v * c.s1mx2)};
+}
+// The same constants rounded to the current default precision (mpfr_real's lower ladder levels:
+// rounding the full-precision values is exact to the level's precision and recomputes nothing,
+// pi included).
+template <class T> polish_constants<T> polish_constants_rounded(const polish_constants<T>& k) {
+  polish_constants<T> r = k;
+  for (T* v : {&r.x, &r.mu, &r.one_plus_x2, &r.two_x, &r.amp}) set_working_precision(*v);
+  return r;
+}
+
+// One Newton step u -= q'/q'' at the working precision: two fused sine-cosine evaluations
+// (real_sin_cos) and ten products. rsq = q^2 at the old u. Returns the step.
+template <class T> T polish_step(const polish_constants<T>& k, T& u, T& rsq) {
+  const T w = k.mu - k.x * u;
+  const auto a = real_sin_cos(u);
+  const auto b = real_sin_cos(w);
+  // f and q grouped as lobe_qdot_newton and lobe_eval (resonant.hpp) group them.
+  const T f = a.c * b.s - k.x * a.s * b.c;
+  const T df = -(k.one_plus_x2 * (a.s * b.s) + k.two_x * (a.c * b.c));
+  const T q = k.amp * a.s * b.s;  // |q| alone at a q' root (resonant.hpp)
+  rsq = q * q;
+  T step = f / df;
+  u -= step;
+  return step;
+}
+
+}  // namespace detail
+
+// The same polish with the per-pair constants c already formed in T at the working precision.
+template <class T, class L>
+lobe_polish_result<T> lobe_root_polish(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const T& u0,
+                                       unsigned start_bits) {
   using std::fabs;
   using std::ldexp;
   std::uintmax_t evals = 0;
   T u = u0;
-  auto newton_step = [&](const resonant_constants<T>& c, const T& mu, T& rsq) {
-    auto e = lobe_qdot_newton(c, mu, u);
-    ++evals;
-    T q = c.v * c.s1mx2 * e.su * e.sw;  // |q| alone at a q' root (resonant.hpp)
-    rsq = q * q;
-    T step = e.f / e.df;
-    u -= step;
-    return step;
-  };
+  const auto fr = lobe_frame_real_of(c, f, a);
+  const auto k = detail::polish_constants_of(c, fr.mu);
   if constexpr (is_mpfr_v<T>) {
-    // Lower levels: bits_full/2 + 16, its half + 16, ... down to twice the start accuracy.
+    // Lower levels: bits_full/2 + 16, its half + 16, ... down to the first level at or below
+    // twice the start accuracy, so that each level starts from a root accurate to about half
+    // its precision and ends accurate to its precision (as Arb's arb_calc_refine_root_newton
+    // chooses them). Stopping one level higher leaves the doubling 53, 106, 212, ... short of
+    // the levels, and then the full-precision step had to run twice (at 10000 digits).
     std::vector<unsigned> ladder;
-    for (unsigned b = real_bits<T>() / 2 + 16; b > 2 * start_bits; b = b / 2 + 16) ladder.push_back(b);
+    for (unsigned b = real_bits<T>() / 2 + 16; b > start_bits; b = b / 2 + 16) ladder.push_back(b);
     std::reverse(ladder.begin(), ladder.end());
     for (unsigned bits : ladder) {
       scoped_digits d(digits10_for_bits(bits));
       detail::set_working_precision(u);
-      auto c = resonant_constants_of<T>(p, T(v));
+      const auto kl = detail::polish_constants_rounded(k);
       T rsq;
-      newton_step(c, lobe_frame_real_of(c, f, a).mu, rsq);
+      detail::polish_step(kl, u, rsq);
+      ++evals;
     }
     detail::set_working_precision(u);
   }
-  auto c = resonant_constants_of<T>(p, v);
-  const auto fr = lobe_frame_real_of(c, f, a);
-  const T mu = fr.mu, floor = lobe_root_floor(fr);
+  const T floor = lobe_root_floor(fr);
   const T half_eps = ldexp(T(1), -int(real_bits<T>() / 2) + 4);
   for (int it = 0; it < 8; ++it) {
     T rsq;
-    T step = newton_step(c, mu, rsq);
+    T step = detail::polish_step(k, u, rsq);
+    ++evals;
     T scale = fabs(u) > floor ? fabs(u) : floor;
     if (fabs(step) <= half_eps * scale) return {u, rsq, evals};
   }
   throw compute_error("lattice: Newton polish of q' = 0 did not converge in " + real_type_name<T>());
+}
+
+template <class T, class L, pair_integer I>
+lobe_polish_result<T> lobe_root_polish(const resonant_pair<I>& p, const T& v, const lobe_frame<L>& f, const L& a, const T& u0,
+                           unsigned start_bits) {
+  return lobe_root_polish(resonant_constants_of<T>(p, v), f, a, u0, start_bits);
 }
 
 namespace detail {
@@ -259,10 +304,27 @@ template <class T> struct lattice_candidates {
   unsigned bits = 53;  // accuracy of the roots (the scout type's precision)
 };
 
-template <class S, class T, class L, pair_integer I>
-void lattice_scout_in(lattice_candidates<T>& out, const resonant_pair<I>& p, const S& v,
+// The pair's integers in the lattice's integer type L (int128 when they fit, else big_int).
+template <class L> struct lattice_ints {
+  L tau, sigma, a, b;
+  // The lobe-frame constants only: the lattice method uses no others (model/resonant.hpp).
+  template <class S> resonant_constants<S> constants(const S& v) const {
+    return resonant_constants_from<S>(a, b, tau, sigma, v, constants_scope::lobe);
+  }
+};
+template <class L, class J> L lattice_int_cast(const J& v) {
+  if constexpr (std::is_same_v<L, int128> && std::is_same_v<J, big_int>) return to_int128(v);
+  else if constexpr (std::is_same_v<L, std::int64_t> && std::is_same_v<J, big_int>) return v.template convert_to<std::int64_t>();
+  else return L(v);
+}
+template <class L, pair_integer I> lattice_ints<L> lattice_ints_of(const resonant_pair<I>& p) {
+  return {lattice_int_cast<L>(p.tau()), lattice_int_cast<L>(p.sigma()), lattice_int_cast<L>(p.order()),
+          lattice_int_cast<L>(p.delta())};
+}
+
+template <class S, class T, class L>
+void lattice_scout_in(lattice_candidates<T>& out, const resonant_constants<S>& cs,
                       const std::vector<lattice_candidate_site<L>>& sites, const L& a) {
-  auto cs = resonant_constants_of<S>(p, v);
   for (const auto& s : sites) {
     auto sr = lattice_solve_site(cs, s, a);
     out.evaluations += sr.evaluations;
@@ -272,30 +334,29 @@ void lattice_scout_in(lattice_candidates<T>& out, const resonant_pair<I>& p, con
 }
 
 // The scout: every site solved in double, or in MPFR at 64 bits when the pair is beyond double's
-// exponent range (`huge`; then T is mpfr_real, checked by the caller).
-template <class T, class L, pair_integer I>
-lattice_candidates<T> lattice_scout(const resonant_pair<I>& p, const T& v,
-                                    const std::vector<lattice_candidate_site<L>>& sites, const L& a, bool huge) {
+// exponent range (`huge`; then T is mpfr_real, checked by the caller). c: the constants in T.
+template <class T, class L>
+lattice_candidates<T> lattice_scout(const lattice_ints<L>& z, const resonant_constants<T>& c,
+                                    const std::vector<lattice_candidate_site<L>>& sites, bool huge) {
   lattice_candidates<T> out;
   if constexpr (std::is_same_v<T, double>) {
-    lattice_scout_in<double>(out, p, v, sites, a);
+    lattice_scout_in<double>(out, c, sites, z.a);
   } else if (!huge) {
-    lattice_scout_in<double>(out, p, 1.0, sites, a);
+    lattice_scout_in<double>(out, z.constants(1.0), sites, z.a);
   } else if constexpr (is_mpfr_v<T>) {
     scoped_digits d(20);
     out.bits = 64;
-    lattice_scout_in<mpfr_real>(out, p, mpfr_real(1), sites, a);
+    lattice_scout_in<mpfr_real>(out, z.constants(mpfr_real(1)), sites, z.a);
   }
   return out;
 }
 
 // lattice_solver::toms748_full: every site solved by TOMS 748 in T directly.
-template <class T, class L, pair_integer I>
-lattice_candidates<T> lattice_solve_full(const resonant_pair<I>& p, const T& v,
+template <class T, class L>
+lattice_candidates<T> lattice_solve_full(const resonant_constants<T>& c,
                                          const std::vector<lattice_candidate_site<L>>& sites, const L& a) {
   lattice_candidates<T> out;
   out.bits = real_bits<T>();
-  auto c = resonant_constants_of<T>(p, v);
   for (const auto& s : sites) {
     const T h = c.pi / 2;
     auto sr = s.den == 0 ? lattice_solve(c, s.frame, a, T(0), h)
@@ -315,18 +376,72 @@ template <class T> std::size_t lattice_smallest(const lattice_candidates<T>& c) 
   return best;
 }
 
+// The default (one site: the pass frame, u in [0, pi/2]; scout and polish): no candidate lists.
+// Returns the root u, R and the evaluations.
+template <class T, class L>
+lobe_polish_result<T> lattice_default_root(const lattice_ints<L>& z, const resonant_constants<T>& c,
+                                           const lattice_candidate_site<L>& site, bool huge) {
+  if constexpr (std::is_same_v<T, double>) {
+    auto sr = lattice_solve_site(c, site, z.a);
+    return {sr.u, sr.radius_sq, sr.evaluations};
+  } else {
+    unsigned bits = 53;
+    std::uintmax_t evals = 0;
+    T u;
+    if (!huge) {
+      auto sr = lattice_solve_site(z.constants(1.0), site, z.a);
+      u = T(sr.u);
+      evals = sr.evaluations;
+    } else if constexpr (is_mpfr_v<T>) {
+      {
+        scoped_digits d(20);
+        auto sr = lattice_solve_site(z.constants(mpfr_real(1)), site, z.a);
+        u = sr.u;
+        evals = sr.evaluations;
+      }
+      set_working_precision(u);
+      bits = 64;
+    }
+    auto pol = lobe_root_polish(c, site.frame, z.a, u, bits);
+    pol.evaluations += evals;
+    return pol;
+  }
+}
+
+// p.strand_offset_min() from b = delta in L (no GMP temporaries for big_int pairs): 1 for b
+// odd, 2 for b = 0 mod 4 (b = 2 mod 4, degenerate, never reaches the lattice).
+template <class L> int lattice_offset_min(const L& b) { return int_mod(b, L(2)) == 1 ? 1 : 2; }
+
+template <class L> bool lattice_is_huge(const L& a) {
+  if constexpr (std::is_same_v<L, big_int>) return mpz_sizeinbase(a.backend().data(), 2) > 901;  // a > 2^900
+  else return false;
+}
+
 template <class T, class L, pair_integer I>
 inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v, const lattice_options& opt) {
-  const L tau = L(p.tau()), a = L(p.order()), b = L(p.delta());
+  const auto z = lattice_ints_of<L>(p);
+  const L& a = z.a;
+  const L& b = z.b;
   const bool window = opt.window_always;
-  const auto sites = lattice_sites(tau, a, b, window, opt.window_always);
-  const bool huge = to_big(p.order()) > (big_int(1) << 900);
+  const bool huge = lattice_is_huge(a);
   if (huge && !is_mpfr_v<T>)
     throw compute_error("pair " + p.str() + " exceeds the exponent range of " + real_type_name<T>() +
                         "; use mpfr_real (more digits)");
+  const auto c = z.constants(v);  // once, at the working precision
+  inscribed_result<T> r;
+  r.method = inscribed_method::lattice;
+  if (!window && opt.solver == lattice_solver::scout_and_polish) {
+    const lattice_candidate_site<L> site{lattice_pass_frame(a, b), L(0), L(0), L(0)};
+    const auto root = lattice_default_root(z, c, site, huge);
+    r.critical_points = 1;
+    r.evaluations = root.evaluations;
+    lattice_fill(r, c, site.frame, a, b, root.u, root.radius_sq, lattice_offset_min(b));
+    return r;
+  }
+  const auto sites = lattice_sites(z.tau, a, b, window, opt.window_always);
   const bool polish = opt.solver == lattice_solver::scout_and_polish && !std::is_same_v<T, double>;
-  auto cand = opt.solver == lattice_solver::toms748_full ? lattice_solve_full(p, v, sites, a)
-                                                          : lattice_scout(p, v, sites, a, huge);
+  auto cand = opt.solver == lattice_solver::toms748_full ? lattice_solve_full(c, sites, a)
+                                                          : lattice_scout(z, c, sites, huge);
   std::size_t best = lattice_smallest(cand);
   T u = cand.u[best], rsq = cand.radius_sq[best];
   if (polish) {
@@ -335,7 +450,7 @@ inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v
     bool have = false;
     for (std::size_t i = 0; i < sites.size(); ++i) {
       if (!(cand.radius_sq[i] <= limit)) continue;
-      auto pol = lobe_root_polish(p, v, sites[i].frame, a, cand.u[i], cand.bits);
+      auto pol = lobe_root_polish(c, sites[i].frame, a, cand.u[i], cand.bits);
       cand.evaluations += pol.evaluations;
       if (!have || pol.radius_sq < rsq) {
         u = pol.u;
@@ -345,12 +460,9 @@ inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v
       }
     }
   }
-  inscribed_result<T> r;
-  r.method = inscribed_method::lattice;
   r.critical_points = sites.size();
   r.evaluations = cand.evaluations;
-  auto c = resonant_constants_of<T>(p, v);
-  lattice_fill(r, c, sites[best].frame, a, b, u, rsq, p.strand_offset_min());
+  lattice_fill(r, c, sites[best].frame, a, b, u, rsq, lattice_offset_min(b));
   return r;
 }
 
@@ -359,10 +471,27 @@ inline int bit_length(unsigned __int128 v) {
   while (v) { v >>= 1; ++n; }
   return n;
 }
-inline bool lattice_fits_int128(const resonant_pair<std::int64_t>& p) {
-  int la = bit_length((unsigned __int128)p.order()), lb = bit_length((unsigned __int128)p.delta()),
-      lt = bit_length((unsigned __int128)p.tau());
-  return la + lb <= 124 && la + lt <= 124;
+// An integer type of `bits` bits holds every intermediate when a b (and, in the window mode,
+// a tau) stay below 2^(bits - 4): the largest products are (2j+1) a and 2 k b with j < b, k < a,
+// and 2 k tau, a (2i+1) with i < 2 tau in the window mode. int64 where it suffices (every pair
+// of a sweep up to order 2^30: int128 division is a library call), int128 up to 2^124.
+inline bool lattice_fits(unsigned __int128 a, unsigned __int128 b, unsigned __int128 tau, bool window, int bits) {
+  const int la = bit_length(a), lb = bit_length(b), lt = bit_length(tau);
+  return la + lb <= bits - 4 && (!window || la + lt <= bits - 4);
+}
+// The pair's a, b, tau as unsigned 128-bit integers, or false when tau needs more than 120 bits.
+inline bool lattice_abt(const resonant_pair<std::int64_t>& p, unsigned __int128 (&abt)[3]) {
+  abt[0] = (unsigned __int128)p.order();
+  abt[1] = (unsigned __int128)p.delta();
+  abt[2] = (unsigned __int128)p.tau();
+  return true;
+}
+inline bool lattice_abt(const resonant_pair<big_int>& p, unsigned __int128 (&abt)[3]) {
+  if (mpz_sizeinbase(p.tau().backend().data(), 2) > 120) return false;  // then a < 2^122 too
+  abt[2] = (unsigned __int128)to_int128(p.tau());
+  abt[0] = abt[2] + (unsigned __int128)to_int128(p.sigma());
+  abt[1] = (unsigned __int128)to_int128(p.delta());
+  return true;
 }
 
 }  // namespace detail
@@ -372,18 +501,19 @@ template <class T, pair_integer I>
 inscribed_result<T> inscribed_lattice(const resonant_pair<I>& p, const T& v, const lattice_options& opt = {}) {
   check_amplitude(v);
   if (p.degenerate()) return inscribed_degenerate<T>(p, v);
-  // int128 holds every intermediate when a b and a tau stay below 2^124 (the largest products
-  // are (2j+1) a and 2 k b with j < b, k < a, and 2 k tau in the window mode).
-  if constexpr (std::is_same_v<I, std::int64_t>) {
-    if (detail::lattice_fits_int128(p)) return detail::inscribed_lattice_impl<T, int128>(p, v, opt);
-    return detail::inscribed_lattice_impl<T, big_int>(pair_cast<big_int>(p), v, opt);
-  } else {
-    if (pair_fits_int64(p)) {
-      auto q = pair_cast<std::int64_t>(p);
-      if (detail::lattice_fits_int128(q)) return detail::inscribed_lattice_impl<T, int128>(q, v, opt);
-    }
-    return detail::inscribed_lattice_impl<T, big_int>(p, v, opt);
+  // int64 or int128 arithmetic whenever it holds every intermediate (detail::lattice_fits), also
+  // for pairs given as big_int (e.g. (10^30+1, 10^30)): no GMP temporaries then.
+  unsigned __int128 abt[3];
+  if (detail::lattice_abt(p, abt)) {
+    if (detail::lattice_fits(abt[0], abt[1], abt[2], opt.window_always, 64))
+      return detail::inscribed_lattice_impl<T, std::int64_t>(p, v, opt);
+    if (detail::lattice_fits(abt[0], abt[1], abt[2], opt.window_always, 128))
+      return detail::inscribed_lattice_impl<T, int128>(p, v, opt);
   }
+  if constexpr (std::is_same_v<I, std::int64_t>)
+    return detail::inscribed_lattice_impl<T, big_int>(pair_cast<big_int>(p), v, opt);
+  else
+    return detail::inscribed_lattice_impl<T, big_int>(p, v, opt);
 }
 
 // Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.

@@ -38,23 +38,49 @@ template <class T> struct resonant_constants {
   T rho0;     // v sqrt(tau sigma)/a
 };
 
-template <class T, pair_integer I> resonant_constants<T> resonant_constants_of(const resonant_pair<I>& p, const T& v) {
+// Which members resonant_constants_from computes: all, or only those the lobe-frame functions
+// of this header and the lattice method use (v, x, s1mx2, sqrt_ts, pi; n, omega1, omega2 and
+// rho0 are then left at 0). At 10000 digits the four divisions and square roots saved cost
+// about a third of one sine-cosine pair.
+enum class constants_scope { all, lobe };
+
+// From the pair's integers in any integer type J (int64, int128, big_int): a = tau + sigma,
+// b = tau - sigma. The lattice method passes them as int128 when they fit, so that a pair held
+// as big_int (e.g. (10^30+1, 10^30)) costs no GMP arithmetic here.
+template <class T, class J>
+resonant_constants<T> resonant_constants_from(const J& a_i, const J& b_i, const J& tau_i, const J& sigma_i, const T& v,
+                                              constants_scope scope = constants_scope::all) {
   using std::sqrt;
-  using W = wide_int<I>;
   resonant_constants<T> c;
   c.v = v;
-  T a = real_from_int<T>(p.order());
-  T b = real_from_int<T>(W(p.delta()));
-  T tau = real_from_int<T>(p.tau()), sigma = real_from_int<T>(p.sigma());
+  T a = real_from_int<T>(a_i);
+  T b = real_from_int<T>(b_i);
+  T tau = real_from_int<T>(tau_i), sigma = real_from_int<T>(sigma_i);
   c.x = b / a;
-  c.sqrt_ts = sqrt(tau) * sqrt(sigma);  // no product: tau*sigma may exceed T's exact range
+  bool ts_done = false;
+  if constexpr (is_mpfr_v<T>) {
+    // One correctly rounded square root when tau*sigma is exact at this precision (always, for
+    // pairs below 2^(bits/2)): more accurate than the two roots and a product below, and cheaper.
+    T ts;
+    if (mpfr_mul(ts.backend().data(), tau.backend().data(), sigma.backend().data(), MPFR_RNDN) == 0) {
+      c.sqrt_ts = sqrt(ts);
+      ts_done = true;
+    }
+  }
+  if (!ts_done) c.sqrt_ts = sqrt(tau) * sqrt(sigma);  // no product: tau*sigma may exceed T's exact range
   c.s1mx2 = 2 * c.sqrt_ts / a;
   c.pi = real_pi<T>();
+  if (scope == constants_scope::lobe) return c;
   c.n = b / c.sqrt_ts;
   c.omega1 = sqrt(tau / sigma);
   c.omega2 = sqrt(sigma / tau);
   c.rho0 = v * c.sqrt_ts / a;
   return c;
+}
+
+template <class T, pair_integer I> resonant_constants<T> resonant_constants_of(const resonant_pair<I>& p, const T& v) {
+  using W = wide_int<I>;
+  return resonant_constants_from<T>(p.order(), W(p.delta()), W(p.tau()), W(p.sigma()), v);
 }
 
 // A lobe frame: exact integers (L is int128 or big_int). m = (2j+1) a - 2 k b.
@@ -86,10 +112,9 @@ template <class T> struct lobe_values {
 
 // q, q', z, z' at u in a frame.
 template <class T> lobe_values<T> lobe_eval(const resonant_constants<T>& c, const lobe_frame_real<T>& f, const T& u) {
-  using std::cos;
-  using std::sin;
   T w = f.mu - c.x * u;
-  T su = sin(u), cu = cos(u), sw = sin(w), cw = cos(w);
+  auto [su, cu] = real_sin_cos(u);
+  auto [sw, cw] = real_sin_cos(w);
   T sv = f.sign > 0 ? c.v : T(-c.v);
   T amp = sv * c.s1mx2;
   return {amp * su * sw, sv * (cu * sw - c.x * su * cw), amp * su * cw, sv * (c.x * su * sw + cu * cw)};
@@ -116,10 +141,9 @@ template <class T> struct qdot_with_derivative {
   T su, cu, sw, cw;
 };
 template <class T> qdot_with_derivative<T> lobe_qdot_newton(const resonant_constants<T>& c, const T& mu, const T& u) {
-  using std::cos;
-  using std::sin;
   T w = mu - c.x * u;
-  T su = sin(u), cu = cos(u), sw = sin(w), cw = cos(w);
+  auto [su, cu] = real_sin_cos(u);
+  auto [sw, cw] = real_sin_cos(w);
   T f = cu * sw - c.x * su * cw;
   T df = -(1 + c.x * c.x) * su * sw - 2 * c.x * cu * cw;
   return {f, df, su, cu, sw, cw};
@@ -129,7 +153,7 @@ template <class T> qdot_with_derivative<T> lobe_qdot_newton(const resonant_const
 template <class T, class L> T lobe_theta(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const T& u) {
   L kr = int_mod(f.k, a);
   T at = real_from_int<T>(a);
-  T th = 2 * c.pi * (real_from_int<T>(kr) / at) + 2 * u / at;
+  T th = 2 * (c.pi * real_from_int<T>(kr) + u) / at;  // one division (at 10000 digits a division costs 2 products)
   T two_pi = 2 * c.pi;
   if (th < 0) th += two_pi;
   if (th >= two_pi) th -= two_pi;

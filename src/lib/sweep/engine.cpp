@@ -17,6 +17,79 @@ namespace {
 
 using pair64 = resonant_pair<std::int64_t>;
 
+// The pairs of one shard in the order of coprime_pairs (model/enumerate.hpp: by order a, then
+// sigma ascending; shard i of n keeps the positions = i mod n), as (a, sigma). It runs under the
+// pipeline's lock, so it is kept cheap: coprimality of (a, s) is read from a table of a window of
+// s, marked by the distinct primes of a (found once per order), instead of one gcd per candidate
+// (a gcd at order 10^5 costs about as much as the table for a whole window). tests/test_sweep.cpp
+// checks the rows against the plain enumeration through the summary.
+class pair_stream {
+ public:
+  pair_stream(std::int64_t min_order, std::int64_t max_order, std::int64_t shard, std::int64_t shards)
+      : a_(std::max<std::int64_t>(3, min_order) - 1), s_(0), max_(max_order), shard_(shard), shards_(shards) {
+    next_order();
+    advance();
+    pos_ = 0;
+    skip_to_shard();
+  }
+  bool done() const { return a_ > max_; }
+  std::int64_t order() const { return a_; }
+  std::int64_t sigma() const { return s_; }
+  void next() {
+    advance();
+    ++pos_;
+    skip_to_shard();
+  }
+
+ private:
+  static constexpr std::int64_t window = 4096;
+  void next_order() {
+    ++a_;
+    s_ = 0;
+    win_lo_ = 1;
+    win_hi_ = 1;  // empty: the first advance() fills it
+    primes_.clear();
+    std::int64_t n = a_;
+    for (std::int64_t p = 2; p * p <= n; ++p)
+      if (n % p == 0) {
+        primes_.push_back(p);
+        while (n % p == 0) n /= p;
+      }
+    if (n > 1) primes_.push_back(n);
+  }
+  // coprime_[s - win_lo_] for s in [win_lo_, win_hi_): gcd(a, s) = 1.
+  void fill_window(std::int64_t lo) {
+    win_lo_ = lo;
+    win_hi_ = std::min(lo + window, (a_ + 1) / 2);  // s < a/2 (2 s < a)
+    coprime_.assign(std::size_t(std::max<std::int64_t>(0, win_hi_ - win_lo_)), 1);
+    for (std::int64_t p : primes_)
+      for (std::int64_t m = ((lo + p - 1) / p) * p; m < win_hi_; m += p) coprime_[std::size_t(m - lo)] = 0;
+  }
+  // The next coprime (a, s) of the full enumeration.
+  void advance() {
+    for (;;) {
+      ++s_;
+      if (2 * s_ >= a_) {
+        next_order();
+        if (a_ > max_) return;
+        s_ = 1;
+      }
+      if (s_ >= win_hi_) fill_window(s_);
+      if (coprime_[std::size_t(s_ - win_lo_)]) return;
+    }
+  }
+  void skip_to_shard() {
+    while (a_ <= max_ && pos_ % shards_ != shard_) {
+      advance();
+      ++pos_;
+    }
+  }
+  std::int64_t a_, s_, max_, shard_, shards_, pos_ = 0;
+  std::int64_t win_lo_ = 1, win_hi_ = 1;
+  std::vector<std::int64_t> primes_;
+  std::vector<unsigned char> coprime_;
+};
+
 // The shared state of one run: the enumeration (guarded by mtx_), the blocks evaluated but not
 // yet delivered, and the first failure.
 class block_pipeline {
@@ -29,7 +102,7 @@ class block_pipeline {
         block_size_(std::max<std::size_t>(1, opt.block_size)),
         window_(4 * std::uint64_t(threads_)),
         range_(cfg.min_order, cfg.max_order, cfg.shard_index, cfg.shard_count),
-        it_(range_.begin()),
+        it_(cfg.min_order, cfg.max_order, cfg.shard_index, cfg.shard_count),
         limit_(opt.max_pairs ? opt.start + opt.max_pairs : std::numeric_limits<std::uint64_t>::max()) {}
 
   sweep_outcome run(const std::function<void(sweep_block&)>& on_block);
@@ -37,7 +110,7 @@ class block_pipeline {
  private:
   void skip_to_start();
   bool stop_requested() const { return opt_.stop && opt_.stop->load(std::memory_order_relaxed); }
-  bool take_block(std::vector<pair64>& pairs, std::uint64_t& id, std::uint64_t& first);
+  bool take_block(std::vector<std::pair<std::int64_t, std::int64_t>>& raw, std::uint64_t& id, std::uint64_t& first);
   sweep_block evaluate_block(const std::vector<pair64>& pairs, std::uint64_t first) const;
   void worker();
   bool next_in_order(sweep_block& blk);
@@ -49,8 +122,8 @@ class block_pipeline {
   const unsigned threads_;
   const std::size_t block_size_;
   const std::uint64_t window_;  // blocks in flight
-  coprime_pairs range_;
-  coprime_pairs::iterator it_;
+  coprime_pairs range_;  // validates the shard (usage_error)
+  pair_stream it_;
   const std::uint64_t limit_;
   std::uint64_t taken_ = 0;  // pairs handed out (shard-relative, from 0)
   bool exhausted_ = false;
@@ -66,24 +139,26 @@ class block_pipeline {
 
 // Resume: step over the pairs done before (nothing runs concurrently yet).
 void block_pipeline::skip_to_start() {
-  while (taken_ < opt_.start && !(it_ == range_.end())) {
-    ++it_;
+  while (taken_ < opt_.start && !it_.done()) {
+    it_.next();
     ++taken_;
   }
-  exhausted_ = it_ == range_.end();
+  exhausted_ = it_.done();
 }
 
-// Under mtx_: the next block's pairs, its id and first index; false when no more work is wanted.
-bool block_pipeline::take_block(std::vector<pair64>& pairs, std::uint64_t& id, std::uint64_t& first) {
+// Under mtx_: the next block's pairs as (a, sigma), its id and first index; false when no more
+// work is wanted. The pairs themselves are built by the worker, outside the lock.
+bool block_pipeline::take_block(std::vector<std::pair<std::int64_t, std::int64_t>>& raw, std::uint64_t& id,
+                                std::uint64_t& first) {
   if (abort_ || exhausted_ || taken_ >= limit_ || stop_requested()) return false;
-  pairs.clear();
+  raw.clear();
   first = taken_;
-  while (pairs.size() < block_size_ && taken_ < limit_ && !(it_ == range_.end())) {
-    pairs.push_back(*it_);
-    ++it_;
+  while (raw.size() < block_size_ && taken_ < limit_ && !it_.done()) {
+    raw.emplace_back(it_.order(), it_.sigma());
+    it_.next();
     ++taken_;
   }
-  if (it_ == range_.end()) exhausted_ = true;
+  if (it_.done()) exhausted_ = true;
   id = next_id_++;
   return true;
 }
@@ -107,17 +182,21 @@ void block_pipeline::fail(std::exception_ptr e) {
 }
 
 void block_pipeline::worker() {
+  std::vector<std::pair<std::int64_t, std::int64_t>> raw;
   std::vector<pair64> pairs;
+  raw.reserve(block_size_);
   pairs.reserve(block_size_);
   for (;;) {
     std::uint64_t id = 0, first = 0;
     {
       std::unique_lock<std::mutex> lk(mtx_);
       cv_work_.wait(lk, [&] { return abort_ || next_id_ < next_write_ + window_; });
-      if (!take_block(pairs, id, first)) break;
+      if (!take_block(raw, id, first)) break;
     }
     sweep_block blk;
     try {
+      pairs.clear();
+      for (const auto& [a, s] : raw) pairs.emplace_back(a - s, s);
       blk = evaluate_block(pairs, first);
     } catch (...) {
       fail(std::current_exception());
@@ -172,7 +251,7 @@ sweep_outcome block_pipeline::run(const std::function<void(sweep_block&)>& on_bl
   if (failure_) std::rethrow_exception(failure_);
   sweep_outcome out;
   out.done = done;
-  out.complete = it_ == range_.end() && done == taken_;
+  out.complete = it_.done() && done == taken_;
   out.threads = threads_;
   return out;
 }
