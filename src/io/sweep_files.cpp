@@ -93,6 +93,9 @@ void sweep_file_session::restore() {
   restore_values(st.at("values_count").get<std::uint64_t>());
   if (!rows_) return;
   rows_bytes_ = st.at("rows_bytes").get<std::uint64_t>();
+  // A run stopped after renaming its finished rows file but before removing the state (the last
+  // two steps of finish_complete): the file is taken back, its end line cut below and rewritten.
+  if (!file_exists(rows_part_) && file_exists(files_.rows_path)) rename_file(files_.rows_path, rows_part_);
   truncate_file(rows_part_, rows_bytes_);
   rows_file_ = append_file(rows_part_, append_file::mode::append);
 }
