@@ -2,6 +2,8 @@
 // src/cli/cli_options.cpp: parse_big_int, then resonant_pair of model/pair.hpp). The input is
 // "TAU\nSIGMA". An accepted pair is coprime with tau > sigma >= 1; when it fits int64 the
 // int64 pair agrees on order, delta and degeneracy.
+#include <limits>
+
 #include <gyrores/core/error.hpp>
 #include <gyrores/model/pair.hpp>
 
@@ -19,7 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const big_int lim(std::numeric_limits<std::int64_t>::max());
     if (p.tau() <= lim) {
       const gyrores::resonant_pair<std::int64_t> q(p.tau().convert_to<std::int64_t>(), p.sigma().convert_to<std::int64_t>());
-      if (big_int(q.order()) != big_int(p.order()) || big_int(q.delta()) != p.delta() || q.degenerate() != p.degenerate())
+      if (gyrores::to_decimal(q.order()) != gyrores::to_decimal(p.order()) || big_int(q.delta()) != p.delta() ||
+          q.degenerate() != p.degenerate())
         std::abort();
     }
   } catch (const gyrores::usage_error&) {

@@ -2,7 +2,7 @@
 // The input is the state file, then (after fuzz_support.hpp's file_separator) the values file;
 // both go to the scratch directory and `gyrores sweep --max-order 12 --summary S --resume`
 // runs on them in-process (double, one thread). A state that does not fit must give
-// usage_error; one that fits continues the 45-pair sweep to the end.
+// usage_error; one that fits continues the 22-pair sweep to the end.
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/sweep_files.hpp>
 
