@@ -224,7 +224,9 @@ std::vector<double> sweep_read_values(const std::string& path) {
   std::uint64_t n = 0;
   if (c.size() < 16 || c.compare(0, 8, "GYRVAL01") != 0) throw usage_error("'" + path + "' is not a gyrores values file");
   std::memcpy(&n, c.data() + 8, sizeof n);
-  if (c.size() != 16 + n * sizeof(double)) throw usage_error("'" + path + "' is truncated");
+  // n from the file is compared by division: 16 + n * 8 wraps around for n >= 2^61.
+  if ((c.size() - 16) % sizeof(double) != 0 || n != (c.size() - 16) / sizeof(double))
+    throw usage_error("'" + path + "' is truncated");
   std::vector<double> v(n);
   std::memcpy(v.data(), c.data() + 16, n * sizeof(double));
   return v;
