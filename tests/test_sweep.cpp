@@ -479,3 +479,20 @@ TEST_CASE("sweep: float128 agrees with double", "[sweep]") {
   auto q128 = a128.quantiles(), q64 = a64.quantiles();
   CHECK(q128.median == Approx(q64.median).epsilon(1e-12));
 }
+
+// Inputs found by fuzzing (tests/fuzz/, docs/testing.md): each must be a usage_error.
+TEST_CASE("sweep: malformed values files, states and shard outputs are usage errors", "[sweep]") {
+  temp_dir d("test_sweep");
+  // A values file whose count n = 2^61 made 16 + 8n wrap around to 16, the file's own size.
+  std::string header = "GYRVAL01";
+  const std::uint64_t huge = std::uint64_t(1) << 61;
+  header.append(reinterpret_cast<const char*>(&huge), sizeof huge);
+  write_file_atomically(d / "v.values", header);
+  CHECK_THROWS_AS(sweep_read_values(d / "v.values"), usage_error);
+  std::string one = header.substr(0, 8);
+  const std::uint64_t n1 = 1;
+  one.append(reinterpret_cast<const char*>(&n1), sizeof n1);
+  one.append(8, '\0');
+  write_file_atomically(d / "one.values", one);
+  CHECK(sweep_read_values(d / "one.values") == std::vector<double>{0.0});
+}

@@ -63,8 +63,17 @@ sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_file
   if (cfg.max_order <= sweep_count_limit)
     total_ = sweep_shard_pairs(sweep_total_pairs(cfg.min_order, cfg.max_order), cfg.shard_index, cfg.shard_count);
   acc_.max_examples = cfg.max_examples;
-  if (files.resume) restore();
-  else start_fresh();
+  if (files.resume) {
+    // A state whose fields are missing or of the wrong type is bad input, like one that is not
+    // JSON (read_state): usage_error, not the JSON library's exception.
+    try {
+      restore();
+    } catch (const json::exception& e) {
+      throw usage_error("cannot resume: '" + state_ + "' is not a valid resume state: " + e.what());
+    }
+  } else {
+    start_fresh();
+  }
   done_ = start_;
   t0_ = std::chrono::steady_clock::now();
 }
