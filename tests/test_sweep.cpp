@@ -496,3 +496,33 @@ TEST_CASE("sweep: malformed values files, states and shard outputs are usage err
   write_file_atomically(d / "one.values", one);
   CHECK(sweep_read_values(d / "one.values") == std::vector<double>{0.0});
 }
+
+TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not a JSON exception", "[sweep]") {
+  temp_dir d("test_sweep");
+  // A resume state without "done" (the JSON library threw out_of_range: 'internal error').
+  sweep_files f;
+  f.summary_path = d / "s.json";
+  auto e = engine(1);
+  e.max_pairs = 20;
+  REQUIRE_FALSE(sweep_to_files<double>(config(30), f, e).complete);
+  const std::string state = sweep_default_state_path(f);
+  json st = read_json(state);
+  st.erase("done");
+  write_file_atomically(state, st.dump());
+  f.resume = true;
+  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  // A rows file naming shard 0 of 0 (merge divided by the shard count), or shard 3 of 2.
+  sweep_files r;
+  r.rows_path = d / "r.jsonl";
+  r.rows_format = sweep_format::jsonl;
+  REQUIRE(sweep_to_files<double>(config(30), r, engine(1)).complete);
+  const std::string rows = read_text(r.rows_path);
+  REQUIRE(rows.find("\"shard\":[0,1]") != std::string::npos);
+  for (const std::string shard : {"[0,0]", "[3,2]", "[\"x\",1]"}) {
+    std::string bad = rows;
+    bad.replace(bad.find("\"shard\":[0,1]") + 8, 5, shard);
+    write_file_atomically(d / "bad.jsonl", bad);
+    INFO(shard);
+    CHECK_THROWS_AS(sweep_merge({d / "bad.jsonl"}), usage_error);
+  }
+}
