@@ -525,4 +525,17 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
     INFO(shard);
     CHECK_THROWS_AS(sweep_merge({d / "bad.jsonl"}), usage_error);
   }
+  // A CSV row whose t_first/proxy is not a number (sweep_text_double threw compute_error: exit 3,
+  // "could not compute", for what is a malformed file).
+  sweep_files c;
+  c.rows_path = d / "r.csv";
+  REQUIRE(sweep_to_files<double>(config(30), c, engine(1)).complete);
+  std::string csv = read_text(c.rows_path);
+  const auto row = csv.find("\n2,1,3,");
+  REQUIRE(row != std::string::npos);
+  const auto field = csv.find(",0.8", row);  // t_first_over_proxy of (2, 1): 0.819...
+  REQUIRE(field != std::string::npos);
+  csv.replace(field + 1, 1, "z");
+  write_file_atomically(d / "bad.csv", csv);
+  CHECK_THROWS_AS(sweep_merge({d / "bad.csv"}), usage_error);
 }

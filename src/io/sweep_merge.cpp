@@ -81,12 +81,14 @@ sweep_input sweep_read_output(const std::string& path) {
   std::getline(in, first);
   in.close();
   // A field missing or of the wrong type is bad input: usage_error naming the file, not the JSON
-  // library's exception.
+  // library's exception (nor compute_error, exit 3).
   try {
     if (first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos)
       return sweep_read_rows(path);
     return sweep_read_summary(path);
   } catch (const json::exception& e) {
+    throw usage_error("'" + path + "' is malformed: " + e.what());
+  } catch (const compute_error& e) {  // a real that does not parse (sweep/real_text): bad input here
     throw usage_error("'" + path + "' is malformed: " + e.what());
   }
 }
