@@ -507,10 +507,23 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   REQUIRE_FALSE(sweep_to_files<double>(config(30), f, e).complete);
   const std::string state = sweep_default_state_path(f);
   json st = read_json(state);
+  write_file_atomically(state + ".bak", st.dump());
   st.erase("done");
   write_file_atomically(state, st.dump());
   f.resume = true;
   CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  // A count beyond 64 bits (parsed as a double; converting it was undefined behaviour, UBSan).
+  st = read_json(state + ".bak");
+  REQUIRE(st.contains("summary"));
+  for (const char* where : {"summary", "top"}) {
+    json big = st;
+    const json huge = json::parse("222222222222222222222222222222");
+    if (std::string(where) == "summary") big["summary"]["pairs"] = huge;
+    else big["done"] = huge;
+    write_file_atomically(state, big.dump());
+    INFO(where);
+    CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  }
   // A rows file naming shard 0 of 0 (merge divided by the shard count), or shard 3 of 2.
   sweep_files r;
   r.rows_path = d / "r.jsonl";

@@ -98,6 +98,10 @@ void sweep_file_session::start_fresh() {
 // Continue from the last checkpoint: anything written after it is cut off and recomputed.
 void sweep_file_session::restore() {
   const json st = read_state(state_, run_files_);
+  // get<std::uint64_t> on a floating value (an integer beyond 64 bits) is undefined behaviour.
+  for (const char* k : {"done", "values_count", "rows_bytes"})
+    if (st.contains(k) && !st.at(k).is_number_unsigned())
+      throw usage_error("cannot resume: '" + state_ + "' has " + k + " = " + st.at(k).dump());
   start_ = st.at("done").get<std::uint64_t>();
   seconds_before_ = st.at("seconds").get<double>();
   acc_ = sweep_accumulator_from_json(st.at("summary"), cfg_.max_examples);
