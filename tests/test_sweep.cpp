@@ -523,3 +523,76 @@ TEST_CASE("sweep: the engine's pairs are coprime_pairs' pairs in order, for shar
     CHECK(got == expected);
   }
 }
+
+// Inputs found by fuzzing (tests/fuzz/, docs/testing.md): each must be a usage_error.
+TEST_CASE("sweep: malformed values files, states and shard outputs are usage errors", "[sweep]") {
+  temp_dir d("test_sweep");
+  // A values file whose count n = 2^61 made 16 + 8n wrap around to 16, the file's own size.
+  std::string header = "GYRVAL01";
+  const std::uint64_t huge = std::uint64_t(1) << 61;
+  header.append(reinterpret_cast<const char*>(&huge), sizeof huge);
+  write_file_atomically(d / "v.values", header);
+  CHECK_THROWS_AS(sweep_read_values(d / "v.values"), usage_error);
+  std::string one = header.substr(0, 8);
+  const std::uint64_t n1 = 1;
+  one.append(reinterpret_cast<const char*>(&n1), sizeof n1);
+  one.append(8, '\0');
+  write_file_atomically(d / "one.values", one);
+  CHECK(sweep_read_values(d / "one.values") == std::vector<double>{0.0});
+}
+
+TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not a JSON exception", "[sweep]") {
+  temp_dir d("test_sweep");
+  // A resume state without "done" (the JSON library threw out_of_range: 'internal error').
+  sweep_files f;
+  f.summary_path = d / "s.json";
+  auto e = engine(1);
+  e.max_pairs = 20;
+  REQUIRE_FALSE(sweep_to_files<double>(config(30), f, e).complete);
+  const std::string state = sweep_default_state_path(f);
+  json st = read_json(state);
+  write_file_atomically(state + ".bak", st.dump());
+  st.erase("done");
+  write_file_atomically(state, st.dump());
+  f.resume = true;
+  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  // A count beyond 64 bits (parsed as a double; converting it was undefined behaviour, UBSan).
+  st = read_json(state + ".bak");
+  REQUIRE(st.contains("summary"));
+  for (const char* where : {"summary", "top"}) {
+    json big = st;
+    const json huge = json::parse("222222222222222222222222222222");
+    if (std::string(where) == "summary") big["summary"]["pairs"] = huge;
+    else big["done"] = huge;
+    write_file_atomically(state, big.dump());
+    INFO(where);
+    CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  }
+  // A rows file naming shard 0 of 0 (merge divided by the shard count), or shard 3 of 2.
+  sweep_files r;
+  r.rows_path = d / "r.jsonl";
+  r.rows_format = sweep_format::jsonl;
+  REQUIRE(sweep_to_files<double>(config(30), r, engine(1)).complete);
+  const std::string rows = read_text(r.rows_path);
+  REQUIRE(rows.find("\"shard\":[0,1]") != std::string::npos);
+  for (const std::string shard : {"[0,0]", "[3,2]", "[\"x\",1]"}) {
+    std::string bad = rows;
+    bad.replace(bad.find("\"shard\":[0,1]") + 8, 5, shard);
+    write_file_atomically(d / "bad.jsonl", bad);
+    INFO(shard);
+    CHECK_THROWS_AS(sweep_merge({d / "bad.jsonl"}), usage_error);
+  }
+  // A CSV row whose t_first/proxy is not a number (sweep_text_double threw compute_error: exit 3,
+  // "could not compute", for what is a malformed file).
+  sweep_files c;
+  c.rows_path = d / "r.csv";
+  REQUIRE(sweep_to_files<double>(config(30), c, engine(1)).complete);
+  std::string csv = read_text(c.rows_path);
+  const auto row = csv.find("\n2,1,3,");
+  REQUIRE(row != std::string::npos);
+  const auto field = csv.find(",0.8", row);  // t_first_over_proxy of (2, 1): 0.819...
+  REQUIRE(field != std::string::npos);
+  csv.replace(field + 1, 1, "z");
+  write_file_atomically(d / "bad.csv", csv);
+  CHECK_THROWS_AS(sweep_merge({d / "bad.csv"}), usage_error);
+}

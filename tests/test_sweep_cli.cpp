@@ -1,12 +1,16 @@
 // 'gyrores sweep' and 'gyrores merge' as a user meets them: the summary on stdout, the JSON
-// file, shards merged by the CLI equal to the single run, SIGINT or SIGKILL then --resume, usage
-// errors. Skipped when the CLI is not built (cli_available()).
+// file, shards merged by the CLI equal to the single run, SIGINT or SIGKILL then --resume (once,
+// and 20 times at random moments), a full disk, usage errors. Skipped when the CLI is not built
+// (cli_available()).
 #include <catch2/catch.hpp>
 
 #include <signal.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -36,6 +40,23 @@ std::string without_last_line(const std::string& s) {
 }
 
 json core_of(const std::string& path) { return gyrores::sweep_summary_core(json::parse(read_text(path))); }
+
+// A summary file's text with the value of its "seconds" line (the run time) blanked: everything
+// else must match byte for byte.
+std::string without_seconds(std::string s) {
+  const auto at = s.find("\n  \"seconds\": ");
+  if (at == std::string::npos) return s;
+  const auto end = s.find('\n', at + 1);
+  return s.erase(at, end - at);
+}
+
+// The names in a directory, sorted.
+std::vector<std::string> names_in(const std::string& dir) {
+  std::vector<std::string> v;
+  for (auto& e : std::filesystem::directory_iterator(dir)) v.push_back(e.path().filename().string());
+  std::sort(v.begin(), v.end());
+  return v;
+}
 
 }  // namespace
 
@@ -159,6 +180,112 @@ TEST_CASE("sweep CLI: SIGKILL after a checkpoint, then --resume gives the uninte
   // The text summary differs only in the run time.
   auto mask_time = [](const std::string& s) { return s.substr(s.find("\n  degenerate")); };
   CHECK(mask_time(r.out) == mask_time(full.out));
+}
+
+TEST_CASE("sweep CLI: 20 SIGKILLs at random moments, each resumed, give the uninterrupted files", "[cli][sweep]") {
+  if (!cli_available()) return;
+  temp_dir d("test_sweep_cli");
+  // ~55000 pairs of orders 3..600 without the cross-check: a block of 1024 pairs takes ~10 ms, a
+  // checkpoint follows every block, the whole sweep about half a second, so 20 kills 0-80 ms
+  // after the start land anywhere: before the first checkpoint (no state yet: the next run
+  // starts afresh), inside a block or a checkpoint, during the end (summary, rows renamed,
+  // state removed), or after it (the run finished: the next one starts afresh).
+  const std::string args = "sweep --max-order 600 --check structure,degeneracy,paper-node --threads 1 --quiet";
+  const std::string files = " --out " + d / "rows.csv" + " --summary " + d / "s.json";
+  const std::string state = d / "rows.csv.resume";
+  auto full = run(args + " --out " + d / "full.csv --summary " + d / "full.json");
+  REQUIRE(full.status == 0);
+
+  const char* seed_env = std::getenv("GYRORES_TEST_SEED");
+  const unsigned seed = seed_env ? unsigned(std::strtoul(seed_env, nullptr, 10)) : std::random_device{}();
+  WARN("SIGKILL test seed " << seed << " (GYRORES_TEST_SEED=" << seed << " repeats it)");
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> delay_us(0, 80000);
+  int kills = 0, fresh_starts = 0, runs = 0;
+  bool finished = false;
+  while (!finished && runs < 200) {
+    ++runs;
+    const bool resume = path_exists(state);
+    if (!resume) ++fresh_starts;
+    const int pid = gyrores::test::cli_spawn(args + " --checkpoint 0.001" + files + (resume ? " --resume" : ""),
+                                             d / "stdout", d / "stderr");
+    // 20 kills first; later runs are left to finish.
+    if (kills < 20) {
+      std::this_thread::sleep_for(std::chrono::microseconds(delay_us(rng)));
+      ::kill(pid, SIGKILL);
+    }
+    const int status = gyrores::test::cli_wait(pid);
+    INFO("run " << runs << (resume ? " (resumed)" : " (fresh)") << ": status " << status << ", stderr "
+                << read_text(d / "stderr"));
+    if (status == 128 + SIGKILL) {
+      ++kills;
+      continue;
+    }
+    REQUIRE(status == 0);
+    finished = kills >= 20;  // a run that ended before its kill: the next one starts afresh
+    if (!finished) {
+      std::filesystem::remove(d / "rows.csv");
+      std::filesystem::remove(d / "s.json");
+    }
+  }
+  WARN(kills << " kills, " << fresh_starts << " fresh starts, " << runs << " runs");
+  REQUIRE(finished);
+  CHECK(kills >= 20);
+  CHECK(without_seconds(read_text(d / "s.json")) == without_seconds(read_text(d / "full.json")));
+  CHECK(without_last_line(read_text(d / "rows.csv")) == without_last_line(read_text(d / "full.csv")));
+  CHECK_FALSE(path_exists(state));
+  CHECK_FALSE(path_exists(state + ".values"));
+  CHECK_FALSE(path_exists(d / "rows.csv.part"));
+}
+
+TEST_CASE("sweep CLI: a run killed after renaming its rows, before removing the state, resumes", "[cli][sweep]") {
+  if (!cli_available()) return;
+  temp_dir d("test_sweep_cli");
+  // The last steps of a sweep: summary written, rows file renamed, state removed. A kill between
+  // the last two leaves a state with the rows already under their final name.
+  const std::string args = "sweep --max-order 80 --quiet --threads 1 --out " + d / "rows.csv" + " --summary " + d / "s.json";
+  REQUIRE(run(args + " --max-pairs 500").status == 3);  // stopped early: a state at 500 pairs
+  std::filesystem::copy_file(d / "rows.csv.resume", d / "saved.state");
+  std::filesystem::copy_file(d / "rows.csv.resume.values", d / "saved.values");
+  REQUIRE(run(args + " --resume").status == 0);
+  const std::string rows = read_text(d / "rows.csv"), summary = read_text(d / "s.json");
+  std::filesystem::copy_file(d / "saved.state", d / "rows.csv.resume");
+  std::filesystem::copy_file(d / "saved.values", d / "rows.csv.resume.values");
+  auto r = run(args + " --resume");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(without_last_line(read_text(d / "rows.csv")) == without_last_line(rows));
+  CHECK(without_seconds(read_text(d / "s.json")) == without_seconds(summary));
+  CHECK_FALSE(path_exists(d / "rows.csv.part"));
+  CHECK_FALSE(path_exists(d / "rows.csv.resume"));
+}
+
+TEST_CASE("sweep CLI: a full disk gives one clear line and no truncated output file", "[cli][sweep]") {
+  if (!cli_available()) return;
+  temp_dir d("test_sweep_cli");
+  // Every file the command writes is limited to 8000 bytes (RLIMIT_FSIZE: writes beyond fail
+  // with EFBIG, as they fail with ENOSPC on a full disk). The rows of order <= 60 take ~40 kB.
+  auto check_failed = [&](const std::string& args, const std::string& path) {
+    const int pid = gyrores::test::cli_spawn(args, d / "stdout", d / "stderr", 8000);
+    const int status = gyrores::test::cli_wait(pid);
+    const std::string err = read_text(d / "stderr");
+    INFO(args << "\nstderr: " << err);
+    CHECK(status == 2);
+    CHECK(read_text(d / "stdout").empty());
+    CHECK(std::count(err.begin(), err.end(), '\n') == 1);
+    CHECK(err.find("cannot write '" + path) != std::string::npos);
+    CHECK(err.find("File too large") != std::string::npos);
+    CHECK_FALSE(path_exists(path));
+  };
+  // The rows file: written as rows.csv.part, renamed only when complete.
+  check_failed("sweep --max-order 60 --quiet --out " + d / "rows.csv" + " --summary " + d / "s.json", d / "rows.csv");
+  CHECK_FALSE(path_exists(d / "s.json"));
+  // Whole files replaced atomically (temp file, fsync, rename): the JSON summary of a sweep
+  // (~5 kB) fits, a certificate at 5000 digits (~60 kB) does not.
+  check_failed("certify 6 5 --digits 5000 --out " + d / "c.json", d / "c.json");
+  // Nothing else is left behind: no temp file, no summary, and no resume state (a stream that
+  // failed a write is never checkpointed, io/files.hpp); the rows' part stays, as after a kill.
+  CHECK(names_in(d) == std::vector<std::string>{"rows.csv.part", "stderr", "stdout"});
 }
 
 TEST_CASE("sweep CLI: bad input exits 2 with one line on stderr", "[cli][sweep]") {

@@ -166,7 +166,9 @@ certificate read(const std::string& text) {
   const std::size_t max_len = std::size_t(c.digits) + 60;
   c.u_star = claim_field(j["u_star"], "u_star", max_len);
   const auto& claims = j["claims"];
-  if (!claims.is_object() || claims.size() != 3) throw malformed("claims must hold r_res, theta_first, t_first");
+  if (!claims.is_object() || claims.size() != 3 || !claims.contains("r_res") || !claims.contains("theta_first") ||
+      !claims.contains("t_first"))
+    throw malformed("claims must hold r_res, theta_first, t_first");
   c.r_res = claim_field(claims.at("r_res"), "r_res", max_len);
   c.theta_first = claim_field(claims.at("theta_first"), "theta_first", max_len);
   c.t_first = claim_field(claims.at("t_first"), "t_first", max_len);

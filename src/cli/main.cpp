@@ -55,8 +55,12 @@ bool options::parsed() const { return app_->parsed(); }
 
 }  // namespace gyrores::cli
 
-int main(int argc, char** argv) {
-  using namespace gyrores::cli;
+namespace gyrores::cli {
+
+// The whole command line: parses argv and, when `execute`, runs the subcommand; returns the exit
+// status. main() is this with execute = true; the fuzz target tests/fuzz/fuzz_cli_args.cpp
+// calls it in-process with execute = false (parsing only: no file written, no long run).
+int run(int argc, char** argv, bool execute) {
   CLI::App app{"gyrores: certified analysis of energy exchange in gyroscopically coupled oscillators"};
   app.require_subcommand(1);
   std::map<std::string, command_runner> runners;
@@ -77,6 +81,7 @@ int main(int argc, char** argv) {
     std::cerr << "gyrores: error: " << msg << "\n";
     return exit_usage;
   }
+  if (!execute) return 0;
 
   try {
     for (auto* sub : app.get_subcommands()) {
@@ -98,3 +103,10 @@ int main(int argc, char** argv) {
     return exit_compute;
   }
 }
+
+}  // namespace gyrores::cli
+
+// GYRORES_CLI_NO_MAIN: the CLI's sources linked into another program (tests/fuzz/).
+#ifndef GYRORES_CLI_NO_MAIN
+int main(int argc, char** argv) { return gyrores::cli::run(argc, argv, true); }
+#endif

@@ -94,6 +94,9 @@ void append_file::write(std::string_view bytes) {
 
 void append_file::sync() {
   if (!f_) return;
+  // After a failed write (a full disk) the stream may have dropped buffered bytes that an
+  // earlier write() reported as written: nothing may be declared durable any more.
+  if (std::ferror(f_)) throw usage_error("cannot write '" + path_ + "': an earlier write failed");
   if (std::fflush(f_) != 0) fail("cannot write", path_, errno);
   if (::fsync(::fileno(f_)) != 0) fail("cannot sync", path_, errno);
 }

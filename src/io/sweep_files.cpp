@@ -63,8 +63,19 @@ sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_file
   if (cfg.max_order <= sweep_count_limit)
     total_ = sweep_shard_pairs(sweep_total_pairs(cfg.min_order, cfg.max_order), cfg.shard_index, cfg.shard_count);
   acc_.max_examples = cfg.max_examples;
-  if (files.resume) restore();
-  else start_fresh();
+  if (files.resume) {
+    // A state whose fields are missing or of the wrong type is bad input, like one that is not
+    // JSON (read_state): usage_error, not the JSON library's exception.
+    try {
+      restore();
+    } catch (const json::exception& e) {
+      throw usage_error("cannot resume: '" + state_ + "' is not a valid resume state: " + e.what());
+    } catch (const compute_error& e) {  // a real that does not parse (sweep/real_text)
+      throw usage_error("cannot resume: '" + state_ + "' is not a valid resume state: " + e.what());
+    }
+  } else {
+    start_fresh();
+  }
   done_ = start_;
   t0_ = std::chrono::steady_clock::now();
 }
@@ -87,12 +98,19 @@ void sweep_file_session::start_fresh() {
 // Continue from the last checkpoint: anything written after it is cut off and recomputed.
 void sweep_file_session::restore() {
   const json st = read_state(state_, run_files_);
+  // get<std::uint64_t> on a floating value (an integer beyond 64 bits) is undefined behaviour.
+  for (const char* k : {"done", "values_count", "rows_bytes"})
+    if (st.contains(k) && !st.at(k).is_number_unsigned())
+      throw usage_error("cannot resume: '" + state_ + "' has " + k + " = " + st.at(k).dump());
   start_ = st.at("done").get<std::uint64_t>();
   seconds_before_ = st.at("seconds").get<double>();
   acc_ = sweep_accumulator_from_json(st.at("summary"), cfg_.max_examples);
   restore_values(st.at("values_count").get<std::uint64_t>());
   if (!rows_) return;
   rows_bytes_ = st.at("rows_bytes").get<std::uint64_t>();
+  // A run stopped after renaming its finished rows file but before removing the state (the last
+  // two steps of finish_complete): the file is taken back, its end line cut below and rewritten.
+  if (!file_exists(rows_part_) && file_exists(files_.rows_path)) rename_file(files_.rows_path, rows_part_);
   truncate_file(rows_part_, rows_bytes_);
   rows_file_ = append_file(rows_part_, append_file::mode::append);
 }

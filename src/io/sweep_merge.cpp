@@ -17,6 +17,7 @@ std::string shard_text(std::int64_t i, std::int64_t n) { return std::to_string(i
 
 // The inputs share one configuration and one shard count, and cover 0..N-1 exactly once.
 void check_one_complete_set(const std::vector<sweep_input>& in, const json& ident, std::int64_t n) {
+  if (n < 1) throw usage_error("'" + in[0].path + "' names a shard count " + std::to_string(n) + " (must be >= 1)");
   std::set<std::int64_t> seen;
   for (auto& x : in) {
     if (sweep_run_identity(x.run) != ident)
@@ -25,6 +26,8 @@ void check_one_complete_set(const std::vector<sweep_input>& in, const json& iden
     if (shard_count(x) != n)
       throw usage_error("'" + x.path + "' is a shard of " + std::to_string(shard_count(x)) + ", the others of " +
                         std::to_string(n));
+    if (shard_index(x) < 0 || shard_index(x) >= n)
+      throw usage_error("'" + x.path + "' names shard " + shard_text(shard_index(x), n) + ", outside 0.." + std::to_string(n - 1));
     if (!seen.insert(shard_index(x)).second) throw usage_error("shard " + shard_text(shard_index(x), n) + " given twice");
   }
   for (std::int64_t i = 0; i < n; ++i)
@@ -34,8 +37,12 @@ void check_one_complete_set(const std::vector<sweep_input>& in, const json& iden
 // Each input holds exactly its shard's share of the pairs (counted when max_order <= sweep_count_limit).
 void check_shares(const std::vector<sweep_input>& in, const json& ident, std::int64_t n) {
   const std::int64_t max_order = ident.at("max_order").get<std::int64_t>();
+  const std::int64_t min_order = ident.at("min_order").get<std::int64_t>();
+  if (min_order < 3 || max_order < min_order)
+    throw usage_error("the shard outputs name orders " + std::to_string(min_order) + ".." + std::to_string(max_order) +
+                      " (need 3 <= min_order <= max_order)");
   if (max_order > sweep_count_limit) return;
-  const std::uint64_t total = sweep_total_pairs(ident.at("min_order").get<std::int64_t>(), max_order);
+  const std::uint64_t total = sweep_total_pairs(min_order, max_order);
   for (auto& x : in) {
     const std::uint64_t share = sweep_shard_pairs(total, shard_index(x), n);
     if (x.acc.pairs != share)
@@ -44,23 +51,8 @@ void check_shares(const std::vector<sweep_input>& in, const json& ident, std::in
   }
 }
 
-}  // namespace
-
-sweep_input sweep_read_output(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw usage_error("cannot read '" + path + "'");
-  std::string first;
-  std::getline(in, first);
-  in.close();
-  if (first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos)
-    return sweep_read_rows(path);
-  return sweep_read_summary(path);
-}
-
-json sweep_merge(const std::vector<std::string>& paths) {
-  if (paths.empty()) throw usage_error("merge needs at least one file");
-  std::vector<sweep_input> in;
-  for (auto& p : paths) in.push_back(sweep_read_output(p));
+// The merge itself: the inputs as read, checked to belong together.
+json merge_inputs(const std::vector<sweep_input>& in) {
   const json ident = sweep_run_identity(in[0].run);
   const std::int64_t n = shard_count(in[0]);
   check_one_complete_set(in, ident, n);
@@ -78,6 +70,38 @@ json sweep_merge(const std::vector<std::string>& paths) {
   run["complete"] = true;
   run["merged_shards"] = n;
   return sweep_summary_json(acc, run, seconds);
+}
+
+}  // namespace
+
+sweep_input sweep_read_output(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw usage_error("cannot read '" + path + "'");
+  std::string first;
+  std::getline(in, first);
+  in.close();
+  // A field missing or of the wrong type is bad input: usage_error naming the file, not the JSON
+  // library's exception (nor compute_error, exit 3).
+  try {
+    if (first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos)
+      return sweep_read_rows(path);
+    return sweep_read_summary(path);
+  } catch (const json::exception& e) {
+    throw usage_error("'" + path + "' is malformed: " + e.what());
+  } catch (const compute_error& e) {  // a real that does not parse (sweep/real_text): bad input here
+    throw usage_error("'" + path + "' is malformed: " + e.what());
+  }
+}
+
+json sweep_merge(const std::vector<std::string>& paths) {
+  if (paths.empty()) throw usage_error("merge needs at least one file");
+  std::vector<sweep_input> in;
+  for (auto& p : paths) in.push_back(sweep_read_output(p));
+  try {
+    return merge_inputs(in);
+  } catch (const json::exception& e) {
+    throw usage_error("the shard outputs are malformed: " + std::string(e.what()));
+  }
 }
 
 }  // namespace gyrores

@@ -178,22 +178,31 @@ json sweep_accumulator_json(const sweep_accumulator& a, sweep_check_set checks) 
   return j;
 }
 
+namespace {
+// A count read from a file. nlohmann's get<std::uint64_t> converts a floating value (which an
+// integer beyond 64 bits is parsed as) with undefined behaviour: such a count is refused.
+std::uint64_t count_from_json(const json& j) {
+  if (!j.is_number_unsigned()) throw usage_error("a count must be an integer in [0, 2^64), got " + j.dump());
+  return j.get<std::uint64_t>();
+}
+}  // namespace
+
 sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_examples) {
   sweep_accumulator a;
   a.max_examples = max_examples;
-  a.pairs = j.at("pairs").get<std::uint64_t>();
-  a.degenerate = j.at("degenerate").get<std::uint64_t>();
+  a.pairs = count_from_json(j.at("pairs"));
+  a.degenerate = count_from_json(j.at("degenerate"));
   for (int i = 0; i < sweep_check_count; ++i) {
     auto f = j.at("checks").find(sweep_check_name(i));
     if (f == j.at("checks").end()) continue;
-    a.checks[i].violations = f->at("violations").get<std::uint64_t>();
-    a.checks[i].checked = f->at("checked").get<std::uint64_t>();
+    a.checks[i].violations = count_from_json(f->at("violations"));
+    a.checks[i].checked = count_from_json(f->at("checked"));
     a.checks[i].examples = pairs_from_json(f->at("examples"));
   }
   a.asy_ratio_max = extreme_from_json(j.at("asy_ratio_max"));
   a.sharp_constant = extreme_from_json(j.at("sharp_constant"));
-  a.first_at_paper_node = j.at("first_at_paper_node").get<std::uint64_t>();
-  a.errors.violations = j.at("errors").at("count").get<std::uint64_t>();
+  a.first_at_paper_node = count_from_json(j.at("first_at_paper_node"));
+  a.errors.violations = count_from_json(j.at("errors").at("count"));
   a.errors.examples = pairs_from_json(j.at("errors").at("examples"));
   return a;
 }
@@ -257,7 +266,9 @@ std::vector<double> sweep_read_values(const std::string& path) {
   std::uint64_t n = 0;
   if (c.size() < 16 || c.compare(0, 8, "GYRVAL01") != 0) throw usage_error("'" + path + "' is not a gyrores values file");
   std::memcpy(&n, c.data() + 8, sizeof n);
-  if (c.size() != 16 + n * sizeof(double)) throw usage_error("'" + path + "' is truncated");
+  // n from the file is compared by division: 16 + n * 8 wraps around for n >= 2^61.
+  if ((c.size() - 16) % sizeof(double) != 0 || n != (c.size() - 16) / sizeof(double))
+    throw usage_error("'" + path + "' is truncated");
   std::vector<double> v(n);
   std::memcpy(v.data(), c.data() + 16, n * sizeof(double));
   return v;

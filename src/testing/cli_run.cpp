@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -34,10 +35,17 @@ cli_result cli_run(const std::string& args, const std::string& env) {
   return r;
 }
 
-int cli_spawn(const std::string& args, const std::string& out_file, const std::string& err_file) {
+int cli_spawn(const std::string& args, const std::string& out_file, const std::string& err_file,
+              std::uint64_t max_file_bytes) {
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error("cli_spawn: fork failed");
   if (pid == 0) {
+    if (max_file_bytes > 0) {
+      // An ignored signal stays ignored across exec: the write fails with EFBIG instead.
+      ::signal(SIGXFSZ, SIG_IGN);
+      const rlimit lim{rlim_t(max_file_bytes), rlim_t(max_file_bytes)};
+      if (::setrlimit(RLIMIT_FSIZE, &lim) != 0) ::_exit(127);
+    }
     const int in = ::open("/dev/null", O_RDONLY);
     const int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

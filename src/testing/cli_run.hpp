@@ -3,6 +3,7 @@
 // GYRORES_CLI_PATH is set by tests/CMakeLists.txt for the tests that drive the CLI; it is empty
 // when the CLI is not built, and those checks are skipped (cli_available()).
 #pragma once
+#include <cstdint>
 #include <string>
 
 #ifndef GYRORES_CLI_PATH
@@ -23,8 +24,11 @@ inline bool cli_available() { return !cli_path().empty(); }
 cli_result cli_run(const std::string& args, const std::string& env = "");
 
 // Starts `<cli> args` in the background (stdout and stderr to the given files, stdin closed)
-// and returns its process id, for tests that signal a running command.
-int cli_spawn(const std::string& args, const std::string& out_file, const std::string& err_file);
+// and returns its process id, for tests that signal a running command. max_file_bytes > 0
+// limits the size of every file the command writes (RLIMIT_FSIZE, with SIGXFSZ ignored so that
+// a write beyond it fails with EFBIG as on a full disk; the two output files count too).
+int cli_spawn(const std::string& args, const std::string& out_file, const std::string& err_file,
+              std::uint64_t max_file_bytes = 0);
 // Waits for a spawned process; returns its exit status, or 128 + signal if a signal ended it.
 int cli_wait(int pid);
 

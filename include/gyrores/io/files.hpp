@@ -37,6 +37,7 @@ void remove_file(const std::string& path) noexcept;
 
 // An output file written in pieces: created (or truncated) or opened for appending; sync()
 // makes everything written so far durable (fflush + fsync), which is what a checkpoint needs.
+// Once a write() has failed, sync() and close() fail too.
 class append_file {
  public:
   enum class mode { create, append };
