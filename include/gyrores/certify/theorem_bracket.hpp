@@ -7,7 +7,7 @@
 //  1. u* by Newton on f(u) = tan(mu - x u) - x tan u, whose root in (0, pi/2) is the root of
 //     H(u) = mu (below). Near a centre c every tangent comes from tan c, tan(mu - x c) and the
 //     addition formula tan(c + d) = (tan c + tan d)/(1 - tan c tan d), tan d = d + d^3/3 + r:
-//     two MPFR tangents per centre, the centres on a ladder of precisions (each level at most 4
+//     two tangents per centre (MPFR on the way, Arb balls at the last), the centres on a ladder of precisions (each level at most 4
 //     times the accuracy of its centre, so |d|^5 is below it).
 //  2. A bracket [lo, hi] proved: H(lo) < mu < H(hi). For 0 < u < pi/2 the angle w = mu - x u
 //     lies in (-pi/2, pi/2) (mu = pi m/(2a) <= pi/3, x u < pi/2) where tan increases, so

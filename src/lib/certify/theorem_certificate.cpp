@@ -1,6 +1,6 @@
 // The producer of lattice-theorem certificates (certify/theorem_certificate.hpp). At a working
 // precision of `bits` (doubled until every claim has the digits asked for): u* and the proof of
-// a decimal bracket of it by certify/theorem_bracket.hpp (tangents from two MPFR calls and the
+// a decimal bracket of it by certify/theorem_bracket.hpp (tangents from two Arb balls and the
 // addition formula, no arctangent), r_res over tan of the bracket, theta_first =
 // 2 (k pi + sign(m) u*)/a and t_first = sqrt(tau sigma) theta_first in MPFI.
 #include <gyrores/certify/theorem_certificate.hpp>
