@@ -8,10 +8,12 @@
 // MPFR's mpfr_sin and mpfr_cos bit for bit. Otherwise Arb runs once more with the missing bits
 // added, and if still undecided, MPFR's correctly rounded mpfr_sin_cos is used.
 #include <gyrores/core/real.hpp>
+#include <gyrores/core/thread_caches.hpp>
 
 #include <algorithm>
 
 #include <arb.h>
+#include <flint.h>
 
 namespace gyrores {
 
@@ -79,6 +81,11 @@ sin_cos_pair<mpfr_real> real_sin_cos(const mpfr_real& x) {
   }
   mpfr_sin_cos(s, c, xv, MPFR_RNDN);  // zero, NaN, infinities, or Arb undecided twice
   return out;
+}
+
+void release_thread_caches() {
+  mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
+  flint_cleanup();
 }
 
 }  // namespace gyrores

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <thread>
 
+#include <gyrores/core/thread_caches.hpp>
 #include <gyrores/model/enumerate.hpp>
 
 namespace gyrores {
@@ -208,6 +209,7 @@ void block_pipeline::worker() {
     }
     cv_done_.notify_all();
   }
+  release_thread_caches();  // the certified checks and MPFR rows use MPFR and Arb on this thread
   std::lock_guard<std::mutex> lk(mtx_);
   --active_;
   cv_done_.notify_all();
