@@ -186,32 +186,37 @@ bool theorem_centre_of(theorem_centre& z, const constants& K, const resonant_pai
   return root_ladder(z.u, z.c, z.tc, z.wc, K, acc);
 }
 
-bool prove_theorem_bracket(const constants& K, const theorem_centre& z, const iv& lo, const iv& hi, iv& T) {
-  const mpfr_prec_t bits = K.prec;
-  iv d(bits), e(bits), tu(bits), tw(bits), half_pi(bits);
-  mpfi_div_ui(half_pi, K.pi, 2);
-  if (mpfr_sgn(lo.left()) <= 0 || mpfr_cmp(hi.right(), half_pi.left()) >= 0) return false;
-  fr dmax(bits);
-  shift_scratch sc(bits);
-  // x tan lo < tan(mu - x lo): the upper bound of the left below the lower bound of the right.
-  mpfi_sub_fr(d, lo, z.c);
+namespace {
+
+// tan u and tan(mu - x u) over the interval U (within 2^-10 of the centre; false otherwise), by
+// the addition formula about the centre.
+bool bracket_end(const constants& K, const theorem_centre& z, const iv& U, shift_scratch& sc, iv& tu, iv& tw) {
+  iv d(K.prec), e(K.prec);
+  fr dmax(K.prec);
+  mpfi_sub_fr(d, U, z.c);
   mpfi_mag(dmax, d);
   if (mpfr_cmp_d(dmax, 0x1p-10) > 0) return false;
   tan_shift(tu, z.tc, d, sc);
   mpfi_mul(e, K.x, d);
   mpfi_neg(e, e);
   tan_shift(tw, z.wc, e, sc);
+  return true;
+}
+
+}  // namespace
+
+bool prove_theorem_bracket(const constants& K, const theorem_centre& z, const iv& lo, const iv& hi, iv& T) {
+  const mpfr_prec_t bits = K.prec;
+  iv tu(bits), tw(bits), half_pi(bits);
+  mpfi_div_ui(half_pi, K.pi, 2);
+  if (mpfr_sgn(lo.left()) <= 0 || mpfr_cmp(hi.right(), half_pi.left()) >= 0) return false;
+  shift_scratch sc(bits);
+  // x tan lo < tan(mu - x lo) and x tan hi > tan(mu - x hi), each side bounded the safe way.
+  if (!bracket_end(K, z, lo, sc, tu, tw)) return false;
   mpfi_set(T, tu);
   mpfi_mul(tu, tu, K.x);
   if (!(mpfr_cmp(tu.right(), tw.left()) < 0)) return false;
-  // x tan hi > tan(mu - x hi).
-  mpfi_sub_fr(d, hi, z.c);
-  mpfi_mag(dmax, d);
-  if (mpfr_cmp_d(dmax, 0x1p-10) > 0) return false;
-  tan_shift(tu, z.tc, d, sc);
-  mpfi_mul(e, K.x, d);
-  mpfi_neg(e, e);
-  tan_shift(tw, z.wc, e, sc);
+  if (!bracket_end(K, z, hi, sc, tu, tw)) return false;
   mpfi_put(T, tu);
   mpfi_mul(tu, tu, K.x);
   return mpfr_cmp(tu.left(), tw.right()) > 0;
