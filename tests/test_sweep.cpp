@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
+#include <gyrores/io/sweep_values_file.hpp>
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/sweep/engine.hpp>
 
@@ -532,13 +534,17 @@ TEST_CASE("sweep: malformed values files, states and shard outputs are usage err
   const std::uint64_t huge = std::uint64_t(1) << 61;
   header.append(reinterpret_cast<const char*>(&huge), sizeof huge);
   write_file_atomically(d / "v.values", header);
-  CHECK_THROWS_AS(sweep_read_values(d / "v.values"), usage_error);
+  CHECK_THROWS_AS(sweep_read_values_file(d / "v.values"), usage_error);
   std::string one = header.substr(0, 8);
   const std::uint64_t n1 = 1;
   one.append(reinterpret_cast<const char*>(&n1), sizeof n1);
   one.append(8, '\0');
   write_file_atomically(d / "one.values", one);
-  CHECK(sweep_read_values(d / "one.values") == std::vector<double>{0.0});
+  const sweep_values one_value = sweep_read_values_file(d / "one.values");
+  CHECK(one_value.size() == 1);
+  std::vector<double> got;
+  one_value.replay([&](const double* v, std::size_t n) { got.insert(got.end(), v, v + n); });
+  CHECK(got == std::vector<double>{0.0});
 }
 
 TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not a JSON exception", "[sweep]") {
@@ -595,4 +601,124 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   csv.replace(field + 1, 1, "z");
   write_file_atomically(d / "bad.csv", csv);
   CHECK_THROWS_AS(sweep_merge({d / "bad.csv"}), usage_error);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Quantiles in bounded memory (sweep/values.hpp): radix selection must give sorted[rank] exactly.
+
+namespace {
+
+// Values that make radix selection work: ties, one binade, both signs, zeros of both signs,
+// subnormals, infinities.
+std::vector<double> selection_data(std::mt19937_64& rng, int kind, std::size_t n) {
+  std::vector<double> v(n);
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  for (auto& x : v) {
+    switch (kind) {
+      case 0: x = u(rng); break;
+      case 1: x = double(rng() % 7) - 3; break;                                   // heavy ties, -0 absent
+      case 2: x = std::nextafter(1.0, 2.0 + double(rng() % 50)) + 1e-15 * double(rng() % 1000); break;  // one binade
+      case 3: {
+        const double special[] = {0.0, -0.0, 4.9e-324, -4.9e-324, 2.2e-308, INFINITY, -INFINITY, 1.0, -1.0};
+        x = rng() % 2 ? special[rng() % 9] : u(rng);
+        break;
+      }
+      default: x = std::ldexp(1.0 + double(rng() % 3), int(rng() % 5)); break;  // few distinct values
+    }
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("sweep: value keys order doubles as < does", "[sweep]") {
+  std::mt19937_64 rng(7);
+  const auto v = selection_data(rng, 3, 4000);
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    const double a = v[i - 1], b = v[i];
+    CHECK(sweep_value_of_key(sweep_value_key(a)) == a);
+    if (a < b) CHECK(sweep_value_key(a) < sweep_value_key(b));
+    if (b < a) CHECK(sweep_value_key(b) < sweep_value_key(a));
+  }
+  CHECK(sweep_value_key(-0.0) < sweep_value_key(0.0));  // apart: sweep_values stores +0
+}
+
+TEST_CASE("sweep: order statistics by radix selection equal those of a sort", "[sweep]") {
+  std::mt19937_64 rng(11);
+  const sweep_selection_options options[] = {{20, 1u << 23}, {1, 1}, {3, 7}, {8, 100}, {12, 2}, {16, 0}, {22, 1u << 10}};
+  for (int kind = 0; kind < 5; ++kind)
+    for (std::size_t n : {1, 2, 3, 50, 1000, 20000}) {
+      const auto data = selection_data(rng, kind, n);
+      // The values in three pieces: two sources and memory, as a sweep read back from files has.
+      sweep_values vals;
+      const std::size_t c1 = n / 3, c2 = n / 2;
+      auto piece = [&](std::size_t lo, std::size_t hi) {
+        return [&data, lo, hi](const sweep_value_sink& s) {
+          for (std::size_t i = lo; i < hi; i += 97) s(data.data() + i, std::min<std::size_t>(97, hi - i));
+        };
+      };
+      vals.add_source(piece(0, c1), c1);
+      vals.add_source(piece(c1, c2), c2 - c1);
+      for (std::size_t i = c2; i < n; ++i) vals.add(data[i]);
+      REQUIRE(vals.size() == n);
+      std::vector<double> sorted = data;
+      for (auto& x : sorted)
+        if (x == 0) x = 0.0;
+      std::sort(sorted.begin(), sorted.end());
+      std::vector<std::uint64_t> ranks = {0, n - 1, n / 2, (n - 1) / 100, 99 * (n - 1) / 100};
+      for (int i = 0; i < 5; ++i) ranks.push_back(rng() % n);
+      for (const auto& opt : options) {
+        INFO("kind " << kind << ", n " << n << ", bits " << opt.bits << ", collect " << opt.collect_limit);
+        const auto got =
+            sweep_order_statistics([&](const sweep_value_sink& s) { vals.replay(s); }, n, ranks, opt);
+        for (std::size_t i = 0; i < ranks.size(); ++i) {
+          INFO("rank " << ranks[i]);
+          CHECK(sweep_value_key(got[i]) == sweep_value_key(sorted[ranks[i]]));  // -0 and NaN-safe equality
+        }
+      }
+    }
+  // A replay that gives a different number of values than announced is caught.
+  sweep_values v;
+  v.add(1);
+  CHECK_THROWS_AS(sweep_order_statistics([&](const sweep_value_sink& s) { v.replay(s); }, 2, {0}), compute_error);
+  CHECK_THROWS_AS(sweep_order_statistics([&](const sweep_value_sink& s) { v.replay(s); }, 1, {1}), std::invalid_argument);
+}
+
+TEST_CASE("sweep: values spilled to the state's file give the in-memory summary, through resumes and shards", "[sweep]") {
+  temp_dir d("test_sweep");
+  const sweep_config c = config(120);
+  sweep_files mem;
+  mem.summary_path = d / "mem.json";
+  REQUIRE(sweep_to_files<double>(c, mem, engine(2)).complete);
+  const json want = sweep_summary_core(read_json(mem.summary_path));
+  REQUIRE(want.at("t_first_over_proxy").at("count").get<std::uint64_t>() > 1500);
+
+  for (std::size_t keep : {std::size_t(1), std::size_t(37), std::size_t(1000)}) {
+    INFO("values in memory " << keep);
+    sweep_files f;
+    f.summary_path = d / ("spill" + std::to_string(keep) + ".json");
+    f.values_in_memory = keep;
+    auto e = engine(2, 16);
+    e.max_pairs = 700;  // stop, resume, stop, resume: the file is cut back and appended to
+    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    f.resume = true;
+    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    e.max_pairs = 0;
+    REQUIRE(sweep_to_files<double>(c, f, e).complete);
+    CHECK(sweep_summary_core(read_json(f.summary_path)) == want);
+    CHECK_FALSE(path_exists(sweep_default_state_path(f) + ".values"));
+
+    std::vector<std::string> shards;
+    for (int i = 0; i < 3; ++i) {
+      sweep_config sc = c;
+      sc.shard_index = i;
+      sc.shard_count = 3;
+      sweep_files g;
+      g.summary_path = d / ("shard" + std::to_string(keep) + "_" + std::to_string(i) + ".json");
+      g.values_in_memory = keep;
+      REQUIRE(sweep_to_files<double>(sc, g, engine(1)).complete);
+      shards.push_back(g.summary_path);
+    }
+    CHECK(sweep_summary_core(sweep_merge(shards)) == want);
+  }
 }

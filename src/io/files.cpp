@@ -5,11 +5,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstddef>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 
 #include <gyrores/core/error.hpp>
 
@@ -31,12 +34,28 @@ std::string read_file(const std::string& path) {
 bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
 
 void write_file_atomically(const std::string& path, std::string_view content) {
+  write_file_atomically(path, [&](const byte_writer& w) { w(content); });
+}
+
+void write_file_atomically(const std::string& path, const std::function<void(const byte_writer&)>& fill) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) fail("cannot write", path, errno);
-  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
-  ok = ok && std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
-  int err = errno;
+  int err = 0;
+  try {
+    fill([&](std::string_view bytes) {
+      if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) {
+        err = errno;
+        throw usage_error("cannot write '" + path + "': " + std::strerror(err));
+      }
+    });
+  } catch (...) {
+    std::fclose(f);
+    std::remove(tmp.c_str());
+    throw;
+  }
+  bool ok = std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
+  err = errno;
   ok = (std::fclose(f) == 0) && ok;
   if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
     ok = false;
@@ -45,6 +64,34 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   if (!ok) {
     std::remove(tmp.c_str());
     fail("cannot write", path, err);
+  }
+}
+
+std::uint64_t file_size(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) fail("cannot read", path, errno);
+  return std::uint64_t(st.st_size);
+}
+
+void read_file_range(const std::string& path, std::uint64_t offset, std::uint64_t length, std::size_t piece,
+                     const std::function<void(const void*, std::size_t)>& fn) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) fail("cannot read", path, errno);
+  struct closer {
+    std::FILE* f;
+    ~closer() { std::fclose(f); }
+  } close_at_end{f};
+  if (::fseeko(f, off_t(offset), SEEK_SET) != 0) fail("cannot read", path, errno);
+  if (piece == 0) piece = 1;
+  std::unique_ptr<std::max_align_t[]> buf(new std::max_align_t[(piece + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t)]);
+  while (length > 0) {
+    const std::size_t n = std::size_t(std::min<std::uint64_t>(length, piece));
+    if (std::fread(buf.get(), 1, n, f) != n) {
+      if (std::ferror(f)) fail("cannot read", path, errno);
+      throw usage_error("cannot read '" + path + "': shorter than expected");
+    }
+    fn(buf.get(), n);
+    length -= n;
   }
 }
 

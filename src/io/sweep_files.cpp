@@ -1,10 +1,11 @@
 // include/gyrores/io/sweep_files.hpp: the rows file, checkpoints, the resume state, the end.
 #include <gyrores/io/sweep_files.hpp>
 
-#include <cstring>
+#include <string_view>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/sweep_summary.hpp>
+#include <gyrores/io/sweep_values_file.hpp>
 
 namespace gyrores {
 
@@ -22,10 +23,6 @@ namespace {
 
 const char* const state_format = "gyrores-sweep-state";
 
-// The bytes of doubles, as the values files hold them (host byte order).
-std::string_view double_bytes(const double* v, std::size_t n) {
-  return std::string_view(reinterpret_cast<const char*>(v), n * sizeof(double));
-}
 
 // The state file's content, parsed and checked against this sweep's run description.
 json read_state(const std::string& state, const json& run_files) {
@@ -87,7 +84,7 @@ double sweep_file_session::elapsed() const {
 // A new sweep: an old state goes, the rows file starts with its header.
 void sweep_file_session::start_fresh() {
   remove_file(state_);
-  remove_file(values_);
+  remove_file(values_);  // created when values first go there (short runs need no file)
   if (!rows_) return;
   rows_file_ = append_file(rows_part_, append_file::mode::create);
   const std::string h = sweep_rows_header(run_, files_.rows_format);
@@ -118,19 +115,29 @@ void sweep_file_session::restore() {
 // The values file may hold more than recorded (a checkpoint interrupted before the state was
 // replaced): keep the recorded prefix.
 void sweep_file_session::restore_values(std::uint64_t count) {
-  const std::string bytes = read_file(values_);
-  if (bytes.size() / sizeof(double) < count)
-    throw usage_error("cannot resume: '" + values_ + "' is shorter than its state records");
-  acc_.t_ratios.resize(count);
-  std::memcpy(acc_.t_ratios.data(), bytes.data(), count * sizeof(double));
+  if (!file_exists(values_) || file_size(values_) / sizeof(double) < count)
+    throw usage_error("cannot resume: '" + values_ + "' is missing or shorter than its state records");
   truncate_file(values_, count * sizeof(double));
   values_written_ = count;
+  values_file_ = append_file(values_, append_file::mode::append);
+}
+
+// The values in memory go to the values file (made durable by the next checkpoint).
+void sweep_file_session::spill_values() {
+  if (!values_file_.is_open()) values_file_ = append_file(values_, append_file::mode::append);
+  const auto& v = acc_.t_ratios.memory();
+  values_file_.write(std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double)));
+  values_written_ += v.size();
+  acc_.t_ratios.clear_memory();
 }
 
 void sweep_file_session::on_block(const sweep_block& b) {
   if (rows_ && !b.rows.empty()) rows_file_.write(b.rows);
   rows_bytes_ += b.rows.size();
   acc_.merge(b.summary);
+  // A sweep to order 10^5 has 10 GB of values: they go to the values file as they pile up, and
+  // the summary's quantiles read them back from there (sweep/values.hpp).
+  if (acc_.t_ratios.memory().size() >= files_.values_in_memory) spill_values();
   done_ = b.first + b.count;
   if (b.count) last_ = b.last;
   if (progress_) progress_({done_, total_, elapsed(), done_ - start_});
@@ -139,11 +146,8 @@ void sweep_file_session::on_block(const sweep_block& b) {
 
 void sweep_file_session::checkpoint() {
   if (rows_) rows_file_.sync();
-  {
-    append_file vf(values_, append_file::mode::append);
-    vf.write(double_bytes(acc_.t_ratios.data() + values_written_, acc_.t_ratios.size() - values_written_));
-    vf.close();
-  }
+  spill_values();
+  values_file_.sync();
   json st;
   st["format"] = state_format;
   st["version"] = 1;
@@ -151,11 +155,10 @@ void sweep_file_session::checkpoint() {
   st["done"] = done_;
   st["next_after"] = {last_.first, last_.second};
   st["rows_bytes"] = rows_bytes_;
-  st["values_count"] = acc_.t_ratios.size();
+  st["values_count"] = values_written_;
   st["seconds"] = seconds_before_ + elapsed();
   st["summary"] = sweep_accumulator_json(acc_, sweep_all_checks);
   write_file_atomically(state_, st.dump() + "\n");
-  values_written_ = acc_.t_ratios.size();
   last_checkpoint_ = elapsed();
 }
 
@@ -174,6 +177,11 @@ sweep_report sweep_file_session::finish(const sweep_outcome& out) {
 // The summary (and a shard's values file), the rows' end line and final name; the state goes.
 void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
   const double seconds = seconds_before_ + elapsed();
+  if (values_file_.is_open()) {  // else every value is still in memory
+    spill_values();
+    values_file_.close();
+    acc_.t_ratios.add_source(sweep_values_file_source(values_, 0, values_written_), values_written_);
+  }
   json srun = run_;
   srun["threads"] = threads;
   srun["complete"] = true;
@@ -181,7 +189,7 @@ void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
   if (!files_.summary_path.empty()) {
     if (cfg_.shard_count > 1) {
       const std::string vpath = files_.summary_path + ".values";
-      sweep_write_values_atomic(vpath, acc_.t_ratios);
+      sweep_write_values_file(vpath, acc_.t_ratios);
       auto slash = vpath.rfind('/');
       summary["values_file"] = slash == std::string::npos ? vpath : vpath.substr(slash + 1);
     }

@@ -8,6 +8,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/inscribed/lattice_theorem.hpp>
 #include <gyrores/io/files.hpp>
+#include <gyrores/io/sweep_values_file.hpp>
 
 namespace gyrores {
 namespace {
@@ -43,7 +44,7 @@ sweep_extreme extreme_from_json(const json& j) {
   return e;
 }
 
-json quantiles_json(sweep_accumulator& a) {
+json quantiles_json(const sweep_accumulator& a) {
   const auto q = a.quantiles();
   json tq;
   tq["count"] = q.count;
@@ -207,7 +208,7 @@ sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_exa
   return a;
 }
 
-json sweep_summary_json(sweep_accumulator& a, const json& run, double seconds) {
+json sweep_summary_json(const sweep_accumulator& a, const json& run, double seconds) {
   json acc = sweep_accumulator_json(a, sweep_checks_of_run(run));
   json j;
   j["format"] = "gyrores-sweep-summary";
@@ -253,27 +254,6 @@ std::string sweep_summary_text(const json& s) {
   return os.str();
 }
 
-void sweep_write_values_atomic(const std::string& path, const std::vector<double>& v) {
-  std::string content = "GYRVAL01";
-  const std::uint64_t n = v.size();
-  content.append(reinterpret_cast<const char*>(&n), sizeof n);
-  content.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
-  write_file_atomically(path, content);
-}
-
-std::vector<double> sweep_read_values(const std::string& path) {
-  const std::string c = read_file(path);
-  std::uint64_t n = 0;
-  if (c.size() < 16 || c.compare(0, 8, "GYRVAL01") != 0) throw usage_error("'" + path + "' is not a gyrores values file");
-  std::memcpy(&n, c.data() + 8, sizeof n);
-  // n from the file is compared by division: 16 + n * 8 wraps around for n >= 2^61.
-  if ((c.size() - 16) % sizeof(double) != 0 || n != (c.size() - 16) / sizeof(double))
-    throw usage_error("'" + path + "' is truncated");
-  std::vector<double> v(n);
-  std::memcpy(v.data(), c.data() + 16, n * sizeof(double));
-  return v;
-}
-
 sweep_input sweep_read_summary(const std::string& path) {
   sweep_input r;
   r.path = path;
@@ -295,7 +275,7 @@ sweep_input sweep_read_summary(const std::string& path) {
     auto slash = path.rfind('/');
     if (slash != std::string::npos) vf = path.substr(0, slash + 1) + vf;
   }
-  r.acc.t_ratios = sweep_read_values(vf);
+  r.acc.t_ratios = sweep_read_values_file(vf);
   return r;
 }
 

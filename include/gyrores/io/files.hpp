@@ -7,7 +7,9 @@
 // failed write never leaves a half-written file under the final name.
 #pragma once
 #include <cstdint>
+#include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -22,6 +24,20 @@ bool file_exists(const std::string& path);
 // (path + ".tmp." + pid), is flushed and fsync'ed, then renamed over `path`. On failure the
 // temporary file is removed and `path` is untouched.
 void write_file_atomically(const std::string& path, std::string_view content);
+
+// The same for content too large to hold: `fill` is given a function that appends bytes to the
+// temporary file. An exception from `fill` removes the temporary file and is rethrown.
+using byte_writer = std::function<void(std::string_view)>;
+void write_file_atomically(const std::string& path, const std::function<void(const byte_writer&)>& fill);
+
+// The size of a file in bytes.
+std::uint64_t file_size(const std::string& path);
+
+// Bytes [offset, offset + length) of a file, read in order in pieces of at most `piece` bytes;
+// each piece is passed to `fn` in one buffer (reused, aligned for any type). usage_error if the
+// file cannot be read or is shorter.
+void read_file_range(const std::string& path, std::uint64_t offset, std::uint64_t length, std::size_t piece,
+                     const std::function<void(const void* data, std::size_t bytes)>& fn);
 
 // Creates a directory and its parents (nothing to do if it exists).
 void ensure_directory(const std::string& dir);

@@ -4,6 +4,7 @@
 // (sweep rows, sweep summary, values file, resume state, atomicity).
 #pragma once
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -25,6 +26,9 @@ struct sweep_files {
   std::string state_path;    // empty: derived (sweep_default_state_path)
   bool resume = false;
   double checkpoint_seconds = 300;  // periodic checkpoints (0: only when stopping early)
+  // t_first/proxy values held in memory before they go to the state's values file (8 MB; the
+  // file is read back for the quantiles). Tests make it small.
+  std::size_t values_in_memory = std::size_t(1) << 20;
 };
 
 struct sweep_progress_info {
@@ -67,6 +71,7 @@ class sweep_file_session {
   void start_fresh();
   void restore();
   void restore_values(std::uint64_t count);
+  void spill_values();
   void finish_complete(unsigned threads, sweep_report& rep);
   double elapsed() const;
 
@@ -77,9 +82,10 @@ class sweep_file_session {
   std::string state_, values_, rows_part_;
   bool rows_;
   append_file rows_file_;
+  append_file values_file_;  // the state's values file: acc_'s values go there as they pile up
   sweep_accumulator acc_;
   std::uint64_t total_ = 0, start_ = 0, done_ = 0;
-  std::uint64_t values_written_ = 0;  // values already in the values file
+  std::uint64_t values_written_ = 0;  // values in the values file (acc_.t_ratios holds the rest)
   std::uint64_t rows_bytes_ = 0;      // bytes of rows_part holding whole, delivered blocks
   double seconds_before_ = 0, last_checkpoint_ = 0;
   sweep_pair_id last_{0, 0};

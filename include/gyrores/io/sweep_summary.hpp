@@ -1,10 +1,9 @@
 // The summary of a sweep as JSON (`--summary`, `--json`, `gyrores merge`) and as text, the
-// accumulator <-> JSON (summaries and resume states), and the binary values file of shard
-// summaries. Keys and the values file's layout: docs/formats.md (sweep summary, values file).
+// accumulator <-> JSON (summaries and resume states), and shard summaries read back with their
+// values files (io/sweep_values_file.hpp). Keys and the values file's layout: docs/formats.md (sweep summary, values file).
 #pragma once
 #include <cstddef>
 #include <string>
-#include <vector>
 
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/sweep_run.hpp>
@@ -18,18 +17,13 @@ json sweep_accumulator_json(const sweep_accumulator& a, sweep_check_set checks);
 // The inverse (t_ratios left empty); nlohmann's exceptions on missing keys.
 sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_examples);
 
-// The summary JSON of a finished sweep described by `run` (computes the quantiles: reorders
-// a.t_ratios). values_file is null; a shard run's driver sets it.
-json sweep_summary_json(sweep_accumulator& a, const json& run, double seconds);
+// The summary JSON of a finished sweep described by `run` (computes the quantiles: a few passes
+// over a.t_ratios). values_file is null; a shard run's driver sets it.
+json sweep_summary_json(const sweep_accumulator& a, const json& run, double seconds);
 // The parts of a summary that a merge must reproduce exactly (drops seconds, run, values_file).
 json sweep_summary_core(json summary);
 // The summary as `gyrores sweep` and `gyrores merge` print it.
 std::string sweep_summary_text(const json& summary);
-
-// The values file: "GYRVAL01", the count, the doubles (host byte order), written atomically.
-void sweep_write_values_atomic(const std::string& path, const std::vector<double>& v);
-// usage_error if the file cannot be read, is not a values file, or has the wrong length.
-std::vector<double> sweep_read_values(const std::string& path);
 
 // A complete shard summary with its values file, read back for a merge; usage_error if it is
 // not one (not JSON, not a summary, unfinished, or without values file).

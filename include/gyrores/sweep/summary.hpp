@@ -6,11 +6,12 @@
 // largest constant error a/x^2 with their pairs (ties: the earlier pair), the number of
 // non-degenerate pairs whose first minimiser is in the paper's lobe, and every value of
 // t_first/(pi/|n|) over the non-degenerate pairs (degenerate pairs have exactly delta/2 there,
-// by Thm. degenerate, and are left out). The values are kept exactly, one double each (1.5e7
-// pairs: ~90 MB), so the quantiles are exact order statistics: q-quantile = sorted[floor(q (n-1))]
-// (the median is the lower median). Accumulators merge exactly and in any grouping: counts add,
-// examples are re-sorted by enumeration order (order a, then sigma) and cut, extremes compare by
-// value then by enumeration order, values concatenate. Reals in the summary are doubles; with a
+// by Thm. degenerate, and are left out). The values are kept exactly, one double each, in memory
+// or (a long sweep: 10 GB at order 10^5) in files the io layer names (sweep/values.hpp), so the
+// quantiles are exact order statistics: q-quantile = sorted[floor(q (n-1))] (the median is the
+// lower median), found by radix selection in bounded memory. Accumulators merge exactly and in
+// any grouping: counts add, examples are re-sorted by enumeration order (order a, then sigma) and
+// cut, extremes compare by value then by enumeration order, values concatenate. Reals in the summary are doubles; with a
 // wider T each is first printed (sweep_real_text) and read back, the same path a merge of row
 // files takes, so single runs and merges agree bit for bit.
 #pragma once
@@ -25,6 +26,7 @@
 #include <gyrores/sweep/checks.hpp>
 #include <gyrores/sweep/evaluate.hpp>
 #include <gyrores/sweep/real_text.hpp>
+#include <gyrores/sweep/values.hpp>
 
 namespace gyrores {
 
@@ -115,13 +117,13 @@ struct sweep_accumulator {
   std::array<sweep_tally, sweep_check_count> checks{};
   sweep_tally errors;  // checked = 0; violations = failed pairs
   sweep_extreme asy_ratio_max, sharp_constant;
-  std::vector<double> t_ratios;  // t_first/(pi/|n|), non-degenerate pairs (order irrelevant)
+  sweep_values t_ratios;  // t_first/(pi/|n|), non-degenerate pairs (order irrelevant)
 
   void add(const sweep_record& r);
   // Exact merge; the result does not depend on the grouping or order of merges.
   void merge(const sweep_accumulator& o);
-  // Exact order statistics of t_ratios (reorders t_ratios; its order carries no meaning).
-  sweep_quantiles quantiles();
+  // Exact order statistics of t_ratios (a few passes over them when they are many).
+  sweep_quantiles quantiles(const sweep_selection_options& opt = {}) const;
 };
 
 }  // namespace gyrores

@@ -30,13 +30,9 @@ void merge_tally(sweep_tally& t, const sweep_tally& o, std::size_t k) {
   t.examples = std::move(all);
 }
 
-// The value at index floor(num/den * (n-1)) of the sorted v (v non-empty; reorders v).
-double order_statistic(std::vector<double>& v, std::uint64_t num, std::uint64_t den) {
-  const std::uint64_t n1 = v.size() - 1;
-  // floor(num/den * (n-1)) without overflow for n < 2^53
-  const std::uint64_t i = std::uint64_t((unsigned __int128)n1 * num / den);
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(i), v.end());
-  return v[i];
+// floor(num/den * (n-1)) without overflow for n < 2^63.
+std::uint64_t quantile_rank(std::uint64_t n, std::uint64_t num, std::uint64_t den) {
+  return std::uint64_t((unsigned __int128)(n - 1) * num / den);
 }
 
 }  // namespace
@@ -84,7 +80,7 @@ void sweep_accumulator::add(const sweep_record& r) {
     }
   }
   if (r.first_at_paper_node == 1) ++first_at_paper_node;
-  if (r.has_ratio) t_ratios.push_back(r.t_ratio);
+  if (r.has_ratio) t_ratios.add(r.t_ratio);
   if (r.has_asy) {
     asy_ratio_max.offer(r.asy_ratio, r.asy_ratio_text, id);
     sharp_constant.offer(r.asy_constant, r.asy_constant_text, id);
@@ -99,21 +95,29 @@ void sweep_accumulator::merge(const sweep_accumulator& o) {
   merge_tally(errors, o.errors, max_examples);
   asy_ratio_max.merge(o.asy_ratio_max);
   sharp_constant.merge(o.sharp_constant);
-  t_ratios.insert(t_ratios.end(), o.t_ratios.begin(), o.t_ratios.end());
+  t_ratios.merge(o.t_ratios);
 }
 
-sweep_quantiles sweep_accumulator::quantiles() {
+sweep_quantiles sweep_accumulator::quantiles(const sweep_selection_options& opt) const {
   sweep_quantiles q;
-  auto& v = t_ratios;
-  q.count = v.size();
-  if (v.empty()) return q;
-  q.min = *std::min_element(v.begin(), v.end());
-  q.max = *std::max_element(v.begin(), v.end());
-  q.p01 = order_statistic(v, 1, 100);
-  q.p10 = order_statistic(v, 10, 100);
-  q.median = order_statistic(v, 1, 2);
-  q.p90 = order_statistic(v, 90, 100);
-  q.p99 = order_statistic(v, 99, 100);
+  const std::uint64_t n = t_ratios.size();
+  q.count = n;
+  if (n == 0) return q;
+  const std::vector<std::uint64_t> ranks = {0,
+                                            quantile_rank(n, 1, 100),
+                                            quantile_rank(n, 10, 100),
+                                            quantile_rank(n, 1, 2),
+                                            quantile_rank(n, 90, 100),
+                                            quantile_rank(n, 99, 100),
+                                            n - 1};
+  const auto v = sweep_order_statistics([this](const sweep_value_sink& s) { t_ratios.replay(s); }, n, ranks, opt);
+  q.min = v[0];
+  q.p01 = v[1];
+  q.p10 = v[2];
+  q.median = v[3];
+  q.p90 = v[4];
+  q.p99 = v[5];
+  q.max = v[6];
   return q;
 }
 

@@ -1,0 +1,25 @@
+// The files holding a sweep's t_first/(pi/|n|) values (docs/formats.md, values file), read back
+// in pieces, never whole (10 GB at order 10^5):
+//  - raw: doubles in host byte order and nothing else: the resume state's STATE.values, to which
+//    a running sweep appends as its values pile up (sweep_files.hpp);
+//  - a shard summary's values file: "GYRVAL01", the count (uint64, host byte order), the doubles.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <gyrores/sweep/values.hpp>
+
+namespace gyrores {
+
+// Replays `count` doubles of `path` from byte `offset` (a usage_error at replay if the file is
+// shorter or unreadable by then).
+sweep_value_source sweep_values_file_source(const std::string& path, std::uint64_t offset, std::uint64_t count);
+
+// Writes every value of v as a values file (header, count, doubles), atomically.
+void sweep_write_values_file(const std::string& path, const sweep_values& v);
+
+// The values of a values file, as a source; usage_error if it is not one or its length
+// disagrees with its count.
+sweep_values sweep_read_values_file(const std::string& path);
+
+}  // namespace gyrores
