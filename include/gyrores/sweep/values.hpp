@@ -36,7 +36,7 @@ using sweep_value_source = std::function<void(const sweep_value_sink&)>;
 
 struct sweep_selection_options {
   unsigned bits = 20;                      // key bits resolved per pass (1..24: 2^bits counters)
-  std::uint64_t collect_limit = 1u << 23;  // candidates collected for nth_element at most
+  std::uint64_t collect_limit = 1u << 22;  // candidates (8 bytes each) collected for nth_element at most
 };
 
 // sorted[rank] for each rank (each < count), over the `count` values `replay` gives. Every pass
