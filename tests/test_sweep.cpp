@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -601,6 +602,46 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   csv.replace(field + 1, 1, "z");
   write_file_atomically(d / "bad.csv", csv);
   CHECK_THROWS_AS(sweep_merge({d / "bad.csv"}), usage_error);
+}
+
+TEST_CASE("sweep: integer fields of shard summaries beyond their type are usage errors naming the file", "[sweep]") {
+  // nlohmann's get<int64_t> converts a floating value (an integer beyond 64 bits parses as one)
+  // with undefined behaviour, and get<size_t> of a negative one wraps.
+  temp_dir d("test_sweep");
+  std::vector<std::string> shards;
+  for (int i = 0; i < 2; ++i) {
+    sweep_config c = config(40);
+    c.shard_index = i;
+    c.shard_count = 2;
+    sweep_files f;
+    f.summary_path = d / ("s" + std::to_string(i) + ".json");
+    REQUIRE(sweep_to_files<double>(c, f, engine(1)).complete);
+    shards.push_back(f.summary_path);
+  }
+  REQUIRE_NOTHROW(sweep_merge(shards));
+  const json good = read_json(shards[0]);
+  REQUIRE(good.at("checks").at("paper-node").at("examples").size() > 0);
+  const json huge = json::parse("1e30"), big = json::parse("222222222222222222222222222222"), neg = json(-1);
+  std::vector<std::pair<std::string, std::function<void(json&)>>> edits = {
+      {"example tau 1e30", [&](json& j) { j["checks"]["paper-node"]["examples"][0][0] = huge; }},
+      {"example sigma > 2^64", [&](json& j) { j["checks"]["paper-node"]["examples"][0][1] = big; }},
+      {"extreme pair", [&](json& j) { j["asy_ratio_max"]["pair"][0] = huge; }},
+      {"max_examples -1", [&](json& j) { j["run"]["max_examples"] = neg; }},
+      {"shard count 1e30", [&](json& j) { j["run"]["shard"][1] = huge; }},
+      {"max_order 2^64+", [&](json& j) { j["run"]["max_order"] = big; }},
+  };
+  for (auto& [what, edit] : edits) {
+    json bad = good;
+    edit(bad);
+    write_file_atomically(shards[0], bad.dump());
+    INFO(what);
+    try {
+      sweep_merge(shards);
+      FAIL("no error");
+    } catch (const usage_error& e) {
+      CHECK(std::string(e.what()).find("s0.json") != std::string::npos);
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

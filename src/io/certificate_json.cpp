@@ -99,9 +99,9 @@ certificate read_certificate(const nlohmann::json& j, const top_level_numbers& n
   c.format = j.at("format").get<std::string>();
   c.tau = read_integer(j, numbers, "tau");
   c.sigma = read_integer(j, numbers, "sigma");
-  c.digits = j.at("digits").get<unsigned>();
-  c.working_bits = j.at("working_bits").get<unsigned>();
-  c.cover_bits = j.at("cover_bits").get<unsigned>();
+  c.digits = json_to_unsigned(j.at("digits"), "digits");
+  c.working_bits = json_to_unsigned(j.at("working_bits"), "working_bits");
+  c.cover_bits = json_to_unsigned(j.at("cover_bits"), "cover_bits");
   c.degenerate = j.at("degenerate").get<bool>();
   c.global_minimality = j.at("global_minimality").get<bool>();
   c.global_minimality_note = j.value("global_minimality_note", "");
@@ -110,7 +110,7 @@ certificate read_certificate(const nlohmann::json& j, const top_level_numbers& n
   c.theta_first = read_claim(claims, "theta_first");
   c.t_first = read_claim(claims, "t_first");
   const auto& count = j.at("minimiser_count");
-  c.minimiser_count = count.is_null() ? 0 : count.get<std::size_t>();
+  c.minimiser_count = count.is_null() ? 0 : json_to_uint64(count, "minimiser_count");
   for (const auto& jo : j.at("obligations")) c.obligations.push_back(read_obligation(jo));
   return c;
 }

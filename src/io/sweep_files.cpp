@@ -67,6 +67,8 @@ sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_file
       restore();
     } catch (const json::exception& e) {
       throw usage_error("cannot resume: '" + state_ + "' is not a valid resume state: " + e.what());
+    } catch (const json_value_error& e) {
+      throw usage_error("cannot resume: '" + state_ + "' is not a valid resume state: " + e.what());
     } catch (const compute_error& e) {  // a real that does not parse (sweep/real_text)
       throw usage_error("cannot resume: '" + state_ + "' is not a valid resume state: " + e.what());
     }

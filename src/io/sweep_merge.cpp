@@ -11,9 +11,19 @@
 namespace gyrores {
 namespace {
 
-std::int64_t shard_index(const sweep_input& x) { return x.run.at("shard").at(0).get<std::int64_t>(); }
-std::int64_t shard_count(const sweep_input& x) { return x.run.at("shard").at(1).get<std::int64_t>(); }
+std::int64_t shard_index(const sweep_input& x) { return json_to_int64(x.run.at("shard").at(0), "the shard index"); }
+std::int64_t shard_count(const sweep_input& x) { return json_to_int64(x.run.at("shard").at(1), "the shard count"); }
 std::string shard_text(std::int64_t i, std::int64_t n) { return std::to_string(i) + "/" + std::to_string(n); }
+
+// The run's integers are integers of their type (the merge compares and counts with them).
+void check_run_integers(const json& run) {
+  json_to_int64(run.at("shard").at(0), "the shard index");
+  json_to_int64(run.at("shard").at(1), "the shard count");
+  json_to_int64(run.at("min_order"), "min_order");
+  json_to_int64(run.at("max_order"), "max_order");
+  json_to_int64(run.at("cross_check_max_order"), "cross_check_max_order");
+  json_to_uint64(run.at("max_examples"), "max_examples");
+}
 
 // The inputs share one configuration and one shard count, and cover 0..N-1 exactly once.
 void check_one_complete_set(const std::vector<sweep_input>& in, const json& ident, std::int64_t n) {
@@ -36,8 +46,8 @@ void check_one_complete_set(const std::vector<sweep_input>& in, const json& iden
 
 // Each input holds exactly its shard's share of the pairs (counted when max_order <= sweep_count_limit).
 void check_shares(const std::vector<sweep_input>& in, const json& ident, std::int64_t n) {
-  const std::int64_t max_order = ident.at("max_order").get<std::int64_t>();
-  const std::int64_t min_order = ident.at("min_order").get<std::int64_t>();
+  const std::int64_t max_order = json_to_int64(ident.at("max_order"), "max_order");
+  const std::int64_t min_order = json_to_int64(ident.at("min_order"), "min_order");
   if (min_order < 3 || max_order < min_order)
     throw usage_error("the shard outputs name orders " + std::to_string(min_order) + ".." + std::to_string(max_order) +
                       " (need 3 <= min_order <= max_order)");
@@ -58,7 +68,7 @@ json merge_inputs(const std::vector<sweep_input>& in) {
   check_one_complete_set(in, ident, n);
   check_shares(in, ident, n);
   sweep_accumulator acc;
-  acc.max_examples = ident.at("max_examples").get<std::size_t>();
+  acc.max_examples = json_to_uint64(ident.at("max_examples"), "max_examples");
   double seconds = 0;
   for (auto& x : in) {
     acc.merge(x.acc);
@@ -83,10 +93,14 @@ sweep_input sweep_read_output(const std::string& path) {
   // A field missing or of the wrong type is bad input: usage_error naming the file, not the JSON
   // library's exception (nor compute_error, exit 3).
   try {
-    if (first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos)
-      return sweep_read_rows(path);
-    return sweep_read_summary(path);
+    sweep_input x = first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos
+                        ? sweep_read_rows(path)
+                        : sweep_read_summary(path);
+    check_run_integers(x.run);
+    return x;
   } catch (const json::exception& e) {
+    throw usage_error("'" + path + "' is malformed: " + e.what());
+  } catch (const json_value_error& e) {
     throw usage_error("'" + path + "' is malformed: " + e.what());
   } catch (const compute_error& e) {  // a real that does not parse (sweep/real_text): bad input here
     throw usage_error("'" + path + "' is malformed: " + e.what());
@@ -100,6 +114,8 @@ json sweep_merge(const std::vector<std::string>& paths) {
   try {
     return merge_inputs(in);
   } catch (const json::exception& e) {
+    throw usage_error("the shard outputs are malformed: " + std::string(e.what()));
+  } catch (const json_value_error& e) {
     throw usage_error("the shard outputs are malformed: " + std::string(e.what()));
   }
 }

@@ -170,7 +170,7 @@ struct rows_reader {
   void set_run(const json& run) {
     r.run = run;
     keep_text = run.at("type").get<std::string>() != "double";
-    r.acc.max_examples = run.at("max_examples").get<std::size_t>();
+    r.acc.max_examples = json_to_uint64(run.at("max_examples"), "max_examples");
   }
   void end(const json& e) {
     r.seconds = e.at("seconds").get<double>();

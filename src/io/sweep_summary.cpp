@@ -21,7 +21,7 @@ json pairs_json(const std::vector<sweep_pair_id>& v) {
 
 std::vector<sweep_pair_id> pairs_from_json(const json& a) {
   std::vector<sweep_pair_id> v;
-  for (auto& p : a) v.push_back({p.at(0).get<std::int64_t>(), p.at(1).get<std::int64_t>()});
+  for (auto& p : a) v.push_back({json_to_int64(p.at(0), "tau"), json_to_int64(p.at(1), "sigma")});
   return v;
 }
 
@@ -40,7 +40,7 @@ sweep_extreme extreme_from_json(const json& j) {
   e.text = j.at("value").get<std::string>();
   e.value = sweep_text_double(e.text);
   if (sweep_double_text(e.value) == e.text) e.text.clear();
-  e.pair = {j.at("pair").at(0).get<std::int64_t>(), j.at("pair").at(1).get<std::int64_t>()};
+  e.pair = {json_to_int64(j.at("pair").at(0), "tau"), json_to_int64(j.at("pair").at(1), "sigma")};
   return e;
 }
 
@@ -180,12 +180,7 @@ json sweep_accumulator_json(const sweep_accumulator& a, sweep_check_set checks) 
 }
 
 namespace {
-// A count read from a file. nlohmann's get<std::uint64_t> converts a floating value (which an
-// integer beyond 64 bits is parsed as) with undefined behaviour: such a count is refused.
-std::uint64_t count_from_json(const json& j) {
-  if (!j.is_number_unsigned()) throw usage_error("a count must be an integer in [0, 2^64), got " + j.dump());
-  return j.get<std::uint64_t>();
-}
+std::uint64_t count_from_json(const json& j) { return json_to_uint64(j, "a count"); }
 }  // namespace
 
 sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_examples) {
@@ -267,7 +262,7 @@ sweep_input sweep_read_summary(const std::string& path) {
   r.run = j.at("run");
   if (!r.run.value("complete", false)) throw usage_error("'" + path + "' is the summary of an unfinished sweep");
   r.seconds = j.at("seconds").get<double>();
-  r.acc = sweep_accumulator_from_json(j, r.run.at("max_examples").get<std::size_t>());
+  r.acc = sweep_accumulator_from_json(j, json_to_uint64(r.run.at("max_examples"), "max_examples"));
   if (j.at("values_file").is_null())
     throw usage_error("'" + path + "' has no values file (only shard runs write one); merge the row files instead");
   std::string vf = j.at("values_file").get<std::string>();

@@ -5,8 +5,11 @@
 // them back needs the number's text, not nlohmann's double: see io/certificate_json.hpp.
 #pragma once
 #include <nlohmann/json.hpp>
+#include <cstdint>
+#include <limits>
 #include <string>
 
+#include <gyrores/core/error.hpp>
 #include <gyrores/core/integer.hpp>
 
 namespace gyrores {
@@ -19,5 +22,28 @@ json json_integer(const std::string& decimal);
 
 // j.dump(indent) with every json_integer marker replaced by its digits.
 std::string json_dump(const json& j, int indent = 2);
+
+// An integer field of a file being read. nlohmann's get<> converts a floating value (which an
+// integer beyond 64 bits parses as) with undefined behaviour and wraps a large one into a
+// narrower type: both are refused, with json_value_error (a usage_error) naming `what` and the value.
+// (J: json or nlohmann::json.) Readers catch json_value_error to name the file.
+struct json_value_error : usage_error {
+  using usage_error::usage_error;
+};
+template <class J> std::int64_t json_to_int64(const J& j, const char* what) {
+  if (!j.is_number_integer() || (j.is_number_unsigned() && j.template get<std::uint64_t>() > std::uint64_t(INT64_MAX)))
+    throw json_value_error(std::string(what) + " must be an integer in [-2^63, 2^63), got " + j.dump());
+  return j.template get<std::int64_t>();
+}
+template <class J> std::uint64_t json_to_uint64(const J& j, const char* what) {
+  if (!j.is_number_unsigned()) throw json_value_error(std::string(what) + " must be an integer in [0, 2^64), got " + j.dump());
+  return j.template get<std::uint64_t>();
+}
+template <class J> unsigned json_to_unsigned(const J& j, const char* what) {
+  const std::uint64_t v = json_to_uint64(j, what);
+  if (v > std::numeric_limits<unsigned>::max())
+    throw json_value_error(std::string(what) + " must be an integer in [0, 2^32), got " + j.dump());
+  return unsigned(v);
+}
 
 }  // namespace gyrores
