@@ -2,6 +2,8 @@
 // thread counts, shards + merge = single run, resume after interruption, atomic files.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -450,6 +452,30 @@ TEST_CASE("sweep: files are written atomically", "[sweep]") {
   write_file_atomically(p, "two\n");
   CHECK(read_text(p) == "two\n");
   CHECK(file_names(d) == std::vector<std::string>{"f.txt"});  // no temporary file left behind
+  // Written in pieces; a failing piece leaves the old content and no temporary file.
+  write_file_atomically(p, [](const byte_writer& w) {
+    w("thr");
+    w("ee\n");
+  });
+  CHECK(read_text(p) == "three\n");
+  CHECK_THROWS_AS(write_file_atomically(p, [](const byte_writer& w) {
+                    w("four");
+                    throw usage_error("stop");
+                  }),
+                  usage_error);
+  CHECK(read_text(p) == "three\n");
+  CHECK(file_names(d) == std::vector<std::string>{"f.txt"});
+  // Temporaries of a killed writer (a pid that cannot be running) go; a live process's stay.
+  const std::string dead = p + ".tmp.999999999", live = p + ".tmp." + std::to_string(::getpid());
+  write_file_atomically(dead, "x");
+  write_file_atomically(live, "x");
+  write_file_atomically(p + ".tmp.12ab", "x");  // not a temporary of ours
+  remove_stale_temporaries(p);
+  std::vector<std::string> kept = {"f.txt", "f.txt.tmp." + std::to_string(::getpid()), "f.txt.tmp.12ab"};
+  std::sort(kept.begin(), kept.end());
+  CHECK(file_names(d) == kept);
+  std::filesystem::remove(live);
+  std::filesystem::remove(p + ".tmp.12ab");
   // A directory that does not exist: nothing is created; usage_error (the user named the path).
   CHECK_THROWS_AS(write_file_atomically(d / "no/such/dir.txt", "x"), usage_error);
   CHECK_FALSE(path_exists(d / "no"));

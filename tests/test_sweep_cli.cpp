@@ -236,6 +236,9 @@ TEST_CASE("sweep CLI: 20 SIGKILLs at random moments, each resumed, give the unin
   CHECK_FALSE(path_exists(state));
   CHECK_FALSE(path_exists(state + ".values"));
   CHECK_FALSE(path_exists(d / "rows.csv.part"));
+  // Temporaries of atomic writes that a kill interrupted are gone too (io/files.hpp).
+  for (const auto& e : std::filesystem::directory_iterator(d.path()))
+    CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
 }
 
 TEST_CASE("sweep CLI: a run killed after renaming its rows, before removing the state, resumes", "[cli][sweep]") {

@@ -60,6 +60,9 @@ sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_file
   if (cfg.max_order <= sweep_count_limit)
     total_ = sweep_shard_pairs(sweep_total_pairs(cfg.min_order, cfg.max_order), cfg.shard_index, cfg.shard_count);
   acc_.max_examples = cfg.max_examples;
+  // A run killed while replacing one of these leaves PATH.tmp.PID behind (never the final name).
+  for (const std::string& p : {state_, files.summary_path, files.summary_path + ".values"})
+    if (!p.empty() && p != ".values") remove_stale_temporaries(p);
   if (files.resume) {
     // A state whose fields are missing or of the wrong type is bad input, like one that is not
     // JSON (read_state): usage_error, not the JSON library's exception.

@@ -25,6 +25,10 @@ bool file_exists(const std::string& path);
 // temporary file is removed and `path` is untouched.
 void write_file_atomically(const std::string& path, std::string_view content);
 
+// Removes the temporary files of write_file_atomically(path, ...) that a killed process left
+// behind: `path.tmp.PID` for a PID no longer running (never throws). Run before a sweep starts.
+void remove_stale_temporaries(const std::string& path) noexcept;
+
 // The same for content too large to hold: `fill` is given a function that appends bytes to the
 // temporary file. An exception from `fill` removes the temporary file and is rethrown.
 using byte_writer = std::function<void(std::string_view)>;
