@@ -45,7 +45,7 @@ void write_file_atomically(const std::string& path, const std::function<void(con
   int err = 0;
   try {
     fill([&](std::string_view bytes) {
-      if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) {
+      if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) {
         err = errno;
         throw usage_error("cannot write '" + path + "': " + std::strerror(err));
       }
@@ -154,6 +154,7 @@ append_file& append_file::operator=(append_file&& o) noexcept {
 
 void append_file::write(std::string_view bytes) {
   if (!f_) throw usage_error("cannot write '" + path_ + "': not open");
+  if (bytes.empty()) return;  // fwrite's pointer must not be null, and an empty view's may be
   if (std::fwrite(bytes.data(), 1, bytes.size(), f_) != bytes.size()) fail("cannot write", path_, errno);
 }
 
