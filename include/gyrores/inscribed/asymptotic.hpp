@@ -27,7 +27,8 @@
 //    y = s - u_asy (= tan u_asy) and w = x (y - d), the lobe equation minus u + tan u = s is
 //    exactly
 //        d + sin d / (cos u_asy cos(u_asy + d)) = x^2 (y - d)^3 S(w),   S(w) = (tan w - w)/w^3,
-//    solved for e = d/x^2 (bracketed, TOMS 748), with S from its alternating series. Then
+//    solved for e = d/x^2 (safeguarded Newton, asymptotic_error_scaled), with S from its
+//    alternating series. Then
 //    error = 2 |e| x^2/a and ratio = error/bound = 2 |e|/pi^3 keep full relative accuracy for
 //    pairs of any size (error and bound may underflow to 0 in double for a > ~1e100; the ratio
 //    does not). As x -> 0, e -> tan^3 u/(3 (1 + sec^2 u)), so |theta_c - theta_asy| ~ C(s) x^2/a
