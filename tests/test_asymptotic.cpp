@@ -7,6 +7,8 @@
 //  - the global search (inscribed_global) for which lobes carry a global minimiser.
 #include <catch2/catch.hpp>
 
+#include <boost/math/tools/toms748_solve.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -494,4 +496,136 @@ TEST_CASE("asymptotic: random large pairs, double against mpfr", "[asymptotic][r
   CHECK(rel_error(mpfr_real(rd.lobes[0].ratio), rm.lobes[0].ratio) < mpfr_real("1e-13"));
   CHECK(rel_error(mpfr_real(rd.lobes[0].r_c), rm.lobes[0].r_c) < mpfr_real("1e-13"));
   CHECK(rel_error(mpfr_real(rd.r_res), rm.r_res) < mpfr_real("1e-13"));
+}
+
+namespace {
+
+// Independent reference for asymptotic_error_scaled(x, s, u, pi): the root E of
+//   E + sin(E x^2)/(x^2 cos u cos(u + E x^2)) - (tan w - w)/x^3,   w = x (s - u - E x^2),
+// the cancellation-free equation of inscribed/asymptotic.hpp written out directly, with the
+// inputs x, s, u taken exactly (they are the values the library was given, not the exact
+// reals they round), evaluated in mpfr at 50 digits plus the 2 log10(1/|w|) that tan w - w
+// loses to cancellation, and solved by Boost's TOMS 748 (not the library's wrapper) on a bracket
+// whose sign change is checked. Returns the error of `e` in units of the last place of a
+// `bits`-bit number at the reference root.
+struct asy_reference_error {
+  double ulps;
+  bool bracketed;
+};
+template <class T> void asy_set_exact(mpfr_real& r, const T& v) {
+  if constexpr (is_mpfr_v<T>) mpfr_set(r.backend().data(), v.backend().data(), MPFR_RNDN);  // exact: higher precision
+  else r = mpfr_real(v);
+}
+template <class T> asy_reference_error asy_error_scaled_reference(const T& x, const T& s, const T& u, const T& e, unsigned bits) {
+  using boost::multiprecision::log10;
+  unsigned digits = 50;
+  {
+    // 2 log10(1/|w|) at the guess: at least the cancellation of tan w - w near the root.
+    scoped_digits d(30);
+    mpfr_real w = abs(mpfr_real(x)) * abs(mpfr_real(s) - mpfr_real(u));
+    if (w > 0 && w < 1) digits += 2 * unsigned(-log10(w).template convert_to<double>() + 1);
+  }
+  scoped_digits d(digits);
+  mpfr_real X, S, U, E;
+  asy_set_exact(X, x);
+  asy_set_exact(S, s);
+  asy_set_exact(U, u);
+  asy_set_exact(E, e);
+  const mpfr_real x2 = X * X, cu = cos(U);
+  auto G = [&](const mpfr_real& v) {
+    mpfr_real dd = v * x2, w = X * (S - U - dd);
+    return mpfr_real(v + sin(dd) / (x2 * cu * cos(U + dd)) - (tan(w) - w) / (x2 * X));
+  };
+  if (E == 0) return {0, G(E) == 0};
+  // Bracket [E - h, E + h], widened until G changes sign (G is increasing).
+  mpfr_real h = abs(E) * ldexp(mpfr_real(1), -int(bits) + 8), lo, hi, glo, ghi;
+  for (int i = 0; i < 40; ++i, h *= 256) {
+    lo = E - h;
+    hi = E + h;
+    glo = G(lo);
+    ghi = G(hi);
+    if (glo < 0 && ghi > 0) break;
+  }
+  if (!(glo < 0 && ghi > 0)) return {0, false};
+  std::uintmax_t it = 400;
+  boost::math::tools::eps_tolerance<mpfr_real> tol(unsigned(3.3 * digits) - 8);
+  auto r = boost::math::tools::toms748_solve(G, lo, hi, glo, ghi, tol, it);
+  mpfr_real ref = (r.first + r.second) / 2;
+  long ex = 0;
+  mpfr_get_d_2exp(&ex, ref.backend().data(), MPFR_RNDN);  // |ref| in [2^(ex-1), 2^ex)
+  mpfr_real ulp = ldexp(mpfr_real(1), int(ex) - int(bits));
+  return {(abs(E - ref) / ulp).template convert_to<double>(), true};
+}
+
+// (x, s, u_asy) of the paper's lobe (the smaller k on a tie) as the sweep forms them
+// (sweep/evaluate.hpp, sweep_check_asy_bound), and e = asymptotic_error_scaled in T; its error
+// in ulps against the reference.
+template <class T, class I> double asy_error_scaled_ulps(const resonant_pair<I>& p) {
+  using L = wide_int<I>;
+  const L a = p.order(), b = L(p.delta());
+  const L k = paper_fast_node(a, b).k, m = a - 2 * k * b;
+  const T pi = real_pi<T>();
+  const T x = real_from_ratio<T>(b, a);
+  const T s = pi * real_from_ratio<T>(m, L(2 * b));
+  const T u = u_plus_tan_u_root(s);
+  const T e = asymptotic_error_scaled(x, s, u, pi);
+  const auto r = asy_error_scaled_reference(x, s, u, e, real_bits<T>());
+  INFO("pair " << p.str() << " in " << real_type_name<T>() << ": e = " << root_describe(e));
+  REQUIRE(r.bracketed);
+  return r.ulps;
+}
+
+}  // namespace
+
+TEST_CASE("asymptotic: (u_c - u_asy)/x^2 to a few ulp against a high-precision reference", "[asymptotic][accuracy]") {
+  // Random pairs of order up to 10^6 with x < 1/2 (x uniform, as in a sweep), the edges x -> 0
+  // (b = 1, a up to 10^18) and x -> 1/2 (tau = 3 sigma - 1), and pairs beyond 64 bits in double
+  // (x^2 underflows to 0 at 10^200) and in mpfr at 30 digits. The error is that of G's own
+  // rounding (the same for Newton and for TOMS 748 on G: mean ~1.2 ulp, ~7 ulp at most over
+  // thousands of pairs); a solver stopping early shows as hundreds of ulps. The largest errors
+  // show with -s (Catch expands the two CHECKs on them).
+  std::mt19937_64 gen(20250613);
+  double max_ulps = 0;
+  const int n = 1500 * gyrores::test::multiplier();
+  for (int i = 0; i < n; ++i) {
+    const std::int64_t a = 5 + std::int64_t(gen() % 999996);
+    const std::int64_t sigma = a / 4 + 1 + std::int64_t(gen() % std::uint64_t((a + 1) / 2 - a / 4 - 1));
+    if (2 * sigma >= a || std::gcd(a, sigma) != 1) continue;
+    max_ulps = std::max(max_ulps, asy_error_scaled_ulps<double>(P64(a - sigma, sigma)));
+  }
+  for (std::int64_t t = 2; t < 1000000000000000000; t = t * 7 + 3) {
+    max_ulps = std::max(max_ulps, asy_error_scaled_ulps<double>(P64(t + 1, t)));
+    if (t >= 2) max_ulps = std::max(max_ulps, asy_error_scaled_ulps<double>(P64(3 * t - 1, t)));
+  }
+  for (const char* t : {"1000000000000000000000000000000", "1" "000000000000000000000000000000000000000000000000000000000"
+                        "00000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000"
+                        "00000000000000000000000000000000000000000000000000000000000000000"}) {
+    const big_int tb(t);
+    max_ulps = std::max(max_ulps, asy_error_scaled_ulps<double>(PB(tb + 1, tb)));
+    max_ulps = std::max(max_ulps, asy_error_scaled_ulps<double>(PB(tb + 3, tb - 1)));
+    // x -> 1/2 with b ~ 2 tb: e ~ s^3/24, s = pi/(2b), underflows in double once b > ~1e100.
+    if (tb < big_int("1" "000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000000"))
+      max_ulps = std::max(max_ulps, asy_error_scaled_ulps<double>(PB(3 * tb - 1, tb)));
+  }
+  CHECK(max_ulps <= 8);
+  // mpfr_real at 30 digits, pairs up to 10^1000.
+  double max_ulps_mpfr = 0;
+  {
+    scoped_digits d(30);
+    const unsigned bits = real_bits<mpfr_real>();
+    for (int i = 0; i < 40 * gyrores::test::multiplier(); ++i) {
+      const std::int64_t a = 5 + std::int64_t(gen() % 999996);
+      const std::int64_t sigma = a / 4 + 1 + std::int64_t(gen() % std::uint64_t((a + 1) / 2 - a / 4 - 1));
+      if (2 * sigma >= a || std::gcd(a, sigma) != 1) continue;
+      max_ulps_mpfr = std::max(max_ulps_mpfr, asy_error_scaled_ulps<mpfr_real>(P64(a - sigma, sigma)));
+    }
+    for (int e10 : {20, 40, 300, 1000}) {
+      const big_int tb = boost::multiprecision::pow(big_int(10), unsigned(e10));
+      max_ulps_mpfr = std::max(max_ulps_mpfr, asy_error_scaled_ulps<mpfr_real>(PB(tb + 1, tb)));
+      max_ulps_mpfr = std::max(max_ulps_mpfr, asy_error_scaled_ulps<mpfr_real>(PB(3 * tb - 1, tb)));
+      max_ulps_mpfr = std::max(max_ulps_mpfr, asy_error_scaled_ulps<mpfr_real>(PB(tb + 3, tb - 1)));
+    }
+    CHECK(bits == real_bits<mpfr_real>());
+  }
+  CHECK(max_ulps_mpfr <= 8);
 }

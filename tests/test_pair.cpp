@@ -11,6 +11,8 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/model/enumerate.hpp>
@@ -20,6 +22,8 @@
 #include "testing/test_support.hpp"
 
 using gyrores::big_int;
+using gyrores::coprime_pairs;
+using gyrores::known_coprime;
 using gyrores::resonant_pair;
 using gyrores::usage_error;
 using p64 = resonant_pair<std::int64_t>;
@@ -286,6 +290,19 @@ TEST_CASE("bad pairs are rejected with a message naming the problem", "[pair][er
   std::int64_t big = std::int64_t(1) << 61;
   m = usage_message([&] { p64(3 * big, big); });  // gcd 2^61
   CHECK_THAT(m, Catch::Contains("reduced pair (3, 1)"));
+}
+
+TEST_CASE("known_coprime: the same pair without the gcd, the range still checked", "[pair]") {
+  // The enumerators build their pairs this way (model/enumerate.hpp, src/lib/sweep/engine.cpp).
+  for (auto [t, s] : std::vector<std::pair<std::int64_t, std::int64_t>>{{2, 1}, {6, 5}, {11, 9}, {1000003, 999999}})
+    CHECK(resonant_pair<std::int64_t>(t, s, known_coprime) == p64(t, s));
+  CHECK(resonant_pair<big_int>(pow10(30) + 1, pow10(30), known_coprime) == pbig(pow10(30) + 1, pow10(30)));
+  CHECK_THROWS_AS(resonant_pair<std::int64_t>(3, 3, known_coprime), usage_error);
+  CHECK_THROWS_AS(resonant_pair<std::int64_t>(2, 3, known_coprime), usage_error);
+  CHECK_THROWS_AS(resonant_pair<std::int64_t>(5, 0, known_coprime), usage_error);
+  CHECK_THROWS_AS(resonant_pair<big_int>(big_int(4), big_int(0), known_coprime), usage_error);
+  // Every pair of the lazy enumeration is coprime (what its known_coprime relies on).
+  for (auto p : coprime_pairs(3, 300)) CHECK(std::gcd(p.tau(), p.sigma()) == 1);
 }
 
 TEST_CASE("int64 pairs whose sum overflows 64 bits keep exact order", "[pair][overflow]") {

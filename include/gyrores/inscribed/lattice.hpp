@@ -27,6 +27,7 @@
 // 10000 digits, and about the paper's theta_asy in double (bench/RESULTS.md, H1 and H5).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <tuple>
 #include <vector>
@@ -278,20 +279,24 @@ void lattice_fill(inscribed_result<T>& r, const resonant_constants<T>& c, const 
   // u* > 0 and the frame's u has the sign of its m (the theorem: u = sign(m) u*).
   const bool f_negative = u < 0;
   const T ustar = fabs(u);
-  std::vector<lattice_minimiser<L>> pts;
-  pts.push_back(lattice_minimiser_of(f, f_negative, a, b));
-  pts.push_back(lattice_minimiser_of(lobe_mirror(f, a, b), !f_negative, a, b));
+  // At most 4 minimisers: a fixed array and one allocation (the result's vector) per pair.
+  std::array<lattice_minimiser<L>, 4> pts;
+  std::size_t n = 0;
+  pts[n++] = lattice_minimiser_of(f, f_negative, a, b);
+  pts[n++] = lattice_minimiser_of(lobe_mirror(f, a, b), !f_negative, a, b);
   if (m_min == 2) {
     auto s = lobe_shift(f, a, b);
-    pts.push_back(lattice_minimiser_of(s, f_negative, a, b));
-    pts.push_back(lattice_minimiser_of(lobe_mirror(s, a, b), !f_negative, a, b));
+    pts[n++] = lattice_minimiser_of(s, f_negative, a, b);
+    pts[n++] = lattice_minimiser_of(lobe_mirror(s, a, b), !f_negative, a, b);
   }
-  std::sort(pts.begin(), pts.end(), [](const auto& x, const auto& y) {
+  std::sort(pts.begin(), pts.begin() + n, [](const auto& x, const auto& y) {
     if (x.key != y.key) return x.key < y.key;
     return x.negative && !y.negative;
   });
   std::vector<T> thetas;
-  for (const auto& p : pts) thetas.push_back(lattice_theta(c, p.key, a, p.negative ? T(-ustar) : ustar));
+  thetas.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    thetas.push_back(lattice_theta(c, pts[i].key, a, pts[i].negative ? T(-ustar) : ustar));
   set_minimum(r, rsq, c.v, c.sqrt_ts, std::move(thetas));
   const auto& g = pts.front();
   r.first = {to_big(g.frame.k), to_big(g.frame.j), to_big(g.frame.m), g.negative ? T(-ustar) : ustar};

@@ -34,7 +34,7 @@ class coprime_pairs {
     using reference = value_type;
 
     iterator() = default;
-    value_type operator*() const { return value_type(a_ - s_, s_); }
+    value_type operator*() const { return value_type(a_ - s_, s_, known_coprime); }  // advance() tested gcd(a, s) = 1
     iterator& operator++() {
       step();
       skip_to_shard();

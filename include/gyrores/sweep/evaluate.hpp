@@ -149,16 +149,23 @@ void sweep_check_paper_node(sweep_row<T>& r, const resonant_pair<std::int64_t>& 
   if (check) r.status[int(sweep_check::paper_node)] = r.paper_lobe_min ? sweep_status::pass : sweep_status::fail;
 }
 
+// R(pi/2) in lobe coordinates: the frame nearest theta = pi * 1/2, integers in L (the largest
+// intermediate is 4 a + 4).
+template <class L, class T> T sweep_radius_sq_half_pi(const resonant_constants<T>& c, const L& A, const L& B) {
+  auto f = lobe_frame_near(A, B, L(1), L(2));
+  auto fr = lobe_frame_real_of(c, f, A);
+  T u = lobe_u_at(c, f, A, L(1), L(2));
+  return lobe_eval(c, fr, u).radius_sq();
+}
+
 // P3: R(pi/2) in lobe coordinates (the frame nearest theta = pi * 1/2) against delta mod 4 and r_res.
 template <class T>
 void sweep_check_degeneracy(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const resonant_constants<T>& c,
                             const inscribed_result<T>& lr, unsigned digits) {
-  using L = int128;
-  const L A = std::int64_t(p.order()), B = p.delta();
-  auto f = lobe_frame_near(A, B, L(1), L(2));
-  auto fr = lobe_frame_real_of(c, f, A);
-  T u = lobe_u_at(c, f, A, L(1), L(2));
-  T R = lobe_eval(c, fr, u).radius_sq();
+  // int64 below a = 2^60 (every sweep in practice: int128 division is a library call), else int128.
+  const int128 a = p.order();
+  const T R = a < (int128(1) << 60) ? sweep_radius_sq_half_pi(c, std::int64_t(a), p.delta())
+                                    : sweep_radius_sq_half_pi(c, a, int128(p.delta()));
   bool ok = (R == 0) == (p.delta_mod4() == 2);
   if (ok && !p.degenerate()) ok = lr.r_res > 0 && lr.r_res * lr.r_res <= R * (1 + 16 * real_epsilon<T>());
   if (ok && p.degenerate()) ok = lr.r_res == 0;
@@ -283,11 +290,21 @@ void sweep_evaluate_checks(sweep_row<T>& r, const resonant_pair<std::int64_t>& p
   if (sweep_has_check(ck, sweep_check::asy_bound) && 2 * b < a) sweep_check_asy_bound(r, p, c);
 }
 
+// The constants a row uses: the lobe-frame ones (x, s1mx2, pi, v) and n for t_min_paper = pi/n,
+// each formed exactly as resonant_constants_of forms it; omega1, omega2 and rho0 (two square
+// roots and three divisions) are not used.
+template <class T> resonant_constants<T> sweep_constants(const resonant_pair<std::int64_t>& p, const T& v) {
+  using W = wide_int<std::int64_t>;
+  auto c = resonant_constants_from<T>(p.order(), W(p.delta()), W(p.tau()), W(p.sigma()), v, constants_scope::lobe);
+  c.n = real_from_int<T>(W(p.delta())) / c.sqrt_ts;
+  return c;
+}
+
 template <class T>
 void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
   const std::int64_t a = std::int64_t(p.order());
   const T v = T(1);
-  const auto c = resonant_constants_of<T>(p, v);
+  const auto c = sweep_constants(p, v);
   const auto lr = inscribed_lattice<T>(p, v);
   const auto& ck = cfg.checks;
   sweep_fill_values(r, p, c, lr);

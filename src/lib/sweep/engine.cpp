@@ -197,7 +197,7 @@ void block_pipeline::worker() {
     sweep_block blk;
     try {
       pairs.clear();
-      for (const auto& [a, s] : raw) pairs.emplace_back(a - s, s);
+      for (const auto& [a, s] : raw) pairs.emplace_back(a - s, s, known_coprime);  // from pair_stream's table
       blk = evaluate_block(pairs, first);
     } catch (...) {
       fail(std::current_exception());
