@@ -105,6 +105,22 @@ bool tan_enclosure(iv& out, const iv& W) {
   return ok;
 }
 
+// out ~ tan(v) at out's precision, for the Newton ladder's centres (no proof needed there):
+// the midpoint of Arb's ball, about 3 times cheaper than mpfr_tan at these precisions. The
+// ball's error is absolute for small v, so |v| ~ 2^-k gets k more bits (as in tan_enclosure).
+void tan_point(fr& out, mpfr_srcptr v) {
+  const mpfr_prec_t prec = mpfr_get_prec(out);
+  const mpfr_prec_t extra = !mpfr_zero_p(v) && mpfr_get_exp(v) < 0 ? -mpfr_get_exp(v) : 0;
+  arb_t w, t;
+  arb_init(w);
+  arb_init(t);
+  arf_set_mpfr(arb_midref(w), v);
+  arb_tan(t, w, prec + 8 + extra);
+  arf_get_mpfr(out, arb_midref(t), MPFR_RNDN);
+  arb_clear(w);
+  arb_clear(t);
+}
+
 // Newton on f(u) = tan(mu - x u) - x tan u about the centre c (a point at `prec`), from u
 // accurate to about `acc` bits: as many steps as doublings up to prec (the proof that follows
 // checks the result), fewer if a step is already below 2^-(prec - 6) |u|.
@@ -150,10 +166,10 @@ bool root_ladder(fr& u, fr& c, iv& tc, iv& wc, const constants& K, unsigned acc)
       mpfr_set(cl, c, MPFR_RNDN);
       mpfr_set(ul, u, MPFR_RNDN);
       mpfr_set(xl, x, MPFR_RNDN);
-      mpfr_tan(tl, cl, MPFR_RNDN);
+      tan_point(tl, cl);
       mpfr_mul(wl, xl, cl, MPFR_RNDN);
       mpfr_sub(wl, mu, wl, MPFR_RNDN);
-      mpfr_tan(wl, wl, MPFR_RNDN);
+      tan_point(wl, wl);
       newton_about(ul, cl, tl, wl, xl, level, acc);
       mpfr_set(u, ul, MPFR_RNDN);
       acc = unsigned(level) - 8;
