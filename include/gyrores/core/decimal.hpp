@@ -46,6 +46,11 @@ template <class T> mpfr_real real_to_mpfr(const T& v) {
   return r;
 }
 
+// "d.ddd...e+XX" (at least two exponent digits) from the significant digits `digits` (no sign,
+// no point, non-empty) and the decimal exponent e10 of the first one; "-" first if negative.
+// The one spelling of scientific text (format_scientific, format_rational_scientific).
+std::string scientific_text(bool negative, const std::string& digits, long e10);
+
 // Scientific notation d.ddd...e+XX with `digits` significant digits (at least 1), correctly
 // rounded in direction `rnd` (MPFR_RNDN: to nearest; MPFR_RNDD/RNDU: down/up, for the ends of
 // an enclosure). Zero prints as 0.000...e+00. Precondition: v finite.

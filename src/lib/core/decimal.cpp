@@ -14,14 +14,17 @@ std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rn
   mpfr_free_str(raw);
   const bool neg = !s.empty() && s[0] == '-';
   if (neg) s.erase(0, 1);
-  const long e10 = mpfr_zero_p(v.backend().data()) ? 0 : long(exp) - 1;
+  return scientific_text(neg, s, mpfr_zero_p(v.backend().data()) ? 0 : long(exp) - 1);
+}
+
+std::string scientific_text(bool negative, const std::string& digits, long e10) {
   // Appended piece by piece (GCC 12 reports a false -Wstringop-overflow on "." + std::string&&).
   std::string out;
-  if (neg) out += '-';
-  out += s[0];
-  if (digits > 1) {
+  if (negative) out += '-';
+  out += digits[0];
+  if (digits.size() > 1) {
     out += '.';
-    out.append(s, 1, std::string::npos);
+    out.append(digits, 1, std::string::npos);
   }
   char buf[32];
   std::snprintf(buf, sizeof buf, "e%c%02ld", e10 < 0 ? '-' : '+', e10 < 0 ? -e10 : e10);

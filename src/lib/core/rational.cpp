@@ -2,7 +2,6 @@
 #include <gyrores/core/rational.hpp>
 
 #include <cctype>
-#include <cstdio>
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
@@ -87,7 +86,7 @@ long decimal_length(const big_int& v) { return long(v.str().size()); }
 std::string format_rational_scientific(const big_rational& q, unsigned digits) {
   if (digits < 1) digits = 1;
   const long d = long(digits);
-  if (q == 0) return "0" + (d > 1 ? "." + std::string(std::size_t(d - 1), '0') : std::string()) + "e+00";
+  if (q == 0) return scientific_text(false, std::string(std::size_t(d), '0'), 0);
   big_int num = boost::multiprecision::numerator(q), den = boost::multiprecision::denominator(q);
   const bool neg = num < 0;
   if (neg) num = -num;
@@ -105,16 +104,7 @@ std::string format_rational_scientific(const big_rational& q, unsigned digits) {
     n = pow10(d - 1);
     ++e10;
   }
-  const std::string digs = n.str();
-  std::string out = neg ? "-" : "";
-  out += digs[0];
-  if (d > 1) {
-    out += '.';
-    out.append(digs, 1, std::string::npos);
-  }
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "e%c%02ld", e10 < 0 ? '-' : '+', e10 < 0 ? -e10 : e10);
-  return out + buf;
+  return scientific_text(neg, n.str(), e10);
 }
 
 bool int_is_square(const big_int& v, big_int& root) {
