@@ -79,16 +79,20 @@ void tan_shift(iv& out, const iv& tc, const iv& d, shift_scratch& s) {
   mpfi_div(out, out, den);
 }
 
+// Arb's error for a small argument |v| ~ 2^-k is not relative to v: k more bits keep the
+// result as accurate, relatively, as the argument (without them the ball of tan(mu - x c) for
+// (10^18+1, 10^18), w ~ 2^-61, came out 2^19 times wider than W, the bracket proof failed and
+// the certificate redid everything at twice the bits: 3x the cost).
+mpfr_prec_t small_argument_bits(mpfr_srcptr v) {
+  return !mpfr_zero_p(v) && mpfr_get_exp(v) < 0 ? -mpfr_get_exp(v) : 0;
+}
+
 // out = an enclosure of tan over W (inside (-pi/2, pi/2)): Arb's arb_tan of the ball holding W
 // (rigorous, and about 3 times cheaper than one MPFR tangent at these precisions), turned into
 // an interval rounded outward. False if Arb's ball is not finite (W too close to a pole).
 bool tan_enclosure(iv& out, const iv& W) {
   const mpfr_prec_t prec = mpfi_get_prec(out);
-  // Arb's error for a small argument |w| ~ 2^-k is not relative to w: at prec + 8 bits the ball
-  // of tan(mu - x c) for (10^18+1, 10^18) (w ~ 2^-61) came out 2^19 times wider than W's own
-  // width, the bracket proof failed and the certificate redid everything at twice the bits
-  // (3x the cost). k more bits keep the ball as narrow as W.
-  const mpfr_prec_t extra = !mpfr_zero_p(W.left()) && mpfr_get_exp(W.left()) < 0 ? -mpfr_get_exp(W.left()) : 0;
+  const mpfr_prec_t extra = small_argument_bits(W.left());
   arb_t w, t;
   arb_init(w);
   arb_init(t);
@@ -106,11 +110,10 @@ bool tan_enclosure(iv& out, const iv& W) {
 }
 
 // out ~ tan(v) at out's precision, for the Newton ladder's centres (no proof needed there):
-// the midpoint of Arb's ball, about 3 times cheaper than mpfr_tan at these precisions. The
-// ball's error is absolute for small v, so |v| ~ 2^-k gets k more bits (as in tan_enclosure).
+// the midpoint of Arb's ball, about 3 times cheaper than mpfr_tan at these precisions.
 void tan_point(fr& out, mpfr_srcptr v) {
   const mpfr_prec_t prec = mpfr_get_prec(out);
-  const mpfr_prec_t extra = !mpfr_zero_p(v) && mpfr_get_exp(v) < 0 ? -mpfr_get_exp(v) : 0;
+  const mpfr_prec_t extra = small_argument_bits(v);
   arb_t w, t;
   arb_init(w);
   arb_init(t);
