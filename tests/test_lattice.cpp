@@ -15,7 +15,7 @@
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/inscribed/global_search.hpp>
 #include <gyrores/inscribed/lattice.hpp>
-#include <gyrores/inscribed/lattice_theorem.hpp>
+#include <gyrores/theorem/lobes.hpp>
 #include "testing/test_support.hpp"
 
 using gyrores::mpfr_real;

@@ -17,12 +17,16 @@
 #include <gyrores/model/enumerate.hpp>       // coprime_pairs: lazy enumeration by order
 #include <gyrores/model/model.hpp>           // the model for any real n: frequencies, impulse response, envelope
 #include <gyrores/model/resonant.hpp>        // resonant parametrisation and exact local (lobe-frame) coordinates
+// theorem: the lattice theorem at the centre (lobes, the roots, the minimum, the proved pair report)
+#include <gyrores/theorem/lobes.hpp>          // the minimisers' lobes and the paper's fast node, by integers
+#include <gyrores/theorem/root.hpp>           // u* and the paper's root: points in double, proved enclosures
+#include <gyrores/theorem/minimum.hpp>        // r_res, minimisers, theta_first, t_first
+#include <gyrores/theorem/pair_report.hpp>    // everything about one pair, every real proved
 // inscribed radius: degenerate pairs, global search, lattice, asymptotics, analysis
 #include <gyrores/inscribed/result.hpp>      // inscribed_result<T>
 #include <gyrores/inscribed/degenerate.hpp>  // delta = 2 mod 4: r_res = 0 by integer arithmetic
 #include <gyrores/inscribed/global_search.hpp>  // reference method: all critical points
 #include <gyrores/inscribed/lattice.hpp>     // O(log tau) method for any pair
-#include <gyrores/inscribed/lattice_theorem.hpp> // the proved one-lobe reduction: lobes and u*
 #include <gyrores/inscribed/cross_check.hpp> // lattice vs global search
 #include <gyrores/inscribed/asymptotic.hpp>  // the paper's theta_asy, error bound, r_res_asy
 #include <gyrores/inscribed/pair_analysis.hpp>  // everything reported about one pair

@@ -4,20 +4,44 @@
 #include <utility>
 
 #include <gyrores/core/rational.hpp>
+#include <gyrores/theorem/lobes.hpp>
 
 namespace gyrores {
 
 namespace {
 
-json lobe_json(const verified_asymptotic_lobe& l) {
+json real_json(const proved_real& r) { return r.value; }
+json enclosure_json(const proved_real& r) { return json::array({r.enclosure.first, r.enclosure.second}); }
+
+// The asymptotic lobe's reals, by key: value (enclosures = false) or [lo, hi].
+json lobe_json(const paper_lobe_report& l, bool enclosures) {
   json lo;
-  lo["k"] = json_integer(l.k);
-  lo["m"] = json_integer(l.m);
+  if (!enclosures) {
+    lo["k"] = json_integer(l.k.str());
+    lo["m"] = json_integer(l.m.str());
+  }
   for (auto [name, value] : {std::pair{"s", &l.s}, {"u_asy", &l.u_asy}, {"theta_asy", &l.theta_asy},
                              {"theta_c", &l.theta_c}, {"error", &l.error}, {"bound", &l.bound}, {"ratio", &l.ratio}})
-    lo[name] = *value;
-  lo["holds_global_min"] = l.holds_global_min;
+    lo[name] = enclosures ? enclosure_json(*value) : real_json(*value);
+  if (!enclosures) lo["holds_global_min"] = l.holds_global_min;
   return lo;
+}
+
+// Every real of the report by its key, as value strings or as enclosures.
+void put_reals(json& j, const pair_report& r, bool enclosures) {
+  auto put = [&](const char* key, const proved_real& v) { j[key] = enclosures ? enclosure_json(v) : real_json(v); };
+  for (auto [name, value] : {std::pair{"beat_ratio", &r.beat_ratio}, {"n", &r.n}, {"omega1", &r.omega1},
+                             {"omega2", &r.omega2}, {"rho0", &r.rho0}, {"qdot0", &r.qdot0}, {"r_res", &r.r_res},
+                             {"h_min", &r.h_min}, {"h_z_max", &r.h_z_max}, {"theta_first", &r.theta_first},
+                             {"t_first", &r.t_first}, {"t_min_paper", &r.t_min_paper}})
+    put(name, *value);
+  json mins = json::array();
+  for (const auto& m : r.minimisers) mins.push_back(enclosures ? enclosure_json(m) : real_json(m));
+  j["minimisers"] = mins;
+  if (r.r_res_asy) put("r_res_asy", *r.r_res_asy);
+  else j["r_res_asy"] = nullptr;
+  if (r.r_res_asy_rel_error) put("r_res_asy_rel_error", *r.r_res_asy_rel_error);
+  else j["r_res_asy_rel_error"] = nullptr;
 }
 
 // Each convergent of W1/W2 with its pair's values, or a note when it is 1 (tau = sigma).
@@ -50,51 +74,48 @@ json pair_json(const resonant_pair<big_int>& p) {
   return j;
 }
 
-json pair_values_json(const resonant_pair<big_int>& p, const verified_pair_values& v) {
+json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
   json j = pair_json(p);
   for (auto [key, value] : {std::pair{"n", &v.n}, {"r_res", &v.r_res}, {"h_min", &v.h_min}, {"t_first", &v.t_first},
                             {"t_min_paper", &v.t_min_paper}})
-    j[key] = *value;
+    j[key] = value->value;
   j["degenerate"] = v.degenerate;
   return j;
 }
 
-json asymptotic_json(const verified_pair_report& r) {
+json asymptotic_json(const pair_report& r) {
   json asy;
   asy["applicable"] = r.asymptotic_applicable;
   asy["reason"] = r.asymptotic_reason;
   json lobes = json::array();
-  for (const auto& l : r.lobes) lobes.push_back(lobe_json(l));
+  for (const auto& l : r.lobes) lobes.push_back(lobe_json(l, false));
   asy["lobes"] = lobes;
   return asy;
 }
 
-json pair_report_json(const resonant_pair<big_int>& p, const verified_pair_report& r) {
-  json j = pair_json(p);
+json pair_report_json(const resonant_pair<big_int>& p, const pair_report& r, bool enclosures) {
+  json j;
+  j["format"] = pair_report_format;
+  j.update(pair_json(p));
   j["delta"] = json_integer(big_int(p.delta()).str());
   j["delta_mod4"] = p.delta_mod4();
   j["v2_delta"] = p.v2_delta();
   j["degenerate"] = p.degenerate();
   j["order"] = json_integer(p.order().str());
-  for (auto [name, value] : {std::pair{"beat_ratio", &r.beat_ratio}, {"n", &r.n}, {"omega1", &r.omega1},
-                             {"omega2", &r.omega2}, {"rho0", &r.rho0}, {"qdot0", &r.qdot0}, {"r_res", &r.r_res},
-                             {"h_min", &r.h_min}, {"h_z_max", &r.h_z_max}, {"theta_first", &r.theta_first},
-                             {"t_first", &r.t_first}})
-    j[name] = *value;
-  j["minimisers"] = r.minimisers;
-  j["t_min_paper"] = r.t_min_paper;
+  j["m_min"] = r.m_min;
+  put_reals(j, r, false);
   j["asymptotic"] = asymptotic_json(r);
-  j["r_res_asy"] = r.r_res_asy ? json(*r.r_res_asy) : json(nullptr);
-  j["r_res_asy_rel_error"] = r.r_res_asy_rel_error ? json(*r.r_res_asy_rel_error) : json(nullptr);
-  // Diagnostics that did not settle to `digits` digits: name -> digits that did (0: the value
-  // is an estimated bound on its magnitude). Empty when every field settled.
-  json unsettled = json::object();
-  for (const auto& [name, settled] : r.unsettled) unsettled[name] = settled;
-  j["unsettled"] = unsettled;
-  j["method"] = r.method;
-  j["cross_checked"] = r.cross_checked;
   j["digits"] = r.digits;
-  j["working_precision"] = {{"type", r.working_precision.name()}, {"bits", r.working_precision.bits}};
+  j["theorem"] = lattice_theorem_id;
+  j["bits"] = r.bits;
+  if (enclosures) {
+    json e;
+    put_reals(e, r, true);
+    json lobes = json::array();
+    for (const auto& l : r.lobes) lobes.push_back(lobe_json(l, true));
+    e["asymptotic_lobes"] = lobes;
+    j["enclosures"] = e;
+  }
   return j;
 }
 
@@ -120,16 +141,6 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["convergents"] = coupling_convergents_json(r.convergents);
   j["digits"] = digits;
   return j;
-}
-
-void add_enclosures_json(json& j, const certified_enclosures* proved) {
-  j["certified"] = proved != nullptr;
-  if (!proved) return;
-  auto enclosure = [](const std::pair<std::string, std::string>& e) { return json::array({e.first, e.second}); };
-  j["r_res_enclosure"] = enclosure(proved->r_res);
-  j["theta_first_enclosure"] = enclosure(proved->theta_first);
-  j["t_first_enclosure"] = enclosure(proved->t_first);
-  j["theorem"] = proved->theorem;
 }
 
 }  // namespace gyrores

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include <gyrores/core/error.hpp>
-#include <gyrores/inscribed/lattice_theorem.hpp>
+#include <gyrores/theorem/lobes.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/sweep_values_file.hpp>
 

@@ -42,13 +42,4 @@ struct theorem_certificate {
 // before the digits (a resource limit, named in the message).
 theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned digits, unsigned max_bits = 1u << 17);
 
-// The proved enclosures `gyrores pair` prints (qdot0 = v > 0, a decimal: r_res scales with v,
-// the times do not), from certify_by_theorem at `digits`: [lo, hi] decimal strings rounded
-// outward. usage_error for a qdot0 that is not a decimal > 0, as certify_by_theorem otherwise.
-struct certified_enclosures {
-  std::string theorem;
-  std::pair<std::string, std::string> r_res, theta_first, t_first;
-};
-certified_enclosures certify_enclosures(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0 = "1");
-
 }  // namespace gyrores

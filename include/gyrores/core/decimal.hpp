@@ -55,6 +55,13 @@ std::string scientific_text(bool negative, const std::string& digits, long e10);
 // rounded in direction `rnd` (MPFR_RNDN: to nearest; MPFR_RNDD/RNDU: down/up, for the ends of
 // an enclosure). Zero prints as 0.000...e+00. Precondition: v finite.
 std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rnd = MPFR_RNDN);
+std::string format_scientific(mpfr_srcptr v, unsigned digits, mpfr_rnd_t rnd = MPFR_RNDN);
+
+// The rounding to nearest, `digits` significant digits, shared by every value of [lo, hi]:
+// true with that text in `out` when lo and hi round alike (rounding is monotone, so then every
+// value between them does: this is how a proved enclosure becomes a correctly rounded number);
+// false when the interval straddles a rounding boundary (refine it). Precondition: lo <= hi, finite.
+bool enclosure_rounding(mpfr_srcptr lo, mpfr_srcptr hi, unsigned digits, std::string& out);
 
 // True when every value within a relative `rel_err` of v rounds to the same `digits`-digit
 // string as v (Ziv's rounding test). Exact zero (rel_err irrelevant) is settled.

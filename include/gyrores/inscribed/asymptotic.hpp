@@ -57,6 +57,7 @@
 #include <vector>
 
 #include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/theorem/lobes.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/resonant.hpp>
@@ -101,19 +102,6 @@ template <class T> struct asymptotic_report {
   T r_res{};                             // exact r_res (inscribed_lattice)
   T r_res_asy_rel_error{};               // |r_res_asy - r_res|/r_res (absolute |r_res_asy| if r_res = 0)
 };
-
-// The paper's fast node k = round(a/(2b)) for a, b > 0, exactly (integers L: int128, big_int):
-// {k, tie}; on a tie (a/(2b) = k + 1/2, which happens exactly when b = 1 for a coprime pair)
-// both k and k + 1 are the paper's nodes and `k` is the smaller.
-template <class L> struct paper_node {
-  L k;
-  bool tie;
-};
-template <class L> paper_node<L> paper_fast_node(const L& a, const L& b) {
-  const L twob = 2 * b;
-  if (int_mod(a, twob) == b) return {L((a - b) / twob), true};
-  return {int_floor_div(L(a + b), twob), false};
-}
 
 namespace detail {
 

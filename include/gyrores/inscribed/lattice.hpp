@@ -37,6 +37,7 @@
 #include <gyrores/model/resonant.hpp>
 #include <gyrores/inscribed/result.hpp>
 #include <gyrores/core/roots.hpp>
+#include <gyrores/theorem/lobes.hpp>
 
 namespace gyrores {
 
@@ -55,24 +56,6 @@ struct lattice_options {
 };
 
 namespace detail {
-
-// The pass frame with offset m = +m_min (m_min = 1 or 2). L: int128 or big_int.
-template <class L> lobe_frame<L> lattice_pass_frame(const L& a, const L& b) {
-  if (int_mod(b, L(2)) == 1) {
-    L mod = 2 * b;
-    L odd = mod == 2 ? L(1) : int_inverse_mod(a, mod);  // odd since a * odd = 1 mod an even number
-    L j = (odd - 1) / 2;
-    L k = ((2 * j + 1) * a - 1) / (2 * b);
-    return {k, j, L(1)};
-  }
-  // delta = 0 mod 4: a = 2a', b = 2b', a' odd, b' even; (2j+1) a' - 2 k b' = 1.
-  L ah = a / 2, bh = b / 2;
-  L mod = 2 * bh;
-  L odd = int_inverse_mod(ah, mod);
-  L j = (odd - 1) / 2;
-  L k = ((2 * j + 1) * ah - 1) / (2 * bh);
-  return {k, j, L(2)};
-}
 
 template <class S> struct scout_root {
   S u, radius_sq;
@@ -104,7 +87,7 @@ template <class L> struct lattice_candidate_site {
 // Candidate brackets for the minimiser (see the header comment).
 template <class L> std::vector<lattice_candidate_site<L>> lattice_sites(const L& tau, const L& a, const L& b,
                                                                         bool window, bool five = true) {
-  auto pass = lattice_pass_frame(a, b);
+  auto pass = pass_frame(a, b);
   if (!window) return {{pass, L(0), L(0), L(0)}};
   // Interval containing theta_pass = 2 k pi/a, in units pi/tau: i = floor(2 k tau / a).
   L ic = int_floor_div(L(2 * pass.k * tau), a);
@@ -436,7 +419,7 @@ inscribed_result<T> inscribed_lattice_impl(const resonant_pair<I>& p, const T& v
   inscribed_result<T> r;
   r.method = inscribed_method::lattice;
   if (!window && opt.solver == lattice_solver::scout_and_polish) {
-    const lattice_candidate_site<L> site{lattice_pass_frame(a, b), L(0), L(0), L(0)};
+    const lattice_candidate_site<L> site{pass_frame(a, b), L(0), L(0), L(0)};
     const auto root = lattice_default_root(z, c, site, huge);
     r.critical_points = 1;
     r.evaluations = root.evaluations;

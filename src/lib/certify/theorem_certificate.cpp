@@ -1,15 +1,16 @@
 // The producer of lattice-theorem certificates (certify/theorem_certificate.hpp). At a working
 // precision of `bits` (doubled until every claim has the digits asked for): u* and the proof of
-// a decimal bracket of it by certify/theorem_bracket.hpp (tangents from two Arb balls and the
-// addition formula, no arctangent), r_res over tan of the bracket, theta_first =
+// a decimal bracket of it by theorem/root.hpp (tangents from two Arb balls and the addition
+// formula, no arctangent), r_res over tan of the bracket, theta_first =
 // 2 (k pi + sign(m) u*)/a and t_first = sqrt(tau sigma) theta_first in MPFI.
 #include <gyrores/certify/theorem_certificate.hpp>
 
 #include <gyrores/certify/certificate.hpp>
-#include <gyrores/certify/theorem_bracket.hpp>
 #include <gyrores/core/error.hpp>
-#include <gyrores/core/interval.hpp>
-#include <gyrores/inscribed/lattice_theorem.hpp>
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/theorem/lobes.hpp>
+#include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/root.hpp>
 
 namespace gyrores {
 
@@ -17,13 +18,6 @@ namespace {
 
 using fr = fixed_mpfr;
 using iv = fixed_mpfi;
-
-// A number as Boost's mpfr_real (the current default precision, at least its own), for decimal text.
-mpfr_real boost_real(const fr& x) {
-  mpfr_real r;
-  mpfr_set(r.backend().data(), x, MPFR_RNDN);
-  return r;
-}
 
 // out = an enclosure of the decimal number `text`: the nearest float and its two neighbours
 // (one conversion instead of two directed ones).
@@ -38,21 +32,21 @@ bool decimal_enclosure(iv& out, const std::string& text) {
   return true;
 }
 
-// The decimal bracket of u* at the working precision, proved (theorem_bracket.hpp, step 2);
+// The decimal bracket of u* at the working precision, proved (theorem/root.hpp, step 2);
 // T receives tan([lo, hi]) and U the interval [lo, hi]. Empty when not proved here.
 std::pair<std::string, std::string> bracket_u_star(const resonant_pair<big_int>& p, const theorem_constants& K,
                                                    unsigned text_digits, iv& T, iv& U) {
   const mpfr_prec_t bits = K.prec;
-  theorem_centre z(bits);
-  if (!theorem_centre_of(z, K, p)) return {};
+  root_enclosure z(bits);
+  if (!theorem_centre_of(z, K, big_int(p.strand_offset_min()))) return {};
   fr rad(bits), end(bits);
   mpfr_abs(rad, z.u, MPFR_RNDN);
   mpfr_mul_2si(rad, rad, -int(bits) + 16, MPFR_RNDN);
   std::pair<std::string, std::string> text;
   mpfr_sub(end, z.u, rad, MPFR_RNDD);
-  text.first = format_scientific(boost_real(end), text_digits, MPFR_RNDD);
+  text.first = format_scientific(end, text_digits, MPFR_RNDD);
   mpfr_add(end, z.u, rad, MPFR_RNDU);
-  text.second = format_scientific(boost_real(end), text_digits, MPFR_RNDU);
+  text.second = format_scientific(end, text_digits, MPFR_RNDU);
   iv lo(bits), hi(bits);
   if (!decimal_enclosure(lo, text.first) || !decimal_enclosure(hi, text.second)) return {};
   if (!prove_theorem_bracket(K, z, lo, hi, T)) return {};
@@ -60,11 +54,9 @@ std::pair<std::string, std::string> bracket_u_star(const resonant_pair<big_int>&
   return text;
 }
 
-// An interval as Boost's mpfi_real (at the current default precision), for the decimal output.
-mpfi_real boost_interval(const iv& x) {
-  mpfi_real r;
-  mpfi_set(r.backend().data(), x);
-  return r;
+// [lo, hi] of an enclosure as decimal text with `digits` digits, rounded outward.
+std::pair<std::string, std::string> outward_text(const iv& x, unsigned digits) {
+  return {format_scientific(x.left(), digits, MPFR_RNDD), format_scientific(x.right(), digits, MPFR_RNDU)};
 }
 
 }  // namespace
@@ -83,7 +75,6 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
   // Relative width of each claim: at most 2^-e <= 10^-(digits + 1).
   const int e = int(digits10_to_bits(digits + 1));
   for (unsigned bits = std::max(64u, digits10_to_bits(digits) + 24); bits <= max_bits; bits *= 2) {
-    scoped_digits sd(digits10_for_bits(bits));
     // Written digits: claims digits + 10 (outward rounding adds at most 2 10^-(digits+9) to a
     // width below 10^-(digits+1)); the bracket the digits the precision carries less 2 (its
     // radius, 2^-(bits-16) relative, is 10^3 times larger), far inside what the claims need.
@@ -100,35 +91,17 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
       theorem_radius(r, K, T);
       if (!fixed_narrow(r, e)) continue;
     }
-    // theta = 2 (k pi + sign(m) U)/a, 0 <= k < a.
-    iv k(bits);
-    mpfi_set_z(k, big_int(first.k).backend().data());
-    mpfi_mul(theta, K.pi, k);
-    if (first.m < 0) mpfi_sub(theta, theta, U);
-    else mpfi_add(theta, theta, U);
-    mpfi_mul_ui(theta, theta, 2);
-    mpfi_div(theta, theta, K.a);
+    minimiser_theta(theta, K, a, first, U);  // 2 (k pi + sign(m) U)/a
     mpfi_mul(t, K.sqrt_ts, theta);
     if (!fixed_narrow(theta, e) || !fixed_narrow(t, e)) continue;
     c.bits = bits;
-    c.r_res = c.m_min == 0 ? std::pair<std::string, std::string>{"0", "0"} : interval_to_decimal(boost_interval(r), d);
-    c.theta_first = interval_to_decimal(boost_interval(theta), d);
-    c.t_first = interval_to_decimal(boost_interval(t), d);
+    c.r_res = c.m_min == 0 ? std::pair<std::string, std::string>{"0", "0"} : outward_text(r, d);
+    c.theta_first = outward_text(theta, d);
+    c.t_first = outward_text(t, d);
     return c;
   }
   throw compute_error("certify: " + p.str() + " did not reach " + std::to_string(digits) + " digits within " +
                       std::to_string(max_bits) + " bits");
-}
-
-certified_enclosures certify_enclosures(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0) {
-  theorem_certificate c = certify_by_theorem(p, digits);
-  certified_enclosures out{c.theorem, c.r_res, c.theta_first, c.t_first};
-  scoped_digits sd(digits + 30);
-  mpfi_real v = interval_from_decimal(qdot0, qdot0);
-  if (!certainly_positive(v)) throw usage_error("qdot0 must be a decimal number > 0, got '" + qdot0 + "'");
-  if (interval_lower(v) == 1 && interval_upper(v) == 1) return out;
-  out.r_res = interval_to_decimal(interval_from_decimal(c.r_res.first, c.r_res.second) * v, digits + 10);
-  return out;
 }
 
 }  // namespace gyrores

@@ -6,15 +6,32 @@
 namespace gyrores {
 
 std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rnd) {
+  return format_scientific(v.backend().data(), digits, rnd);
+}
+
+std::string format_scientific(mpfr_srcptr v, unsigned digits, mpfr_rnd_t rnd) {
   if (digits < 1) digits = 1;
   mpfr_exp_t exp = 0;
-  char* raw = mpfr_get_str(nullptr, &exp, 10, digits, v.backend().data(), rnd);
+  char* raw = mpfr_get_str(nullptr, &exp, 10, digits, v, rnd);
   if (!raw) throw compute_error("format_scientific: MPFR could not format the value");
   std::string s(raw);
   mpfr_free_str(raw);
   const bool neg = !s.empty() && s[0] == '-';
   if (neg) s.erase(0, 1);
-  return scientific_text(neg, s, mpfr_zero_p(v.backend().data()) ? 0 : long(exp) - 1);
+  return scientific_text(neg, s, mpfr_zero_p(v) ? 0 : long(exp) - 1);
+}
+
+bool enclosure_rounding(mpfr_srcptr lo, mpfr_srcptr hi, unsigned digits, std::string& out) {
+  std::string a = format_scientific(lo, digits);
+  if (mpfr_equal_p(lo, hi)) {
+    out = std::move(a);
+    return true;
+  }
+  // "-0.0e+00" and "0.0e+00" are different texts of one rounding: an interval around 0 is never
+  // decided (its values have no common sign), so the texts are compared as they are.
+  if (a != format_scientific(hi, digits)) return false;
+  out = std::move(a);
+  return true;
 }
 
 std::string scientific_text(bool negative, const std::string& digits, long e10) {

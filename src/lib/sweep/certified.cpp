@@ -8,16 +8,17 @@
 #include <algorithm>
 #include <cmath>
 
-#include <gyrores/certify/theorem_bracket.hpp>
 #include <gyrores/core/fixed_precision.hpp>
-#include <gyrores/inscribed/asymptotic.hpp>      // u_plus_tan_u_root (the scout of u_a)
-#include <gyrores/inscribed/lattice_theorem.hpp>  // minimiser_lobes, the scout of u*
+#include <gyrores/inscribed/asymptotic.hpp>  // u_plus_tan_u_root (the scout of u_a)
+#include <gyrores/theorem/lobes.hpp>
+#include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/root.hpp>
 
 namespace gyrores {
 
 namespace {
 
-// The pair's constants as intervals at one precision: the theorem's (certify/theorem_bracket.hpp)
+// The pair's constants as intervals at one precision: the theorem's (theorem/root.hpp)
 // and 1 - x^2.
 struct constants : theorem_constants {
   explicit constants(mpfr_prec_t p) : theorem_constants(p), one_m_x2(p) {}
@@ -72,30 +73,15 @@ bool bracket_u_asy(const constants& K, double u0, const fixed_mpfi& s, double& l
   return false;
 }
 
-// r_res and theta_first of a non-degenerate pair (certify/theorem_bracket.hpp): a bracket of
+// r_res and theta_first of a non-degenerate pair (theorem/root.hpp): a bracket of
 // relative half-width 2^-(prec-16) about the approximate u*, proved. False if not proved.
 bool enclose_minimum(sweep_proof& pr, const constants& K, const resonant_pair<big_int>& p, std::int64_t a) {
-  theorem_centre z(K.prec);
-  if (!theorem_centre_of(z, K, p)) return false;
-  fixed_mpfr rad(K.prec), end(K.prec);
-  mpfr_abs(rad, z.u, MPFR_RNDN);
-  mpfr_mul_2si(rad, rad, -int(K.prec) + 16, MPFR_RNDN);
-  fixed_mpfi lo(K.prec), hi(K.prec), T(K.prec), U(K.prec), r(K.prec);
-  mpfr_sub(end, z.u, rad, MPFR_RNDD);
-  mpfi_set_fr(lo, end);
-  mpfr_add(end, z.u, rad, MPFR_RNDU);
-  mpfi_set_fr(hi, end);
-  if (!prove_theorem_bracket(K, z, lo, hi, T)) return false;
-  mpfi_union(U, lo, hi);
-  theorem_radius(r, K, T);
-  // theta_first = 2 (k pi + sign(m) u*)/a in the first lobe.
+  root_enclosure z(K.prec);
+  if (!prove_theorem_root(z, K, big_int(p.strand_offset_min()))) return false;
+  fixed_mpfi r(K.prec), th(K.prec);
+  theorem_radius(r, K, z.T);
   const auto& f = pr.lobes.front();
-  fixed_mpfi th(K.prec);
-  mpfi_mul_si(th, K.pi, long(f.k));
-  if (f.m < 0) mpfi_sub(th, th, U);
-  else mpfi_add(th, th, U);
-  mpfi_mul_ui(th, th, 2);
-  mpfi_div_si(th, th, a);
+  minimiser_theta(th, K, big_int(a), lobe_frame<big_int>{to_big(f.k), to_big(f.j), to_big(f.m)}, z.U);
   if (!fixed_narrow(r, 40) || !fixed_narrow(th, 40)) return false;
   pr.r_lo = r.lo();
   pr.r_hi = r.hi();

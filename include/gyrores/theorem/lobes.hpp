@@ -1,0 +1,92 @@
+// The integer half of the lattice theorem (proofs/lattice-theorem.md, id "lattice-theorem/1"):
+// which lobes hold the global minimisers of R, found by one modular inverse, and the paper's
+// fast node. Exact integers only (L: int64, int128 or big_int); nothing here is a real number.
+//
+// Lobe frames (model/resonant.hpp): integers k, j with m = (2j+1) a - 2 k b, a = tau + sigma,
+// b = tau - sigma. The theorem (items 4, 5): the global minimisers are the points u = sign(m) u*
+// of exactly the lobes whose frame has |m| = m_min, where m_min = 0, 1, 2 as a = 2 mod 4, a odd,
+// a = 0 mod 4: 2 lobes (m = +-1) for delta odd, 4 (m = +-2, twice each) for delta = 0 mod 4.
+// A minimiser's place on [0, 2 pi) is decided by integers: theta = 2 (k pi + u)/a with
+// |u| < pi/2, so lobes are ordered by k, and a k = 0 lobe with u < 0 wraps to just below 2 pi.
+// No theta formed in floating point is ever compared or reduced mod 2 pi.
+#pragma once
+#include <algorithm>
+#include <vector>
+
+#include <gyrores/core/integer.hpp>
+#include <gyrores/model/resonant.hpp>
+
+namespace gyrores {
+
+inline constexpr const char* lattice_theorem_id = "lattice-theorem/1";
+
+// m_min = min over N of |a - 4N|: 0 for a = 2 mod 4 (delta = 2 mod 4, degenerate), 1 for a odd,
+// 2 for a = 0 mod 4. The same integer as resonant_pair::strand_offset_min(), from a alone.
+template <class L> int theorem_m_min(const L& a) {
+  const int r = int(int_mod(a, L(4)));
+  return r == 2 ? 0 : (r % 2 == 1 ? 1 : 2);
+}
+
+// The pass frame: the frame with m = +m_min (m_min = 1 or 2), by one modular inverse.
+//   delta odd:       2j+1 = a^{-1} mod 2b,        k = ((2j+1) a - 1)/(2b)
+//   delta = 0 mod 4: 2j+1 = (a/2)^{-1} mod b,     k = ((2j+1) a/2 - 1)/b
+// Precondition (not checked): delta != 2 mod 4.
+template <class L> lobe_frame<L> pass_frame(const L& a, const L& b) {
+  const bool odd = int_mod(b, L(2)) == 1;
+  const L ah = odd ? a : L(a / 2), bh = odd ? b : L(b / 2);
+  const L mod = 2 * bh;
+  const L inverse = mod == 2 ? L(1) : int_inverse_mod(ah, mod);  // odd: ah * inverse = 1 mod an even number
+  const L j = (inverse - 1) / 2;
+  const L k = ((2 * j + 1) * ah - 1) / mod;
+  return {k, j, L(odd ? 1 : 2)};
+}
+
+// Frame (k, j, m) rewritten with k in [0, a): k -> k - t a keeps m when j -> j - t b.
+template <class L> lobe_frame<L> lobe_frame_reduced(const lobe_frame<L>& f, const L& a, const L& b) {
+  const L t = int_floor_div(f.k, a);
+  return {L(f.k - t * a), L(f.j - t * b), f.m};
+}
+
+// The place of a minimiser lobe on [0, 2 pi) (k reduced): k, or a for the k = 0 lobe with m < 0
+// (its minimiser u = -u* lies just below 2 pi).
+template <class L> L lobe_order_key(const lobe_frame<L>& f, const L& a) { return f.k == 0 && f.m < 0 ? a : f.k; }
+
+// The lobes of the global minimisers over one period, k in [0, a), in increasing theta (item 4
+// of the theorem). Degenerate pairs (m_min = 0): the two lobes of the zeros pi/2 and 3 pi/2
+// (u = 0, m = 0).
+template <class L> std::vector<lobe_frame<L>> minimiser_lobes(const L& a, const L& b) {
+  std::vector<lobe_frame<L>> out;
+  if (theorem_m_min(a) == 0) {
+    out.push_back(lobe_frame_of(a, b, L(a / 4), L((b - 2) / 4)));
+    out.push_back(lobe_frame_of(a, b, L(3 * (a / 4)), L((3 * b - 2) / 4)));
+    return out;
+  }
+  const auto pass = pass_frame(a, b);
+  out.push_back(pass);
+  out.push_back(lobe_mirror(pass, a, b));
+  if (pass.m == 2) {
+    const auto s = lobe_shift(pass, a, b);
+    out.push_back(s);
+    out.push_back(lobe_mirror(s, a, b));
+  }
+  for (auto& f : out) f = lobe_frame_reduced(f, a, b);
+  std::sort(out.begin(), out.end(),
+            [&](const auto& x, const auto& y) { return lobe_order_key(x, a) < lobe_order_key(y, a); });
+  return out;
+}
+
+// The paper's fast node k = round(a/(2b)) for a, b > 0, exactly: {k, tie}; on a tie
+// (a/(2b) = k + 1/2, which for a coprime pair happens exactly when b = 1) both k and k + 1 are
+// the paper's nodes and `k` is the smaller. The lobe's offset is m = a - 2 k b (frame j = 0),
+// |m| <= b.
+template <class L> struct paper_node {
+  L k;
+  bool tie;
+};
+template <class L> paper_node<L> paper_fast_node(const L& a, const L& b) {
+  const L twob = 2 * b;
+  if (int_mod(a, twob) == b) return {L((a - b) / twob), true};
+  return {int_floor_div(L(a + b), twob), false};
+}
+
+}  // namespace gyrores

@@ -1,0 +1,83 @@
+// The scalar equations of the lattice theorem (proofs/lattice-theorem.md) and of the paper, solved
+// as points in double (the fast paths: sweep rows, the design catalogue, figures) and as proved
+// enclosures at an explicit precision (everything printed, the certificates, certified sweeps).
+//
+//   theorem  H(u) = x u + arctan(x tan u) = mu = pi m/(2a), 0 < m, unique root in (0, pi/2)
+//            (u* for m = m_min; the paper's lobe root theta_c for the fast node's |m|);
+//   paper    u + tan u = s, unique root in (-pi/2, pi/2) (the x -> 0 limit, divided by x).
+//
+// Enclosures (nothing here reads a process-wide precision: every object carries its own, so
+// all of it runs on any number of threads):
+//  1. A point by one Newton ladder (newton_ladder below): levels of precision, each at most 4 times
+//     the accuracy of the level before, then the last level at full precision. Near a centre c
+//     every tangent comes from tan c (and tan(mu - x c)) and the addition formula
+//     tan(c + d) = (tan c + tan d)/(1 - tan c tan d), tan d = d + d^3/3 + r (tan_shift).
+//  2. A bracket [lo, hi] about the point, proved. Theorem: for 0 < u < pi/2 the angle
+//     w = mu - x u lies in (-pi/2, pi/2) (mu <= pi/2, x u < pi/2), where tan increases, so
+//     H(u) < mu iff x tan u < tan w. Paper: g(u) = u + tan u increases on (-pi/2, pi/2). Both
+//     sides are enclosed in MPFI from Arb's enclosures of the centre's tangents, the addition
+//     formula and the remainder |r| <= |d|^5/7 for |d| <= 1/4 (tan's Taylor coefficients are
+//     positive, so 0 <= r <= d^5 (tan(1/4) - 1/4 - 1/192) 4^4 < 0.137 d^5 for d >= 0; r is odd).
+//  3. From the bracket: T = tan([lo, hi]) (tan increases), and for the theorem
+//     sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u, increasing in t:
+//     r_res = v sqrt(G(u*)) over T (theorem_radius).
+#pragma once
+#include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/integer.hpp>
+#include <gyrores/model/pair.hpp>
+
+namespace gyrores {
+
+// ---- points in double ----
+
+// H^{-1}(mu) for 0 < x < 1, 0 < mu < (1 + x) pi/2, by safeguarded Newton on [0, pi/2] (TOMS 748
+// if it does not converge); accurate to about an ulp. compute_error if neither converges.
+double theorem_root_double(double x, double mu);
+
+// The root of u + tan u = s in (-pi/2, pi/2) (TOMS 748 on u - arctan(s - u)), to about 4 ulp.
+double paper_root_double(double s);
+
+// ---- enclosures at an explicit precision ----
+
+// The pair's constants as intervals at one precision.
+struct theorem_constants {
+  explicit theorem_constants(mpfr_prec_t p) : prec(p), a(p), b(p), x(p), x2(p), s1mx2(p), sqrt_ts(p), pi(p) {}
+  mpfr_prec_t prec;
+  // a, b, x = b/a, x^2, sqrt(1-x^2) = 2 sqrt(tau sigma)/a, sqrt(tau sigma), pi
+  fixed_mpfi a, b, x, x2, s1mx2, sqrt_ts, pi;
+};
+void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p);
+
+// An enclosure of a root: U holds it, T = tan(U). `centre` is the last centre of the ladder,
+// tc and wc enclosures of tan(centre) and (theorem only) tan(mu - x centre).
+struct root_enclosure {
+  explicit root_enclosure(mpfr_prec_t p) : u(p), centre(p), U(p), T(p), tc(p), wc(p), mu(p) {}
+  fixed_mpfr u, centre;   // the ladder's point, the last centre
+  fixed_mpfi U, T;        // the proved bracket and tan over it
+  fixed_mpfi tc, wc, mu;  // tan(centre), tan(mu - x centre), mu (theorem) or s (paper)
+};
+
+// The theorem's root for offset m >= 1 (mu = pi m/(2a) < pi/2: m < a, true for m_min and the
+// fast node's |m|): r.U is a proved bracket of H^{-1}(mu) about the ladder's point with relative
+// half-width 2^-(prec - 16), r.T = tan(r.U). False when the proof fails at this precision (the
+// caller doubles it); never a wrong enclosure.
+bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
+
+// The ladder alone (step 1): r.u, r.centre, r.tc, r.wc, r.mu for offset m; false if the centre's
+// enclosures could not be formed. The certificate brackets r.u with decimal ends itself.
+bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m);
+
+// Step 2 for the theorem: true if H(lo) < mu < H(hi) is proved for every lo in LO and hi in HI
+// (then the root lies in (lo, hi)); T receives tan([lo, hi]). False (nothing proved) unless
+// 0 < LO, HI < pi/2 and both lie within 2^-10 of r.centre.
+bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& LO,
+                           const fixed_mpfi& HI, fixed_mpfi& T);
+
+// The paper's root of u + tan u = s for s = pi m/(2b) (any integer m with |m| <= b): as
+// prove_theorem_root. m = 0 gives the exact root 0.
+bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
+
+// Step 3: r = sqrt(G) over T = tan(U) (v = 1).
+void theorem_radius(fixed_mpfi& r, const theorem_constants& K, const fixed_mpfi& T);
+
+}  // namespace gyrores

@@ -1,0 +1,379 @@
+// include/gyrores/theorem/pair_report.hpp: every real of a pair's report, proved and rounded.
+#include <gyrores/theorem/pair_report.hpp>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/rational.hpp>
+#include <gyrores/theorem/lobes.hpp>
+#include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/root.hpp>
+
+namespace gyrores {
+
+namespace {
+
+using iv = fixed_mpfi;
+
+constexpr unsigned max_report_bits = 1u << 20;
+
+void check_digits(unsigned digits) {
+  if (digits < 1 || digits > 10000) throw usage_error("digits must be in [1, 10000], got " + std::to_string(digits));
+}
+
+// Rounds the enclosures of one precision into proved_reals; remembers the first field it could
+// not decide (the precision then doubles).
+class rounder {
+ public:
+  explicit rounder(unsigned digits) : digits_(digits) {}
+  void operator()(proved_real& out, const iv& x, const char* name) {
+    if (!enclosure_rounding(x.left(), x.right(), digits_, out.value)) {
+      if (undecided_.empty()) undecided_ = name;
+      return;
+    }
+    out.enclosure = {format_scientific(x.left(), digits_ + 3, MPFR_RNDD), format_scientific(x.right(), digits_ + 3, MPFR_RNDU)};
+  }
+  // A field whose exact value is the rational q (x: its enclosure at this precision).
+  void exact(proved_real& out, const big_rational& q, iv& x) {
+    out.value = format_rational_scientific(q, digits_);
+    mpfi_set_q(x, q.backend().data());
+    out.enclosure = {format_scientific(x.left(), digits_ + 3, MPFR_RNDD), format_scientific(x.right(), digits_ + 3, MPFR_RNDU)};
+  }
+  const std::string& undecided() const { return undecided_; }
+
+ private:
+  unsigned digits_;
+  std::string undecided_;
+};
+
+// Calls fill(bits, rounder) at doubling precisions from `start` until it succeeds (its proofs
+// held) with every rounding decided.
+template <class Fill> void refine(const resonant_pair<big_int>& p, unsigned digits, unsigned start, Fill&& fill) {
+  std::string last = "a proof of the root";
+  for (unsigned bits = start; bits <= max_report_bits; bits *= 2) {
+    rounder r(digits);
+    if (!fill(bits, r)) continue;
+    if (r.undecided().empty()) return;
+    last = "the rounding of " + r.undecided();
+  }
+  throw compute_error("pair " + p.str() + ": " + last + " was not decided to " + std::to_string(digits) +
+                      " digits within " + std::to_string(max_report_bits) + " bits");
+}
+
+big_int bit_length(const big_int& v) { return big_int(boost::multiprecision::msb(v) + 1); }
+
+// The exact rationals of a pair (pair_report.hpp): squares decide which fields are rational.
+struct exact_values {
+  big_rational v;
+  std::optional<big_rational> n, rho0, omega1, omega2;
+};
+
+exact_values exact_values_of(const resonant_pair<big_int>& p, const std::string& qdot0) {
+  exact_values e;
+  e.v = parse_rational(qdot0, "qdot0");
+  if (!(e.v > 0)) throw usage_error("qdot0 must be > 0, got " + qdot0);
+  const big_int a = p.order(), b = big_int(p.delta());
+  big_int rts, rt, rs;
+  if (int_is_square(big_int(p.tau() * p.sigma()), rts)) {
+    e.n = big_rational(b, rts);
+    e.rho0 = e.v * big_rational(rts, a);
+  }
+  if (int_is_square(p.tau(), rt) && int_is_square(p.sigma(), rs)) {
+    e.omega1 = big_rational(rt, rs);
+    e.omega2 = big_rational(rs, rt);
+  }
+  return e;
+}
+
+// The model's fields: beat ratio a/b, qdot0, n = b/sqrt(tau sigma), omega1 = sqrt(tau/sigma),
+// omega2 = 1/omega1, rho0 = v sqrt(tau sigma)/a, t_min_paper = pi/n.
+void model_fields(pair_report& r, const theorem_constants& K, const resonant_pair<big_int>& p, const exact_values& e,
+                  const iv& v, rounder& round) {
+  iv x(K.prec), y(K.prec);
+  round.exact(r.beat_ratio, big_rational(p.order(), big_int(p.delta())), x);
+  round.exact(r.qdot0, e.v, x);
+  if (e.n) round.exact(r.n, *e.n, x);
+  else {
+    mpfi_div(x, K.b, K.sqrt_ts);
+    round(r.n, x, "n");
+  }
+  if (e.omega1) {
+    round.exact(r.omega1, *e.omega1, x);
+    round.exact(r.omega2, *e.omega2, x);
+  } else {
+    mpfi_set_z(y, p.tau().backend().data());
+    mpfi_set_z(x, p.sigma().backend().data());
+    mpfi_div(x, y, x);
+    mpfi_sqrt(x, x);
+    round(r.omega1, x, "omega1");
+    mpfi_ui_div(x, 1, x);
+    round(r.omega2, x, "omega2");
+  }
+  if (e.rho0) round.exact(r.rho0, *e.rho0, x);
+  else {
+    mpfi_mul(x, v, K.sqrt_ts);
+    mpfi_div(x, x, K.a);
+    round(r.rho0, x, "rho0");
+  }
+  mpfi_mul(x, K.pi, K.sqrt_ts);
+  mpfi_div(x, x, K.b);
+  round(r.t_min_paper, x, "t_min_paper");
+}
+
+// The minimum's fields from its enclosures.
+void minimum_fields(pair_report& r, const theorem_constants& K, const minimum_enclosure& M, const exact_values& e,
+                    rounder& round) {
+  iv x(K.prec);
+  if (r.degenerate) {
+    round.exact(r.r_res, 0, x);
+    round.exact(r.h_min, 0, x);
+    round.exact(r.h_z_max, e.v * e.v / 2, x);
+  } else {
+    round(r.r_res, M.r_res, "r_res");
+    round(r.h_min, M.h_min, "h_min");
+    round(r.h_z_max, M.h_z_max, "h_z_max");
+  }
+  r.minimisers.assign(M.minimisers.size(), {});
+  for (std::size_t i = 0; i < M.minimisers.size(); ++i) round(r.minimisers[i], *M.minimisers[i], "minimisers");
+  r.theta_first = r.minimisers.front();
+  mpfi_mul(x, K.sqrt_ts, *M.minimisers.front());
+  round(r.t_first, x, "t_first");
+}
+
+// Root enclosures by offset |m|, each proved once per precision (the tie's two lobes, m_min and
+// the fast node often share them).
+class root_cache {
+ public:
+  root_cache(const theorem_constants& K, const resonant_pair<big_int>& p) : K_(K), p_(p) {}
+  // H^{-1}(pi |m|/(2a)) (theorem) or the root of u + tan u = pi |m|/(2b) (paper); nullptr if
+  // the proof failed at this precision.
+  const root_enclosure* get(const big_int& m, bool theorem) {
+    auto& slot = (theorem ? theorem_ : paper_)[m];
+    if (!slot) {
+      slot = std::make_unique<root_enclosure>(K_.prec);
+      ok_[{m, theorem}] = theorem ? prove_theorem_root(*slot, K_, m) : prove_paper_root(*slot, K_, m);
+    }
+    return ok_[{m, theorem}] ? slot.get() : nullptr;
+  }
+  // Seeds the theorem's root for m_min from the minimum's proof.
+  void put_theorem(const big_int& m, const root_enclosure& r) {
+    auto& slot = theorem_[m];
+    slot = std::make_unique<root_enclosure>(K_.prec);
+    mpfi_set(slot->U, r.U);
+    mpfi_set(slot->T, r.T);
+    ok_[{m, true}] = true;
+  }
+
+ private:
+  const theorem_constants& K_;
+  const resonant_pair<big_int>& p_;
+  std::map<big_int, std::unique_ptr<root_enclosure>> theorem_, paper_;
+  std::map<std::pair<big_int, bool>, bool> ok_;
+};
+
+// U (and T = tan U) of a signed root: the cached root of |m|, negated for m < 0; exact 0 for m = 0.
+bool signed_root(iv& U, iv* T, root_cache& cache, const big_int& m, bool theorem) {
+  if (m == 0) {
+    mpfi_set_ui(U, 0);
+    if (T) mpfi_set_ui(*T, 0);
+    return true;
+  }
+  const root_enclosure* r = cache.get(big_int(abs(m)), theorem);
+  if (!r) return false;
+  mpfi_set(U, r->U);
+  if (T) mpfi_set(*T, r->T);
+  if (m < 0) {
+    mpfi_neg(U, U);
+    if (T) mpfi_neg(*T, *T);
+  }
+  return true;
+}
+
+// theta = 2 (k pi + U)/a.
+void lobe_theta(iv& out, const theorem_constants& K, const big_int& k, const iv& U) {
+  iv kk(K.prec);
+  mpfi_set_z(kk, k.backend().data());
+  mpfi_mul(out, K.pi, kk);
+  mpfi_add(out, out, U);
+  mpfi_mul_2ui(out, out, 1);
+  mpfi_div(out, out, K.a);
+}
+
+// The enclosures of one paper lobe k: s, u_asy (and tan u_asy in Ta), theta_asy, u_c (in Uc),
+// theta_c, error, bound, ratio.
+struct lobe_enclosures {
+  explicit lobe_enclosures(mpfr_prec_t p) : s(p), u_asy(p), Ta(p), theta_asy(p), Uc(p), Tc(p), theta_c(p), error(p), bound(p), ratio(p) {}
+  iv s, u_asy, Ta, theta_asy, Uc, Tc, theta_c, error, bound, ratio;
+};
+
+bool prove_lobe(lobe_enclosures& L, const theorem_constants& K, root_cache& cache, const big_int& k, const big_int& m) {
+  if (!signed_root(L.u_asy, &L.Ta, cache, m, false) || !signed_root(L.Uc, &L.Tc, cache, m, true)) return false;
+  mpfi_set_z(L.s, m.backend().data());
+  mpfi_mul(L.s, L.s, K.pi);
+  mpfi_div(L.s, L.s, K.b);
+  mpfi_div_2ui(L.s, L.s, 1);
+  lobe_theta(L.theta_asy, K, k, L.u_asy);
+  lobe_theta(L.theta_c, K, k, L.Uc);
+  // error = 2 |u_c - u_asy|/a: the difference of the two roots, not of the two thetas.
+  mpfi_sub(L.error, L.Uc, L.u_asy);
+  mpfi_abs(L.error, L.error);
+  mpfi_mul_2ui(L.error, L.error, 1);
+  mpfi_div(L.error, L.error, K.a);
+  mpfi_sqr(L.bound, K.pi);
+  mpfi_mul(L.bound, L.bound, K.pi);
+  mpfi_mul(L.bound, L.bound, K.x2);
+  mpfi_div(L.bound, L.bound, K.a);
+  mpfi_div(L.ratio, L.error, L.bound);
+  return true;
+}
+
+std::vector<big_int> fast_nodes(const big_int& a, const big_int& b) {
+  const auto node = paper_fast_node(a, b);
+  std::vector<big_int> ks{node.k};
+  if (node.tie) ks.push_back(big_int(node.k + 1));
+  return ks;
+}
+
+std::string asymptotic_remarks(const resonant_pair<big_int>& p, bool tie) {
+  std::string reason;
+  if (tie) reason = "a/(2b) is a half-integer (b = 1): both lobes k = (a-1)/2 and (a+1)/2 are reported (mirror images)";
+  if (p.degenerate()) {
+    if (!reason.empty()) reason += "; ";
+    reason += "degenerate pair (delta = 2 mod 4): r_res = 0 exactly at theta = pi/2 (integer arithmetic); the "
+              "lobe root near pi/b is still reported, and it is that zero only when b = 2";
+  }
+  return reason;
+}
+
+// r_res_asy = v x |sin u_a tan u_a| = v x t^2/sqrt(1 + t^2), t = tan u_a (|u_a| < pi/2), and its
+// relative error against r_res (absolute when r_res = 0: degenerate pairs, where both are 0).
+bool asymptotic_radius(pair_report& r, const theorem_constants& K, root_cache& cache, const minimum_enclosure& M,
+                       const iv& v, rounder& round) {
+  iv U(K.prec), T(K.prec), ra(K.prec), x(K.prec);
+  if (!signed_root(U, &T, cache, big_int(r.m_min), false)) return false;
+  mpfi_sqr(ra, T);
+  mpfi_add_ui(x, ra, 1);
+  mpfi_sqrt(x, x);
+  mpfi_div(ra, ra, x);
+  mpfi_mul(ra, ra, K.x);
+  mpfi_mul(ra, ra, v);
+  r.r_res_asy.emplace();
+  r.r_res_asy_rel_error.emplace();
+  round(*r.r_res_asy, ra, "r_res_asy");
+  mpfi_sub(x, ra, M.r_res);
+  mpfi_abs(x, x);
+  if (r.m_min > 0) mpfi_div(x, x, M.r_res);
+  round(*r.r_res_asy_rel_error, x, "r_res_asy_rel_error");
+  return true;
+}
+
+bool asymptotic_fields(pair_report& r, const theorem_constants& K, const resonant_pair<big_int>& p, root_cache& cache,
+                       const minimum_enclosure& M, const iv& v, rounder& round) {
+  const big_int a = p.order(), b = big_int(p.delta());
+  r.lobes.clear();
+  for (const big_int& k : fast_nodes(a, b)) {
+    paper_lobe_report lo;
+    lo.k = k;
+    lo.m = a - 2 * k * b;
+    lo.holds_global_min = abs(lo.m) == r.m_min;
+    lobe_enclosures L(K.prec);
+    if (!prove_lobe(L, K, cache, k, lo.m)) return false;
+    round(lo.s, L.s, "asymptotic s");
+    round(lo.u_asy, L.u_asy, "u_asy");
+    round(lo.theta_asy, L.theta_asy, "theta_asy");
+    round(lo.theta_c, L.theta_c, "theta_c");
+    round(lo.error, L.error, "the asymptotic error");
+    round(lo.bound, L.bound, "the asymptotic bound");
+    round(lo.ratio, L.ratio, "the asymptotic ratio");
+    r.lobes.push_back(std::move(lo));
+  }
+  return asymptotic_radius(r, K, cache, M, v, round);
+}
+
+// Guard bits beyond the digits: 32, plus 2 log2(a) where the asymptotics cancel (theta_c -
+// theta_asy is O(x^2 u^3) against u; r_res_asy - r_res is O(x^2) relative).
+unsigned start_bits(const resonant_pair<big_int>& p, unsigned digits, bool asymptotics) {
+  unsigned bits = digits10_to_bits(digits) + 32;
+  if (asymptotics && 2 * big_int(p.delta()) < p.order()) bits += 2 * unsigned(boost::multiprecision::msb(p.order()) + 1);
+  return bits;
+}
+
+}  // namespace
+
+pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt) {
+  check_digits(opt.digits);
+  const exact_values e = exact_values_of(p, opt.qdot0);
+  const big_int a = p.order(), b = big_int(p.delta());
+  pair_report r;
+  r.digits = opt.digits;
+  r.degenerate = p.degenerate();
+  r.m_min = p.strand_offset_min();
+  r.asymptotic_applicable = opt.asymptotics && 2 * b < a;
+  if (opt.asymptotics && !r.asymptotic_applicable)
+    r.asymptotic_reason = "x = b/a = " + b.str() + "/" + a.str() +
+                          " >= 1/2: the lobe equation x tan u = tan(mu - x u) need not have a unique root in "
+                          "|u| < pi/2 and the slow-node reduction (mu and x u small) does not apply";
+  if (r.asymptotic_applicable) r.asymptotic_reason = asymptotic_remarks(p, paper_fast_node(a, b).tie);
+  refine(p, opt.digits, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
+    r.bits = bits;
+    theorem_constants K(bits);
+    set_theorem_constants(K, p);
+    iv v(bits);
+    mpfi_set_q(v, e.v.backend().data());
+    minimum_enclosure M(bits);
+    if (!prove_minimum(M, K, p, v)) return false;
+    model_fields(r, K, p, e, v, round);
+    minimum_fields(r, K, M, e, round);
+    if (!r.asymptotic_applicable) return true;
+    root_cache cache(K, p);
+    if (r.m_min > 0) cache.put_theorem(big_int(r.m_min), M.u_star);
+    return asymptotic_fields(r, K, p, cache, M, v, round);
+  });
+  return r;
+}
+
+paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_int& k, unsigned digits) {
+  check_digits(digits);
+  const big_int a = p.order(), b = big_int(p.delta());
+  const auto ks = 2 * b < a ? fast_nodes(a, b) : std::vector<big_int>{};
+  if (std::find(ks.begin(), ks.end(), k) == ks.end())
+    throw compute_error("pair " + p.str() + " has no asymptotic lobe k = " + k.str());
+  const big_int m = a - 2 * k * b;
+  paper_lobe_detail d;
+  refine(p, digits, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
+    theorem_constants K(bits);
+    set_theorem_constants(K, p);
+    root_cache cache(K, p);
+    lobe_enclosures L(bits);
+    if (!prove_lobe(L, K, cache, k, m)) return false;
+    iv w(bits), q(bits), c(bits), t(bits);
+    // q'(theta_asy) = (-1)^k cos u cos w (tan w - w), w = x tan u_asy (pair_report.hpp).
+    mpfi_mul(w, K.x, L.Ta);
+    mpfi_tan(t, w);
+    mpfi_sub(q, t, w);
+    mpfi_cos(c, w);
+    mpfi_mul(q, q, c);
+    mpfi_cos(c, L.u_asy);
+    mpfi_mul(q, q, c);
+    if (k % 2 != 0) mpfi_neg(q, q);
+    round(d.qdot_asy, q, "qdot_asy");
+    mpfi_mul(c, q, K.a);  // q'/rho0, rho0 = sqrt(tau sigma)/a
+    mpfi_div(c, c, K.sqrt_ts);
+    round(d.qdot_asy_over_rho0, c, "qdot_asy/rho0");
+    round(d.u_asy, L.u_asy, "u_asy");
+    round(d.theta_asy, L.theta_asy, "theta_asy");
+    round(d.error, L.error, "the asymptotic error");
+    round(d.bound, L.bound, "the asymptotic bound");
+    round(d.theta_c, L.theta_c, "theta_c");
+    theorem_radius(c, K, L.Tc);  // sqrt(G) is even in u: tan of u_c's sign does not matter
+    round(d.r_c, c, "r_c");
+    return true;
+  });
+  return d;
+}
+
+}  // namespace gyrores

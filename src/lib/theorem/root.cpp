@@ -1,0 +1,456 @@
+// include/gyrores/theorem/root.hpp: the theorem's and the paper's roots, points and enclosures.
+#include <gyrores/theorem/root.hpp>
+
+#include <arb.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/roots.hpp>
+
+namespace gyrores {
+
+namespace {
+
+using fr = fixed_mpfr;
+using iv = fixed_mpfi;
+
+// H(u) - mu and H'(u) = x + x (1 + t^2)/(1 + x^2 t^2), t = tan u.
+std::pair<double, double> theorem_h(double x, double mu, double u) {
+  const double t = std::tan(u), xt = x * t;
+  return {x * u + std::atan(xt) - mu, x + x * (1 + t * t) / (1 + xt * xt)};
+}
+
+}  // namespace
+
+double theorem_root_double(double x, double mu) {
+  constexpr double h = std::numbers::pi / 2;
+  // Start: mu/(2x) (H ~ 2xu for small u and x; H ~ 2u as x -> 1), kept inside the bracket.
+  const double u0 = std::min(mu / (2 * x), 0.9 * h);
+  newton_result<double> nr;
+  auto fdf = [&](double u) { return theorem_h(x, mu, u); };
+  if (root_newton_safeguarded(fdf, 0.0, h, -1, u0, mu / 4, nr, 200)) return nr.root;
+  auto f = [&](double u) { return theorem_h(x, mu, u).first; };
+  return root_bracketed(f, 0.0, h, f(0.0), f(h), default_root_tolerance(mu / 4),
+                        "lattice theorem: the root of x u + arctan(x tan u) = mu")
+      .root;
+}
+
+double paper_root_double(double s) {
+  if (s == 0) return 0;
+  constexpr double h = std::numbers::pi / 2;
+  // phi(u) = u - arctan(s - u): phi(-pi/2) < 0 < phi(pi/2) for every s, 1 < phi' <= 2.
+  auto phi = [&](double u) { return u - std::atan(s - u); };
+  const double floor = std::min(1.0, std::fabs(s) / 8);
+  return root_bracketed(phi, -h, h, phi(-h), phi(h), root_tolerance<double>{4 * 0x1p-52, floor},
+                        "paper: the root of u + tan u = s")
+      .root;
+}
+
+void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p) {
+  const big_int a = p.order(), b = big_int(p.delta()), ts = big_int(p.tau() * p.sigma());
+  mpfi_set_z(K.a, a.backend().data());
+  mpfi_set_z(K.b, b.backend().data());
+  mpfi_div(K.x, K.b, K.a);
+  mpfi_sqr(K.x2, K.x);
+  mpfi_set_z(K.sqrt_ts, ts.backend().data());
+  mpfi_sqrt(K.sqrt_ts, K.sqrt_ts);
+  mpfi_mul_ui(K.s1mx2, K.sqrt_ts, 2);
+  mpfi_div(K.s1mx2, K.s1mx2, K.a);
+  mpfi_const_pi(K.pi);
+}
+
+namespace {
+
+// out = pi m/(2 d), d = a or b.
+void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const iv& d) {
+  iv t(K.prec);
+  mpfi_set_z(t, m.backend().data());
+  mpfi_mul(out, K.pi, t);
+  mpfi_div(out, out, d);
+  mpfi_div_2ui(out, out, 1);
+}
+
+// ---- tangents ----
+
+// tan(c + d) from tc = tan c and d, points (Newton: the d^5 remainder is below the precision).
+void tan_shift_point(fr& out, mpfr_srcptr tc, mpfr_srcptr d) {
+  const mpfr_prec_t p = mpfr_get_prec(out);
+  fr td(p), den(p);
+  mpfr_sqr(td, d, MPFR_RNDN);
+  mpfr_mul(td, td, d, MPFR_RNDN);
+  mpfr_div_ui(td, td, 3, MPFR_RNDN);
+  mpfr_add(td, td, d, MPFR_RNDN);
+  mpfr_mul(den, tc, td, MPFR_RNDN);
+  mpfr_ui_sub(den, 1, den, MPFR_RNDN);
+  mpfr_add(out, tc, td, MPFR_RNDN);
+  mpfr_div(out, out, den, MPFR_RNDN);
+}
+
+// tan(c + d) for every d in D (|D| <= 1/4) and tan c in TC: (TC + TD)/(1 - TC TD) with
+// TD = D + D^3/3 + [-1, 1] |D|^5/7 (the header comment, step 2).
+void tan_shift(iv& out, const iv& tc, const iv& d) {
+  const mpfr_prec_t p = mpfi_get_prec(out);
+  iv td(p), r(p), den(p);
+  fr m(p), m2(p), mneg(p);
+  mpfi_mag(m, d);  // max |d| (exact: an endpoint's absolute value)
+  mpfr_sqr(m2, m, MPFR_RNDU);
+  mpfr_sqr(m2, m2, MPFR_RNDU);
+  mpfr_mul(m, m, m2, MPFR_RNDU);
+  mpfr_div_ui(m, m, 7, MPFR_RNDU);
+  mpfr_neg(mneg, m, MPFR_RNDN);
+  mpfi_interv_fr(r, mneg, m);
+  mpfi_sqr(td, d);
+  mpfi_mul(td, td, d);
+  mpfi_div_ui(td, td, 3);
+  mpfi_add(td, td, d);
+  mpfi_add(td, td, r);
+  mpfi_mul(den, tc, td);
+  mpfi_ui_sub(den, 1, den);
+  mpfi_add(out, tc, td);
+  mpfi_div(out, out, den);
+}
+
+// Arb's error for a small argument |v| ~ 2^-k is not relative to v: k more bits keep the
+// result as accurate, relatively, as the argument (without them the ball of tan(mu - x c) for
+// (10^18+1, 10^18), w ~ 2^-61, came out 2^19 times wider, and the proof needed twice the bits).
+mpfr_prec_t small_argument_bits(mpfr_srcptr v) {
+  return !mpfr_zero_p(v) && mpfr_get_exp(v) < 0 ? -mpfr_get_exp(v) : 0;
+}
+
+// out = an enclosure of tan over W (inside (-pi/2, pi/2)): Arb's arb_tan of the ball holding W
+// (rigorous, and about 3 times cheaper than one MPFR tangent at these precisions), turned into
+// an interval rounded outward. False if Arb's ball is not finite (W too close to a pole).
+bool tan_enclosure(iv& out, const iv& W) {
+  const mpfr_prec_t prec = mpfi_get_prec(out);
+  const mpfr_prec_t work = prec + 8 + small_argument_bits(W.left());
+  arb_t w, t;
+  arb_init(w);
+  arb_init(t);
+  arb_set_interval_mpfr(w, W.left(), W.right(), work);
+  arb_tan(t, w, work);
+  const bool ok = arb_is_finite(t);
+  if (ok) {
+    fr lo(prec), hi(prec);
+    arb_get_interval_mpfr(lo, hi, t);
+    mpfi_interv_fr(out, lo, hi);
+  }
+  arb_clear(w);
+  arb_clear(t);
+  return ok;
+}
+
+// out ~ tan(v) at out's precision, for the ladder's centres (no proof needed there): the
+// midpoint of Arb's ball.
+void tan_point(fr& out, mpfr_srcptr v) {
+  const mpfr_prec_t work = mpfr_get_prec(out) + 8 + small_argument_bits(v);
+  arb_t w, t;
+  arb_init(w);
+  arb_init(t);
+  arf_set_mpfr(arb_midref(w), v);
+  arb_tan(t, w, work);
+  arf_get_mpfr(out, arb_midref(t), MPFR_RNDN);
+  arb_clear(w);
+  arb_clear(t);
+}
+
+// ---- the equations, as Newton steps about a centre ----
+
+// A point of the ladder at precision `prec`: c (the centre), tan c and, for the theorem,
+// tan(mu - x c); x and mu (theorem) or s (paper) as points.
+struct centre_point {
+  explicit centre_point(mpfr_prec_t p) : c(p), tc(p), tw(p), x(p), mu(p) {}
+  fr c, tc, tw, x, mu;
+};
+
+// One Newton step on the theorem's f(u) = tan(mu - x u) - x tan u about the centre (f' =
+// -x (1 + tan^2 w) - x (1 + tan^2 u)), or on the paper's g(u) = u + tan u - s (g' = 2 + tan^2
+// u). Returns the step's size relative to u, as a power of 2 (an upper bound of its exponent).
+long newton_step(fr& u, const centre_point& z, bool theorem) {
+  const mpfr_prec_t p = mpfr_get_prec(u);
+  fr d(p), tu(p), f(p), df(p), t(p);
+  mpfr_sub(d, u, z.c, MPFR_RNDN);
+  tan_shift_point(tu, z.tc, d);
+  mpfr_sqr(df, tu, MPFR_RNDN);
+  if (theorem) {
+    fr e(p), tw(p);
+    mpfr_mul(e, z.x, d, MPFR_RNDN);
+    mpfr_neg(e, e, MPFR_RNDN);
+    tan_shift_point(tw, z.tw, e);
+    mpfr_mul(f, z.x, tu, MPFR_RNDN);
+    mpfr_sub(f, f, tw, MPFR_RNDN);  // -f
+    mpfr_sqr(t, tw, MPFR_RNDN);
+    mpfr_add(df, df, t, MPFR_RNDN);
+    mpfr_add_ui(df, df, 2, MPFR_RNDN);
+    mpfr_mul(df, df, z.x, MPFR_RNDN);  // -f'
+  } else {
+    mpfr_add(f, u, tu, MPFR_RNDN);
+    mpfr_sub(f, f, z.mu, MPFR_RNDN);
+    mpfr_add_ui(df, df, 2, MPFR_RNDN);
+  }
+  mpfr_div(f, f, df, MPFR_RNDN);
+  mpfr_sub(u, u, f, MPFR_RNDN);
+  if (mpfr_zero_p(f)) return -(1L << 30);
+  return long(mpfr_get_exp(f)) - long(mpfr_get_exp(u));
+}
+
+// Newton from u (accurate to about `acc` bits) about the centre z: as many steps as doublings
+// up to the precision, fewer once a step is below 2^-(prec - 6) |u|.
+void newton_about(fr& u, const centre_point& z, bool theorem, unsigned acc) {
+  const long prec = long(mpfr_get_prec(u));
+  int steps = 1;
+  for (unsigned a = acc; 2 * long(a) < prec; a *= 2) ++steps;
+  for (int it = 0; it < steps; ++it)
+    if (newton_step(u, z, theorem) < -(prec - 6)) return;
+}
+
+// The point tangents of a centre at z's precision (the ladder's levels below the last).
+void set_point_tangents(centre_point& z, bool theorem) {
+  tan_point(z.tc, z.c);
+  if (theorem) {
+    const mpfr_prec_t p = mpfr_get_prec(z.c);
+    fr w(p);
+    mpfr_mul(w, z.x, z.c, MPFR_RNDN);
+    mpfr_sub(w, z.mu, w, MPFR_RNDN);
+    tan_point(z.tw, w);
+  }
+}
+
+// The one Newton ladder: u (accurate to about `acc` bits, at r's precision) is refined on levels
+// of at most 4 times the accuracy of the level before, with point tangents at each level's
+// centre; at the last level (full precision) the centre's tangents are Arb enclosures (r.tc,
+// r.wc), and the steps use their midpoints. False if the enclosures could not be formed.
+bool newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, unsigned acc) {
+  const mpfr_prec_t bits = K.prec;
+  fr x(bits), mu(bits);
+  mpfi_mid(x, K.x);
+  mpfi_mid(mu, r.mu);
+  while (true) {
+    const mpfr_prec_t level = std::min<mpfr_prec_t>(bits, mpfr_prec_t(4) * acc);
+    centre_point z(level);
+    mpfr_set(z.c, r.u, MPFR_RNDN);
+    mpfr_set(z.x, x, MPFR_RNDN);
+    mpfr_set(z.mu, mu, MPFR_RNDN);
+    if (level < bits) {
+      fr ul(level);
+      mpfr_set(ul, r.u, MPFR_RNDN);
+      set_point_tangents(z, theorem);
+      newton_about(ul, z, theorem, acc);
+      mpfr_set(r.u, ul, MPFR_RNDN);
+      acc = unsigned(level) - 8;
+      continue;
+    }
+    mpfr_set(r.centre, r.u, MPFR_RNDN);
+    iv C(bits), W(bits);
+    mpfi_set_fr(C, r.centre);
+    if (!tan_enclosure(r.tc, C)) return false;
+    mpfi_mid(z.tc, r.tc);
+    if (theorem) {
+      mpfi_mul(W, K.x, C);
+      mpfi_sub(W, r.mu, W);
+      if (!tan_enclosure(r.wc, W)) return false;
+      mpfi_mid(z.tw, r.wc);
+    }
+    newton_about(r.u, z, theorem, acc);
+    return true;
+  }
+}
+
+// ---- scouts: the ladder's starting points ----
+
+// Beyond 2^900 the pair's integers leave double's exponent range (mu, x, u* underflow).
+bool beyond_double(const iv& v) { return mpfr_get_exp(v.left()) > 900 || mpfr_get_exp(v.right()) > 900; }
+
+// Safeguarded Newton at 64 bits for a pair beyond double's range: fdf(u, f, df) evaluates f
+// and f' (f increasing on [lo, hi], f(lo) < 0 < f(hi)). 64-bit MPFR numbers carry their own
+// precision and exponent range; about 60 bits are accurate on return.
+template <class FDF> void scout_mpfr(fr& u, mpfr_srcptr lo0, mpfr_srcptr hi0, FDF&& fdf) {
+  fr lo(64), hi(64), f(64), df(64), next(64), step(64);
+  mpfr_set(lo, lo0, MPFR_RNDN);
+  mpfr_set(hi, hi0, MPFR_RNDN);
+  for (int it = 0; it < 400; ++it) {
+    fdf(u, f, df);
+    if (mpfr_zero_p(f)) return;
+    if (mpfr_sgn(static_cast<mpfr_srcptr>(f)) < 0) mpfr_set(lo, u, MPFR_RNDN);
+    else mpfr_set(hi, u, MPFR_RNDN);
+    mpfr_div(step, f, df, MPFR_RNDN);
+    mpfr_sub(next, u, step, MPFR_RNDN);
+    if (!(mpfr_cmp(next, lo) > 0 && mpfr_cmp(next, hi) < 0)) {  // bisect (also for df = 0, NaN)
+      mpfr_add(next, lo, hi, MPFR_RNDN);
+      mpfr_div_2ui(next, next, 1, MPFR_RNDN);
+    }
+    mpfr_sub(step, next, u, MPFR_RNDN);
+    mpfr_set(u, next, MPFR_RNDN);
+    mpfr_mul_2si(next, u, -60, MPFR_RNDN);
+    if (mpfr_cmpabs(step, next) <= 0) return;
+  }
+  throw compute_error("lattice theorem: the 64-bit scout of a root did not converge");
+}
+
+// The theorem's root to about 50 bits (double) or 60 (MPFR, beyond double's range) in r.u.
+unsigned theorem_scout(root_enclosure& r, const theorem_constants& K) {
+  if (!beyond_double(K.a)) {
+    fr x(53), mu(53);
+    mpfi_mid(x, K.x);
+    mpfi_mid(mu, r.mu);
+    mpfr_set_d(r.u, theorem_root_double(mpfr_get_d(x, MPFR_RNDN), mpfr_get_d(mu, MPFR_RNDN)), MPFR_RNDN);
+    return 50;
+  }
+  fr x(64), mu(64), lo(64), hi(64), t(64), xt(64);
+  mpfi_mid(x, K.x);
+  mpfi_mid(mu, r.mu);
+  mpfr_set_ui(lo, 0, MPFR_RNDN);
+  mpfr_const_pi(hi, MPFR_RNDD);
+  mpfr_div_2ui(hi, hi, 1, MPFR_RNDD);
+  fr u(64);
+  mpfr_div(u, mu, x, MPFR_RNDN);
+  mpfr_div_2ui(u, u, 1, MPFR_RNDN);  // mu/(2x)
+  scout_mpfr(u, lo, hi, [&](mpfr_srcptr v, fr& f, fr& df) {
+    mpfr_tan(t, v, MPFR_RNDN);
+    mpfr_mul(xt, x, t, MPFR_RNDN);
+    mpfr_atan(f, xt, MPFR_RNDN);
+    mpfr_fma(f, x, v, f, MPFR_RNDN);
+    mpfr_sub(f, f, mu, MPFR_RNDN);
+    mpfr_sqr(t, t, MPFR_RNDN);
+    mpfr_add_ui(t, t, 1, MPFR_RNDN);
+    mpfr_sqr(xt, xt, MPFR_RNDN);
+    mpfr_add_ui(xt, xt, 1, MPFR_RNDN);
+    mpfr_div(df, t, xt, MPFR_RNDN);
+    mpfr_add_ui(df, df, 1, MPFR_RNDN);
+    mpfr_mul(df, df, x, MPFR_RNDN);
+  });
+  mpfr_set(r.u, u, MPFR_RNDN);
+  return 56;
+}
+
+// The paper's root of u + tan u = s in r.u, likewise.
+unsigned paper_scout(root_enclosure& r) {
+  if (!beyond_double(r.mu) && mpfr_get_exp(r.mu.left()) > -900) {
+    fr s(53);
+    mpfi_mid(s, r.mu);
+    mpfr_set_d(r.u, paper_root_double(mpfr_get_d(s, MPFR_RNDN)), MPFR_RNDN);
+    return 50;
+  }
+  fr s(64), lo(64), hi(64), t(64), u(64);
+  mpfi_mid(s, r.mu);
+  mpfr_const_pi(hi, MPFR_RNDD);
+  mpfr_div_2ui(hi, hi, 1, MPFR_RNDD);
+  mpfr_neg(lo, hi, MPFR_RNDN);
+  mpfr_div_2ui(u, s, 1, MPFR_RNDN);  // u + tan u ~ 2u for small s
+  scout_mpfr(u, lo, hi, [&](mpfr_srcptr v, fr& f, fr& df) {
+    mpfr_tan(t, v, MPFR_RNDN);
+    mpfr_add(f, v, t, MPFR_RNDN);
+    mpfr_sub(f, f, s, MPFR_RNDN);
+    mpfr_sqr(df, t, MPFR_RNDN);
+    mpfr_add_ui(df, df, 2, MPFR_RNDN);
+  });
+  mpfr_set(r.u, u, MPFR_RNDN);
+  return 56;
+}
+
+// ---- brackets ----
+
+// The bracket's two ends about the ladder's point: u -+ |u| 2^-(prec - 16).
+void bracket_ends(iv& lo, iv& hi, const root_enclosure& r) {
+  const mpfr_prec_t p = mpfi_get_prec(lo);
+  fr rad(p), end(p);
+  mpfr_abs(rad, r.u, MPFR_RNDN);
+  mpfr_mul_2si(rad, rad, -int(p) + 16, MPFR_RNDU);
+  mpfr_sub(end, r.u, rad, MPFR_RNDD);
+  mpfi_set_fr(lo, end);
+  mpfr_add(end, r.u, rad, MPFR_RNDU);
+  mpfi_set_fr(hi, end);
+}
+
+// d = U - centre, false unless |d| <= 2^-10 (the remainder bound needs |d| <= 1/4).
+bool offset_from_centre(iv& d, const root_enclosure& r, const iv& U) {
+  fr dmax(mpfi_get_prec(d));
+  mpfi_sub_fr(d, U, r.centre);
+  mpfi_mag(dmax, d);
+  return mpfr_cmp_d(dmax, 0x1p-10) <= 0;
+}
+
+// tan U and tan(mu - x U) by the addition formula about the centre.
+bool theorem_end(const theorem_constants& K, const root_enclosure& r, const iv& U, iv& tu, iv& tw) {
+  iv d(K.prec), e(K.prec);
+  if (!offset_from_centre(d, r, U)) return false;
+  tan_shift(tu, r.tc, d);
+  mpfi_mul(e, K.x, d);
+  mpfi_neg(e, e);
+  tan_shift(tw, r.wc, e);
+  return true;
+}
+
+}  // namespace
+
+bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m) {
+  pi_ratio(r.mu, K, m, K.a);
+  return newton_ladder(r, K, true, theorem_scout(r, K));
+}
+
+bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const iv& lo, const iv& hi, iv& T) {
+  iv tu(K.prec), tw(K.prec), half_pi(K.prec);
+  mpfi_div_2ui(half_pi, K.pi, 1);
+  if (mpfr_sgn(lo.left()) <= 0 || mpfr_cmp(hi.right(), half_pi.left()) >= 0) return false;
+  // x tan lo < tan(mu - x lo) and x tan hi > tan(mu - x hi), each side bounded the safe way.
+  if (!theorem_end(K, r, lo, tu, tw)) return false;
+  mpfi_set(T, tu);
+  mpfi_mul(tu, tu, K.x);
+  if (!(mpfr_cmp(tu.right(), tw.left()) < 0)) return false;
+  if (!theorem_end(K, r, hi, tu, tw)) return false;
+  mpfi_put(T, tu);
+  mpfi_mul(tu, tu, K.x);
+  return mpfr_cmp(tu.left(), tw.right()) > 0;
+}
+
+bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
+  if (!theorem_centre_of(r, K, m)) return false;
+  iv lo(K.prec), hi(K.prec);
+  bracket_ends(lo, hi, r);
+  if (!prove_theorem_bracket(K, r, lo, hi, r.T)) return false;
+  mpfi_union(r.U, lo, hi);
+  return true;
+}
+
+bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
+  pi_ratio(r.mu, K, m, K.b);
+  if (m == 0) {
+    mpfr_set_ui(r.u, 0, MPFR_RNDN);
+    mpfi_set_ui(r.U, 0);
+    mpfi_set_ui(r.T, 0);
+    return true;
+  }
+  if (!newton_ladder(r, K, false, paper_scout(r))) return false;
+  iv lo(K.prec), hi(K.prec), half_pi(K.prec), d(K.prec), t(K.prec), g(K.prec);
+  bracket_ends(lo, hi, r);
+  mpfi_div_2ui(half_pi, K.pi, 1);
+  if (mpfr_cmpabs(lo.left(), half_pi.left()) >= 0 || mpfr_cmpabs(hi.right(), half_pi.left()) >= 0) return false;
+  // lo + tan lo < s < hi + tan hi (g = u + tan u increases on (-pi/2, pi/2)).
+  if (!offset_from_centre(d, r, lo)) return false;
+  tan_shift(r.T, r.tc, d);
+  mpfi_add(g, lo, r.T);
+  if (!(mpfr_cmp(g.right(), r.mu.left()) < 0)) return false;
+  if (!offset_from_centre(d, r, hi)) return false;
+  tan_shift(t, r.tc, d);
+  mpfi_add(g, hi, t);
+  if (!(mpfr_cmp(g.left(), r.mu.right()) > 0)) return false;
+  mpfi_put(r.T, t);
+  mpfi_union(r.U, lo, hi);
+  return true;
+}
+
+void theorem_radius(iv& r, const theorem_constants& K, const iv& T) {
+  iv t2(K.prec), d1(K.prec), d2(K.prec);
+  mpfi_sqr(t2, T);
+  mpfi_add_ui(d1, t2, 1);
+  mpfi_mul(d2, t2, K.x2);
+  mpfi_add_ui(d2, d2, 1);
+  mpfi_mul(d1, d1, d2);
+  mpfi_sqrt(d1, d1);
+  mpfi_div(r, t2, d1);
+  mpfi_mul(r, r, K.x);
+  mpfi_mul(r, r, K.s1mx2);
+}
+
+}  // namespace gyrores
