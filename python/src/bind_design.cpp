@@ -39,7 +39,7 @@ pair_filter filter_of(const py::object& beat, std::int64_t exclude_low) {
 
 json values_json(const design_point& p, unsigned digits) {
   const resonant_pair<big_int> bp(big_int(p.tau), big_int(p.sigma));
-  return pair_values_json(bp, verify_pair_values(bp, digits));
+  return pair_values_json(bp, prove_pair_values(bp, digits));
 }
 
 design_problem problem_of(const std::string& text) {

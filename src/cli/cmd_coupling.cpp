@@ -32,7 +32,7 @@ void convergents_text(std::ostringstream& os, const std::vector<coupling_converg
     std::string ak = r.convergent.partial_quotient.str();
     os << "  " << ak << std::string(ak.size() < 7 ? 7 - ak.size() : 1, ' ') << pr
        << std::string(pr.size() < 22 ? 22 - pr.size() : 1, ' ');
-    if (r.values) os << r.values->n << "  " << r.values->r_res << "  " << r.values->t_first << "\n";
+    if (r.values) os << r.values->n.value << "  " << r.values->r_res.value << "  " << r.values->t_first.value << "\n";
     else os << "ratio 1: no pair\n";
   }
 }
@@ -46,8 +46,8 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
      << (r.pair ? " is a perfect square: RESONANT, pair " + r.pair->str() : " is not a perfect square: not resonant") << "\n";
   if (r.pair) {
     os << "  r_res         " << radius_text(*r.pair_values) << "\n"
-       << "  H_q min       " << r.pair_values->h_min << "\n"
-       << "  t_first       " << r.pair_values->t_first << "\n"
+       << "  H_q min       " << r.pair_values->h_min.value << "\n"
+       << "  t_first       " << r.pair_values->t_first.value << "\n"
        << "  (more: gyrores pair " << r.pair->tau().str() << " " << r.pair->sigma().str() << ")\n";
   }
   os << "  pi/|n|        " << r.t_min_paper << "  (the paper's proxy)\n"

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 #include <gyrores/io/json.hpp>
 
 #include "cli_options.hpp"
@@ -23,7 +23,7 @@ struct design_args {
 };
 
 // The ranked pairs with their verified values (verified for the reported pairs only).
-using design_rows = std::vector<std::pair<resonant_pair<big_int>, verified_pair_values>>;
+using design_rows = std::vector<std::pair<resonant_pair<big_int>, pair_report>>;
 
 std::string constraint_text(const design_args& a, const design_options& o) {
   std::ostringstream os;
@@ -124,7 +124,7 @@ std::string run_design(const design_args& a) {
   design_rows rows;
   for (const auto& p : res.ranked) {
     resonant_pair<big_int> bp(big_int(p.tau), big_int(p.sigma));
-    rows.push_back({bp, verify_pair_values(bp, unsigned(a.digits))});
+    rows.push_back({bp, prove_pair_values(bp, unsigned(a.digits))});
   }
   const bool exact_exceeds = a.proxy && !design_time_within(res.ranked.front(), design_time::first_hit, o.tmax);
   return a.json ? design_json(a, res, rows, exact_exceeds) : design_text(a, o, res, rows, exact_exceeds);

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/json.hpp>
 
@@ -28,7 +28,7 @@ struct pareto_args {
 struct pareto_run {
   pareto_orientation orientation;
   std::vector<design_point> pairs, front;
-  std::vector<verified_pair_values> values;
+  std::vector<pair_report> values;
   std::string csv;                  // the CSV file written, or ""
   std::optional<figure_output> fig;
 };
@@ -114,7 +114,7 @@ std::string run_pareto(const pareto_args& a) {
     if (pair_filter_accepts(f, p)) r.pairs.push_back(p);
   if (r.pairs.empty()) throw compute_error("no resonant pair up to order " + std::to_string(a.max_order) + " passes the filters");
   r.front = pareto_front(r.pairs, r.orientation, which);
-  for (const auto& p : r.front) r.values.push_back(verify_pair_values(p.tau, p.sigma, unsigned(a.digits)));
+  for (const auto& p : r.front) r.values.push_back(prove_pair_values(resonant_pair<big_int>(big_int(p.tau), big_int(p.sigma)), unsigned(a.digits)));
   if (!a.out.empty()) r.csv = write_front_csv(a.out, r);
   if (spec)
     r.fig = write_pareto_figure(*spec, r.pairs, r.front, which,

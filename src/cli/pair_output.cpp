@@ -5,13 +5,13 @@
 
 namespace gyrores::cli {
 
-std::string pareto_csv_row(const design_point& p, const verified_pair_values& v) {
+std::string pareto_csv_row(const design_point& p, const pair_report& v) {
   std::ostringstream c;
   c << p.tau << "," << p.sigma << "," << p.order() << "," << p.delta() << "," << (p.degenerate ? "true" : "false") << ","
-    << v.n << "," << v.r_res << "," << v.t_first << "," << v.t_min_paper << "\n";
+    << v.n.value << "," << v.r_res.value << "," << v.t_first.value << "," << v.t_min_paper.value << "\n";
   return c.str();
 }
 
-std::string radius_text(const verified_pair_values& v) { return v.degenerate ? "0 (exact, delta = 2 mod 4)" : v.r_res; }
+std::string radius_text(const pair_report& v) { return v.degenerate ? "0 (exact, delta = 2 mod 4)" : v.r_res.value; }
 
 }  // namespace gyrores::cli

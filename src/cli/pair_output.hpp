@@ -4,7 +4,7 @@
 #include <string>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/model/pair.hpp>
@@ -15,9 +15,9 @@ namespace gyrores::cli {
 
 // The Pareto front CSV (pareto --out, report's pareto-front.csv): header line and one row.
 inline constexpr const char* pareto_csv_header = "tau,sigma,order,delta,degenerate,n,r_res,t_first,t_min_paper\n";
-std::string pareto_csv_row(const design_point& p, const verified_pair_values& v);
+std::string pareto_csv_row(const design_point& p, const pair_report& v);
 
 // r_res for text output: "0 (exact, delta = 2 mod 4)" for degenerate pairs.
-std::string radius_text(const verified_pair_values& v);
+std::string radius_text(const pair_report& v);
 
 }  // namespace gyrores::cli

@@ -55,7 +55,7 @@ json coupling_convergents_json(const std::vector<coupling_convergent>& rows) {
     if (r.values) {
       for (auto [key, value] : {std::pair{"n", &r.values->n}, {"r_res", &r.values->r_res},
                                 {"t_first", &r.values->t_first}, {"t_min_paper", &r.values->t_min_paper}})
-        c[key] = *value;
+        c[key] = value->value;
       c["degenerate"] = r.values->degenerate;
     } else {
       c["note"] = "ratio 1: no resonant pair (tau = sigma)";

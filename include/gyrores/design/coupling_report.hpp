@@ -3,8 +3,11 @@
 // its first time, the infimum over all time, and the continued-fraction convergents of W1/W2 as
 // resonant pairs (coupling.hpp has the mathematics).
 //
-// Digits: every real is a D-digit string accepted by the two-run test of core/verified_digits.hpp
-// (a strong consistency check, not a proof). Impulse qdot0 = 1 throughout.
+// Digits: the resonant pair's values (and the convergents' pairs) are proved: correct roundings of
+// enclosures (theorem/pair_report.hpp). The minimum over a horizon of a coupling that is not
+// resonant, or whose first hit lies beyond the horizon, is a D-digit string accepted by the
+// two-run test of core/verified_digits.hpp (a strong consistency check, not a proof; the report
+// says so). Impulse qdot0 = 1 throughout.
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -13,8 +16,8 @@
 
 #include <gyrores/core/rational.hpp>
 #include <gyrores/design/coupling.hpp>
-#include <gyrores/inscribed/verified_pair.hpp>
 #include <gyrores/model/pair.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 
 namespace gyrores {
 
@@ -45,7 +48,7 @@ struct coupling_report_options {
 struct coupling_convergent {
   ratio_convergent convergent;
   std::optional<resonant_pair<big_int>> pair;   // none for the ratio 1 (p = q)
-  std::optional<verified_pair_values> values;
+  std::optional<pair_report> values;          // proved (theorem/pair_report.hpp)
 };
 
 struct coupling_report {
@@ -53,7 +56,7 @@ struct coupling_report {
   bool n_negative = false;       // n was given < 0 (it mirrors the motion; |n| is used)
   std::string abs_n, t_min_paper;  // |n| and the paper's proxy pi/|n|
   std::optional<resonant_pair<big_int>> pair;        // when resonant
-  std::optional<verified_pair_values> pair_values;   // its analysis
+  std::optional<pair_report> pair_values;   // its analysis, proved
   // min of H_q over [0, T] and its first time: the pair's H_min and t_first when the horizon
   // contains t_first (decided at 256 bits), else from horizon_minimum.
   std::string h_min_horizon, t_min_horizon;

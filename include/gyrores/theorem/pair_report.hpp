@@ -21,6 +21,7 @@
 // them are proved enclosures rounded, like the rest.
 #pragma once
 #include <optional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,11 +31,19 @@
 
 namespace gyrores {
 
+// The most significant digits a report gives (and certificates state).
+inline constexpr unsigned report_digits_max = 10000;
+
+// usage_error ("digits must be in [1, 10000], got D") outside [1, report_digits_max].
+void check_report_digits(unsigned digits);
+
 // One real of a report.
 struct proved_real {
   std::string value;                              // correctly rounded, `digits` significant digits
   std::pair<std::string, std::string> enclosure;  // holds the exact value; outward, digits + 3 digits
+  operator const std::string&() const { return value; }  // where text is wanted, the value
 };
+inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }
 
 // One lobe of the paper's asymptotics.
 struct paper_lobe_report {
@@ -68,6 +77,10 @@ struct pair_report {
 // number > 0 (parse_rational, core/rational.hpp); compute_error only if some rounding is still
 // undecided at 2^20 bits (a resource limit, named in the message), never a wrong digit.
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt = {});
+
+// The values the design, Pareto, coupling and report commands list: prove_pair without the
+// asymptotics, qdot0 = 1.
+pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits);
 
 // The paper's Case B quantities of its lobe k of p (qdot0 = 1): u_asy, theta_asy, q'(theta_asy)
 // (= (-1)^k cos u_asy cos w (tan w - w), w = x tan u_asy), q'(theta_asy)/rho0, the error and

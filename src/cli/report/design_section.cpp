@@ -26,7 +26,7 @@ std::string design_row(context& c, design_problem prob, const std::string& T) {
     }
     const auto& p = r.ranked.front();
     const auto v = c.values(p.tau, p.sigma);
-    md << pair_name(p.tau, p.sigma) << " | " << (v.degenerate ? "0 (exact)" : v.r_res) << " | " << v.t_first
+    md << pair_name(p.tau, p.sigma) << " | " << (v.degenerate ? "0 (exact)" : v.r_res.value) << " | " << v.t_first
        << (tm == design_time::proxy && !design_time_within(p, design_time::first_hit, o.tmax) ? " (**> T_max**)" : "")
        << " | ";
   }

@@ -10,10 +10,10 @@ namespace gyrores::cli::report {
 namespace {
 
 // One markdown table row for a pair with verified values.
-std::string pair_row(const design_point& p, const verified_pair_values& v) {
+std::string pair_row(const design_point& p, const pair_report& v) {
   std::ostringstream os;
   os << "| " << pair_name(p.tau, p.sigma) << " | " << p.delta() << " | " << v.n << " | "
-     << (v.degenerate ? "0 (exact)" : v.r_res) << " | " << v.t_first << " | " << v.t_min_paper << " |\n";
+     << (v.degenerate ? "0 (exact)" : v.r_res.value) << " | " << v.t_first << " | " << v.t_min_paper << " |\n";
   return os.str();
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 
 #include "../plots.hpp"
 
@@ -47,7 +47,7 @@ struct context {
   // The catalogue's entry for (t, s) (computed if the catalogue does not reach it).
   design_point find(std::int64_t t, std::int64_t s) const;
   // verify_pair_values(t, s, digits).
-  verified_pair_values values(std::int64_t t, std::int64_t s) const;
+  pair_report values(std::int64_t t, std::int64_t s) const;
 };
 
 // Draws both figures of a case (recorded in c.figs) and returns their markdown.

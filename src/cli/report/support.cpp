@@ -59,7 +59,9 @@ design_point context::find(std::int64_t t, std::int64_t s) const {
   return design_point_of(resonant_pair<std::int64_t>(t, s));
 }
 
-verified_pair_values context::values(std::int64_t t, std::int64_t s) const { return verify_pair_values(t, s, digits); }
+pair_report context::values(std::int64_t t, std::int64_t s) const {
+  return prove_pair_values(resonant_pair<big_int>(big_int(t), big_int(s)), digits);
+}
 
 std::string draw_case_figures(context& c, const resonant_pair<std::int64_t>& p, const case_figures& f) {
   c.figs.record(f.phase_stem, write_phase_figure(c.figs.spec(f.phase_stem, 1200, 640), phase_portrait_of_pair(p), f.phase_title));

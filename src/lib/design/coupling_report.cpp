@@ -3,7 +3,6 @@
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/verified_digits.hpp>
-#include <gyrores/inscribed/lattice.hpp>
 #include <gyrores/model/resonant.hpp>
 
 namespace gyrores {
@@ -32,21 +31,16 @@ horizon_min_result<T> put_horizon_fields(real_fields& f, const coupling_spec& c,
   return r;
 }
 
-// The exact first-hit time of a resonant pair at 256 bits.
-mpfr_real pair_t_first_256(const resonant_pair<big_int>& p) {
-  scoped_digits d(digits10_for_bits(256));
-  if (p.degenerate()) {
-    auto c = resonant_constants_of<mpfr_real>(p, mpfr_real(1));
-    return c.sqrt_ts * c.pi / 2;
-  }
-  return inscribed_lattice<mpfr_real>(p, mpfr_real(1)).t_first;
-}
-
-// horizon >= t_first, decided at 256 bits.
+// horizon >= t_first, decided on the proved enclosure of t_first (more digits until the horizon
+// lies outside it; t_first is irrational for every pair, so this ends).
 bool horizon_covers_first(const resonant_pair<big_int>& p, const big_rational& horizon) {
-  scoped_digits d(digits10_for_bits(256));
-  const mpfr_real tf = pair_t_first_256(p);
-  return real_from_rational<mpfr_real>(horizon) >= tf;
+  for (unsigned digits = 20; digits <= report_digits_max; digits *= 4) {
+    const pair_report r = prove_pair_values(p, digits);
+    if (horizon >= parse_rational(r.t_first.enclosure.second, "t_first")) return true;
+    if (horizon < parse_rational(r.t_first.enclosure.first, "t_first")) return false;
+  }
+  throw compute_error("coupling: the horizon " + rational_str(horizon) + " could not be compared with t_first of " +
+                      p.str());
 }
 
 // |n|, pi/|n| and, unless the pair analysis answers it, the minimum over [0, T]: one verified run.
@@ -70,8 +64,8 @@ void verify_coupling_numbers(coupling_report& r, const coupling_report_options& 
   r.abs_n = run.fields.at("n")[0];
   r.t_min_paper = run.fields.at("t_min_paper")[0];
   if (covers_first) {
-    r.h_min_horizon = r.pair_values->h_min;
-    r.t_min_horizon = r.pair_values->t_first;
+    r.h_min_horizon = r.pair_values->h_min.value;
+    r.t_min_horizon = r.pair_values->t_first.value;
     r.horizon_source = "the pair analysis: the horizon contains t_first, where the global minimum H_min is first attained";
     return;
   }
@@ -84,10 +78,10 @@ void verify_coupling_numbers(coupling_report& r, const coupling_report_options& 
 
 void set_infimum(coupling_report& r) {
   if (r.pair) {
-    r.inf_all_time = r.pair_values->h_min;
+    r.inf_all_time = r.pair_values->h_min.value;
     r.inf_attained = true;
     r.inf_reason = "resonant pair " + r.pair->str() + ": the motion is periodic; min H_q = r_res^2/2, first attained at t_first = " +
-                   r.pair_values->t_first + (r.pair->degenerate() ? " (delta = 2 mod 4: H_q = 0 exactly)" : "");
+                   r.pair_values->t_first.value + (r.pair->degenerate() ? " (delta = 2 mod 4: H_q = 0 exactly)" : "");
     return;
   }
   r.inf_all_time = "0";
@@ -103,7 +97,7 @@ std::vector<coupling_convergent> verified_convergents(const coupling_spec& spec,
     coupling_convergent row{c, std::nullopt, std::nullopt};
     if (c.p > c.q) {
       row.pair = resonant_pair<big_int>(c.p, c.q);
-      row.values = verify_pair_values(*row.pair, digits);
+      row.values = prove_pair_values(*row.pair, digits);
     }
     out.push_back(row);
   }
@@ -139,7 +133,7 @@ coupling_report analyse_coupling(const coupling_spec& spec, const coupling_repor
   r.pair = coupling_resonant_pair(spec);
   bool covers_first = false;
   if (r.pair) {
-    r.pair_values = verify_pair_values(*r.pair, opt.digits);
+    r.pair_values = prove_pair_values(*r.pair, opt.digits);
     covers_first = horizon_covers_first(*r.pair, opt.horizon);
   }
   verify_coupling_numbers(r, opt, covers_first);

@@ -21,10 +21,6 @@ using iv = fixed_mpfi;
 
 constexpr unsigned max_report_bits = 1u << 20;
 
-void check_digits(unsigned digits) {
-  if (digits < 1 || digits > 10000) throw usage_error("digits must be in [1, 10000], got " + std::to_string(digits));
-}
-
 // Rounds the enclosures of one precision into proved_reals; remembers the first field it could
 // not decide (the precision then doubles).
 class rounder {
@@ -304,8 +300,13 @@ unsigned start_bits(const resonant_pair<big_int>& p, unsigned digits, bool asymp
 
 }  // namespace
 
+void check_report_digits(unsigned digits) {
+  if (digits < 1 || digits > report_digits_max)
+    throw usage_error("digits must be in [1, " + std::to_string(report_digits_max) + "], got " + std::to_string(digits));
+}
+
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt) {
-  check_digits(opt.digits);
+  check_report_digits(opt.digits);
   const exact_values e = exact_values_of(p, opt.qdot0);
   const big_int a = p.order(), b = big_int(p.delta());
   pair_report r;
@@ -336,8 +337,15 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
   return r;
 }
 
+pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits) {
+  pair_report_options opt;
+  opt.digits = digits;
+  opt.asymptotics = false;
+  return prove_pair(p, opt);
+}
+
 paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_int& k, unsigned digits) {
-  check_digits(digits);
+  check_report_digits(digits);
   const big_int a = p.order(), b = big_int(p.delta());
   const auto ks = 2 * b < a ? fast_nodes(a, b) : std::vector<big_int>{};
   if (std::find(ks.begin(), ks.end(), k) == ks.end())
