@@ -36,8 +36,8 @@ _REAL_KEYS = frozenset({
     "t_first", "minimisers", "t_min_paper", "s", "u_asy", "theta_asy", "theta_c", "error", "bound", "ratio",
     "r_res_asy", "r_res_asy_rel_error", "h_min_horizon", "t_min_horizon", "inf_all_time",
 })
-# Keys whose values are the caller's input echoed back, never converted.
-_INPUT_KEYS = frozenset({"input"})
+# Keys whose values are never converted: the caller's input echoed back,
+_INPUT_KEYS = frozenset({"input", "enclosures"})  # and the enclosures: outward decimal text, kept as it is
 
 
 def _real_converter(digits):
@@ -72,9 +72,10 @@ class PairResult:
     """What gyrores reports about one resonant pair: the fields of ``gyrores pair --json``.
 
     Fields are attributes (``r.r_res``, ``r.minimisers``, ``r.asymptotic``...) and items
-    (``r["r_res"]``), in the CLI's order; reals are converted as the module docstring says. With
-    ``certified=True`` also ``r_res_enclosure``, ``theta_first_enclosure``, ``t_first_enclosure``
-    (``(lo, hi)`` decimal strings), ``certified`` and ``theorem`` (the theorem the proof rests on).
+    (``r["r_res"]``), in the CLI's order; reals are converted as the module docstring says. Every
+    real is the correct rounding of a proved enclosure (``r.theorem``: the theorem the proofs rest
+    on); with ``enclosures=True`` also ``r.enclosures``, the same keys with ``(lo, hi)`` decimal
+    strings rounded outward.
     """
 
     def __init__(self, raw):
@@ -100,55 +101,50 @@ class PairResult:
     def __repr__(self):
         v = self._raw
         shown = ", ".join(f"{k}={v[k]}" for k in ("r_res", "theta_first", "t_first", "n"))
-        extra = f", certified={v['certified']}" if "certified" in v else ""
         return (f"PairResult(tau={v['tau']}, sigma={v['sigma']}, {shown}, minimisers={len(v['minimisers'])}, "
-                f"degenerate={v['degenerate']}, method={v['method']!r}, digits={v['digits']}{extra})")
+                f"degenerate={v['degenerate']}, digits={v['digits']}, proved by {v['theorem']})")
 
 
-def pair(tau, sigma, digits=17, qdot0="1", certified=True, method="lattice"):
+def pair(tau, sigma, digits=17, qdot0="1", enclosures=False):
     """Inscribed radius, minimisers and first-hit time of the resonant pair (tau, sigma).
 
     tau, sigma: Python ints of any size, coprime, tau > sigma >= 1. digits: significant digits
-    of every real, 1..10000, each verified (two runs at different precisions and Ziv's rounding
-    test: a strong consistency check, not a proof). qdot0: impulse amplitude > 0 (decimal text,
-    int or float). method: "lattice" (any pair) or "global" (the reference search, order <=
-    100000). certified (default, as ``gyrores pair``): also the proved enclosures of r_res,
-    theta_first and t_first (the lattice theorem and interval arithmetic, any pair); False is
-    ``gyrores pair --estimate``. Returns a PairResult; raises UsageError / ComputeError.
+    of every real, 1..10000, each the correct rounding of an enclosure proved by interval
+    arithmetic on the lattice theorem. qdot0: impulse amplitude > 0 (an exact decimal or
+    fraction as text, or an int; a float is taken as its repr). enclosures: also the enclosures
+    (``r.enclosures``). Returns a PairResult; raises UsageError / ComputeError.
     """
-    return PairResult(_gyrores._pair(tau, sigma, digits, _text(qdot0), method, certified))
+    return PairResult(_gyrores._pair(tau, sigma, digits, _text(qdot0), enclosures))
 
 
 def asymptotics(tau, sigma, digits=17):
     """The paper's asymptotics of the pair (the ``asymptotic`` object of ``gyrores pair --json``).
 
     A dict: applicable, reason, lobes (per lobe k, m, s, u_asy, theta_asy, the exact lobe root
-    theta_c, error, bound pi^3 x^2/a, ratio, holds_global_min), r_res_asy (the observed closed
-    form) and r_res_asy_rel_error (None when not applicable), unsettled (the diagnostics that did
-    not settle to ``digits`` digits: name -> digits that did, 0 for a magnitude bound; see
-    docs/formats.md), digits; qdot0 = 1.
+    theta_c, error, bound pi^3 x^2/a, ratio, holds_global_min), r_res_asy (the x -> 0 limit form)
+    and r_res_asy_rel_error (None when not applicable), digits; qdot0 = 1. Every real proved.
     """
     return _convert(_gyrores._asymptotics(tau, sigma, digits), _real_converter(digits))
 
 
-def certify(tau, sigma, digits=30, cover=False):
+def certify(tau, sigma, digits=30):
     """An interval certificate of r_res, theta_first and t_first of (tau, sigma), qdot0 = 1.
 
-    Returns the dict of ``gyrores certify``: by default "gyrores-certificate/2" (the lattice
-    theorem, any pair: the minimisers' lobes, a bracket of u*, enclosures as [lo, hi] decimal
-    strings with at least `digits` correct digits); with cover=True "gyrores-certificate/1" (the
-    interval cover, independent of the theorem, within its order limits). Pass it to check(),
-    or json.dump it for ``gyrores check``. Raises UsageError / ComputeError.
+    Returns the dict of ``gyrores certify``, "gyrores-certificate/2" (the lattice theorem, any
+    pair: the minimisers' lobes, a bracket of u*, enclosures as [lo, hi] decimal strings with at
+    least `digits` correct digits). Pass it to check(), or json.dump it for ``gyrores check``.
+    Raises UsageError / ComputeError.
     """
-    return _gyrores._certify(tau, sigma, digits, bool(cover))
+    return _gyrores._certify(tau, sigma, digits)
 
 
 def check(cert):
     """Re-prove a certificate independently; returns (holds, failure).
 
     cert: the dict of certify(), its JSON text, or the path of a certificate file. failure
-    names the first claim or obligation that does not hold ("" when it holds). Malformed
-    content raises UsageError (``gyrores check`` exits 2 there).
+    names the first claim or fact that does not hold ("" when it holds). Malformed content, and
+    a certificate of the retired format "gyrores-certificate/1" (the interval cover; re-certify
+    with certify()), raise UsageError at once (``gyrores check`` exits 2 there).
     """
     if isinstance(cert, dict):
         text = _json.dumps(cert)

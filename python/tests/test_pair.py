@@ -26,7 +26,7 @@ def test_big_pair_matches_cli_json(cli_json):
 def test_r_res_of_6_5_at_40_digits():
     r = gyrores.pair(6, 5, digits=40)
     assert r.to_dict(raw=True)["r_res"] == R_RES_6_5
-    assert r.digits == 40 and r.method == "lattice" and r.cross_checked
+    assert r.digits == 40 and r.theorem == "lattice-theorem/1" and r.format == "gyrores-pair/2"
 
 
 def test_reals_are_floats_up_to_15_digits():
@@ -50,7 +50,7 @@ def test_reals_beyond_15_digits_are_mpf_or_text():
 
 def test_degenerate_pair_is_exact():
     r = gyrores.pair(11, 9, digits=30)
-    assert r.degenerate and r.method == "degenerate-exact"
+    assert r.degenerate and r.m_min == 0
     raw = r.to_dict(raw=True)
     assert raw["r_res"] == "0." + "0" * 29 + "e+00"
     # pi/2 to 30 digits, written out independently.
@@ -58,24 +58,23 @@ def test_degenerate_pair_is_exact():
     assert gyrores.pair(11, 9, digits=12).theta_first == pytest.approx(math.pi / 2, rel=1e-11)  # 12 digits
 
 
-def test_qdot0_scales_r_res_and_global_method_agrees():
+def test_qdot0_scales_r_res():
     r1 = gyrores.pair(9, 4, digits=14)
     r3 = gyrores.pair(9, 4, digits=14, qdot0=3)
     assert r3.r_res == pytest.approx(3 * r1.r_res, rel=1e-13)
     assert r3.t_first == r1.t_first
-    assert gyrores.pair(9, 4, digits=14, method="global").r_res == r1.r_res
 
 
-def test_certified_pair_encloses_the_estimate():
-    r = gyrores.pair(6, 5, digits=20, certified=True)
-    assert r.certified is True and r.theorem == "lattice-theorem/1"
-    for key in ("r_res", "theta_first", "t_first"):
-        lo, hi = r[key + "_enclosure"]
-        assert float(lo) <= float(r.to_dict(raw=True)[key]) <= float(hi)
-    assert "certified=True" in repr(r)
-    r3 = gyrores.pair(6, 5, digits=20, certified=True, qdot0=3)
-    lo, hi = r3["r_res_enclosure"]
-    assert float(lo) <= 3 * float(r.to_dict(raw=True)["r_res"]) <= float(hi)
+def test_enclosures_hold_the_rounded_values():
+    r = gyrores.pair(6, 5, digits=20, enclosures=True)
+    raw = r.to_dict(raw=True)
+    for key in ("r_res", "theta_first", "t_first", "n", "h_z_max", "r_res_asy"):
+        lo, hi = r.enclosures[key]
+        assert isinstance(lo, str) and float(lo) <= float(raw[key]) <= float(hi)
+    assert "lattice-theorem/1" in repr(r)
+    r3 = gyrores.pair(6, 5, digits=20, enclosures=True, qdot0=3)
+    lo, hi = r3.enclosures["r_res"]
+    assert float(lo) <= 3 * float(raw["r_res"]) <= float(hi)
 
 
 @pytest.mark.parametrize("args, kwargs, message", [
@@ -83,20 +82,14 @@ def test_certified_pair_encloses_the_estimate():
     ((5, 6), {}, "tau must exceed sigma"),
     ((6, 5), {"digits": 0}, "digits must be in [1, 10000], got 0"),
     ((6, 5), {"qdot0": "-1"}, "qdot0"),
-    ((6, 5), {"method": "fast"}, "method must be"),
     ((6.0, 5), {}, "tau must be an integer"),
-    ((6, 5), {"qdot0": "0", "certified": True}, "qdot0"),
+    ((6, 5), {"qdot0": "0", "enclosures": True}, "qdot0"),
 ])
 def test_bad_input_raises_value_error(args, kwargs, message):
     with pytest.raises(ValueError, match=None) as e:
         gyrores.pair(*args, **kwargs)
     assert message in str(e.value) and "\n" not in str(e.value)
     assert isinstance(e.value, gyrores.UsageError)
-
-
-def test_global_search_beyond_its_limit_is_arithmetic_error():
-    with pytest.raises(ArithmeticError, match="global search is limited"):
-        gyrores.pair(10**6 + 1, 10**6, method="global")
 
 
 def test_asymptotics_match_the_pair_report(cli_json):

@@ -1,14 +1,15 @@
 // A consumer of an installed gyrores: one header-only entry point (model/resonant.hpp, a
-// template instantiated here) and one compiled entry point (inscribed_lattice<double>, an
-// explicit instantiation in the static library), so that the installed headers and the library
+// template instantiated here) and compiled entry points (theorem_minimum_double and prove_pair,
+// in the static library), so that the installed headers and the library
 // must both be found and linked through gyrores::gyrores.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 
-#include <gyrores/inscribed/lattice.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
+#include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 
 int main() {
   // Header-only: the degenerate pair (11, 9) and its amplitude rho0 = v sqrt(tau sigma)/a.
@@ -20,10 +21,15 @@ int main() {
     return 1;
   }
   // Compiled: r_res of (6, 5) (the certificate in docs/formats.md: 5.0745805791033372e-02).
-  const auto r = gyrores::inscribed_lattice<double>(gyrores::resonant_pair<std::int64_t>(6, 5), 1.0);
+  const auto r = gyrores::theorem_minimum_double(gyrores::resonant_pair<std::int64_t>(6, 5));
   const double r_res = 5.074580579103337e-02;
   if (std::fabs(r.r_res - r_res) > 1e-12 * r_res) {
-    std::fprintf(stderr, "consumer: inscribed_lattice(6, 5) gave r_res = %.17g\n", r.r_res);
+    std::fprintf(stderr, "consumer: theorem_minimum_double(6, 5) gave r_res = %.17g\n", r.r_res);
+    return 1;
+  }
+  const auto proved = gyrores::prove_pair(gyrores::resonant_pair<gyrores::big_int>(6, 5));
+  if (proved.r_res.value != "5.0745805791033372e-02") {
+    std::fprintf(stderr, "consumer: prove_pair(6, 5) gave r_res = %s\n", proved.r_res.value.c_str());
     return 1;
   }
   return 0;

@@ -3,13 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/design/coupling.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/model/resonant.hpp>
+#include <gyrores/theorem/minimum.hpp>
 
 namespace gyrores {
 
@@ -28,9 +29,9 @@ design_point design_point_of(const resonant_pair<std::int64_t>& p) {
   d.n = double(p.delta()) / st;
   d.t_proxy = real_pi<double>() * st / double(p.delta());
   d.degenerate = p.degenerate();
-  auto r = inscribed_lattice<double>(p, 1.0);
-  d.r_res = r.r_res;
-  d.t_first = r.t_first;
+  const auto m = theorem_minimum_double(p);
+  d.r_res = m.r_res;
+  d.t_first = m.t_first;
   return d;
 }
 
@@ -56,17 +57,29 @@ bool pair_filter_accepts(const pair_filter& f, const design_point& p) {
 
 namespace {
 
-// High-precision (256-bit) time and radius of one pair, for decisions double cannot make.
+// Proved enclosures of one pair's r_res, t_first and proxy time pi sqrt(tau sigma)/delta at
+// 256 bits (theorem/minimum.hpp), for the decisions double cannot make.
+constexpr mpfr_prec_t refine_bits = 256;
 struct design_refined {
-  mpfr_real r_res, t_first, t_proxy;
+  design_refined() : r_res(refine_bits), t_first(refine_bits), t_proxy(refine_bits) {}
+  fixed_mpfi r_res, t_first, t_proxy;
 };
 
-design_refined design_refine(const design_point& p) {
-  scoped_digits d(digits10_for_bits(256));
-  auto pr = p.pair();
-  auto r = inscribed_lattice<mpfr_real>(pr, mpfr_real(1));
-  auto c = resonant_constants_of<mpfr_real>(pr, mpfr_real(1));
-  return {r.r_res, r.t_first, mpfr_real(c.pi * c.sqrt_ts / real_from_int<mpfr_real>(pr.delta()))};
+std::unique_ptr<design_refined> design_refine(const design_point& p) {
+  const resonant_pair<big_int> pr(big_int(p.tau), big_int(p.sigma));
+  theorem_constants K(refine_bits);
+  set_theorem_constants(K, pr);
+  fixed_mpfi v(refine_bits);
+  mpfi_set_ui(v, 1);
+  minimum_enclosure m(refine_bits);
+  if (!prove_minimum(m, K, pr, v))
+    throw compute_error("design: the minimum of " + pr.str() + " was not proved at 256 bits");
+  auto out = std::make_unique<design_refined>();
+  mpfi_set(out->r_res, m.r_res);
+  mpfi_mul(out->t_first, K.sqrt_ts, *m.minimisers.front());
+  mpfi_mul(out->t_proxy, K.pi, K.sqrt_ts);
+  mpfi_div(out->t_proxy, out->t_proxy, K.b);
+  return out;
 }
 
 // The design ranking of two pairs in double: objective, then time, then order, then tau.
@@ -82,15 +95,15 @@ struct design_order {
   }
 };
 
-// Re-orders ok[i, j) (near-equal r_res in double) by their 256-bit r_res; pairs equal to 2^-200
-// keep the double ranking.
+// Re-orders ok[i, j) (near-equal r_res in double) by their proved 256-bit r_res; pairs whose
+// enclosures overlap keep the double ranking.
 void refine_group(std::vector<design_point>& ok, std::size_t i, std::size_t j, const design_order& better) {
-  scoped_digits d(digits10_for_bits(256));
-  std::vector<std::pair<mpfr_real, design_point>> grp;
-  for (std::size_t k = i; k < j; ++k) grp.push_back({design_refine(ok[k]).r_res, ok[k]});
+  std::vector<std::pair<std::unique_ptr<design_refined>, design_point>> grp;
+  for (std::size_t k = i; k < j; ++k) grp.emplace_back(design_refine(ok[k]), ok[k]);
   std::stable_sort(grp.begin(), grp.end(), [&](const auto& x, const auto& y) {
-    mpfr_real tol = ldexp(abs(x.first), -200);
-    if (abs(x.first - y.first) > tol) return better.absorb ? x.first < y.first : x.first > y.first;
+    const fixed_mpfi &rx = x.first->r_res, &ry = y.first->r_res;
+    if (mpfr_cmp(rx.right(), ry.left()) < 0) return better.absorb;   // rx < ry, proved
+    if (mpfr_cmp(ry.right(), rx.left()) < 0) return !better.absorb;  // ry < rx, proved
     return better(x.second, y.second);
   });
   for (std::size_t k = i; k < j; ++k) ok[k] = grp[k - i].second;
@@ -102,14 +115,14 @@ bool design_time_within(const design_point& p, design_time which, const big_rati
   const double t = design_time_of(p, which);
   const double T = static_cast<double>(tmax.convert_to<long double>());
   if (std::fabs(t - T) > 1e-9 * T) return t <= T;
-  scoped_digits d(digits10_for_bits(256));
-  auto ref = design_refine(p);
-  mpfr_real tt = which == design_time::first_hit ? ref.t_first : ref.t_proxy;
-  mpfr_real TT = real_from_rational<mpfr_real>(tmax);
-  if (abs(tt - TT) <= ldexp(TT, -200))
-    throw compute_error("cannot decide whether the time of (" + std::to_string(p.tau) + ", " + std::to_string(p.sigma) +
-                        ") is <= " + rational_str(tmax) + " at 256 bits");
-  return tt <= TT;
+  const auto ref = design_refine(p);
+  const fixed_mpfi& tt = which == design_time::first_hit ? ref->t_first : ref->t_proxy;
+  fixed_mpfi TT(refine_bits);
+  mpfi_set_q(TT, tmax.backend().data());
+  if (mpfr_cmp(tt.right(), TT.left()) <= 0) return true;
+  if (mpfr_cmp(tt.left(), TT.right()) > 0) return false;
+  throw compute_error("cannot decide whether the time of (" + std::to_string(p.tau) + ", " + std::to_string(p.sigma) +
+                      ") is <= " + rational_str(tmax) + " at 256 bits");
 }
 
 design_result design_solve(const std::vector<design_point>& catalogue, const design_options& opt) {

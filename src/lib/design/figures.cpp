@@ -8,7 +8,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/design/coupling.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/theorem/minimum.hpp>
 #include <gyrores/model/resonant.hpp>
 
 namespace gyrores {
@@ -51,14 +51,21 @@ void check_figure_coupling(double n, double span) {
   if (!(span > 0)) throw usage_error("the time span must be > 0");
 }
 
-// A pair's constants and inscribed radius (double, lattice method), and its state at theta.
+// r_res for the amplitude v (r_res is linear in v; the times do not depend on it).
+minimum_double scaled(minimum_double m, double v) {
+  m.r_res *= v;
+  return m;
+}
+
+// A pair's constants and minimum (double, the theorem: theorem/minimum.hpp; v scales r_res), and
+// its state at theta.
 // Throws usage_error beyond figure_max_order.
 struct pair_figure_basis {
   resonant_constants<double> c;
-  inscribed_result<double> r;
+  minimum_double r;
   double a, b;  // tau + sigma, tau - sigma
   pair_figure_basis(const resonant_pair<std::int64_t>& p, double v)
-      : c(resonant_constants_of<double>(figure_pair(p), v)), r(inscribed_lattice<double>(p, v)),
+      : c(resonant_constants_of<double>(figure_pair(p), v)), r(scaled(theorem_minimum_double(p), v)),
         a(double(p.order())), b(double(p.delta())) {}
   auto state(double theta) const { return resonant_state_at(c, a, b, theta); }
   plane_point<double> point(double theta) const {
@@ -103,8 +110,8 @@ phase_portrait phase_portrait_of_pair(const resonant_pair<std::int64_t>& p, doub
   f.first_min = f0.point(f0.r.theta_first);
   f.t_first = f0.r.t_first;
   f.t_proxy = c.pi / c.n;
-  for (double th0 : f0.r.minimisers)
-    f.near_minimisers.push_back(sample_near(th0, c.pi / f0.a, [&](double th) { return f0.point(th); }));
+  for (std::size_t i = 0; i < f0.r.count; ++i)
+    f.near_minimisers.push_back(sample_near(f0.r.minimisers[i], c.pi / f0.a, [&](double th) { return f0.point(th); }));
   return f;
 }
 
@@ -146,7 +153,7 @@ energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v, dou
     return energy_sample{th * c.sqrt_ts, (s.q * s.q + s.qdot * s.qdot) / 2, (s.z * s.z + s.zdot * s.zdot) / 2};
   });
   e.t_first = f0.r.t_first;
-  e.h_min = f0.r.h_min;
+  e.h_min = f0.r.r_res * f0.r.r_res / 2;
   e.t_proxy = c.pi / c.n;
   return e;
 }
