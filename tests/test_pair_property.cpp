@@ -1,13 +1,13 @@
-// Property test of verify_pair (inscribed/verified_pair.hpp) over random pairs of every size:
+// Property test of prove_pair (theorem/pair_report.hpp) over random pairs of every size:
 // tau with 2 to 500 decimal digits, x = (tau - sigma)/(tau + sigma) near 0, near 1/2 and near 1
 // (and tau = 3 sigma + 1, a minimiser just past 0 and its mirror just below 2 pi),
 // D in 1..200. For each case:
 //   * it answers (no compute_error: `gyrores pair` would exit 3);
-//   * every field at D digits (the minimiser list included) is the (D + 10)-digit answer
-//     rounded to D digits (a hand rounding of the decimal string, exact; a tail of exactly
-//     5000000000 accepts either neighbour), and the same for a third run at D_hi digits (enough
-//     to place the fast phase tau theta well inside r_res 10^-D); diagnostics that did not settle
-//     (verified_pair_report::unsettled) are compared on the digits both runs settled;
+//   * every field at D digits (the minimiser list and the asymptotics included) is the
+//     (D + 10)-digit answer rounded to D digits (a hand rounding of the decimal string, exact; a
+//     tail of exactly 5000000000 accepts either neighbour), and the same for a third run at D_hi
+//     digits (enough to place the fast phase tau theta well inside r_res 10^-D);
+//   * every D-digit value lies inside the enclosure of the D_hi run widened to D digits;
 //   * the minimisers are ascending in [0, 2 pi), 2 of them (4 when delta = 0 mod 4), the mirror
 //     of each is another (theta -> 2 pi - theta, checked on the D_hi strings);
 //   * the independent naive forms (src/testing/naive_forms.hpp, tau theta formed directly at
@@ -24,7 +24,7 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/rational.hpp>
-#include <gyrores/inscribed/verified_pair.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 
 #include "testing/naive_forms.hpp"
 #include "testing/test_support.hpp"
@@ -89,24 +89,25 @@ bool agrees(const std::string& a, const std::string& b, unsigned d) {
   return diff == half_ulp;
 }
 
-verified_pair_report report_at(const resonant_pair<big_int>& p, unsigned digits) {
-  verified_pair_options opt;
+pair_report report_at(const resonant_pair<big_int>& p, unsigned digits) {
+  pair_report_options opt;
   opt.digits = digits;
-  return verify_pair(p, opt);
+  return prove_pair(p, opt);
 }
 
-// Every field of lo (D digits) agrees with hi (more digits). Diagnostics that did not settle are
-// compared on the digits both runs settled (none if either is a bound).
-void check_agree(const verified_pair_report& lo, const verified_pair_report& hi, unsigned d) {
-  auto same = [&](const std::string& name, const std::string& a, const std::string& b) {
-    unsigned da = d, db = hi.digits;
-    if (auto it = lo.unsettled.find(name); it != lo.unsettled.end()) da = it->second;
-    if (auto it = hi.unsettled.find(name); it != hi.unsettled.end()) db = it->second;
-    const unsigned common = std::min(da, db);
-    if (common == 0) return;
-    INFO(name << ": " << a << " vs " << b);
-    if (da <= db) CHECK(agrees(a, b, da));
-    else CHECK(agrees(b, a, db));
+// Every field of lo (D digits) agrees with hi (more digits), and lies in hi's enclosure.
+void check_agree(const pair_report& lo, const pair_report& hi, unsigned d) {
+  auto same = [&](const std::string& name, const proved_real& a, const proved_real& b) {
+    INFO(name << ": " << a.value << " vs " << b.value);
+    CHECK(agrees(a.value, b.value, d));
+    // The exact value is in b's enclosure, and a is its rounding: a is within half a unit of
+    // its last digit of that enclosure.
+    const big_rational qa = parse_rational(a.value, "a"), lo_b = parse_rational(b.enclosure.first, "lo"),
+                       hi_b = parse_rational(b.enclosure.second, "hi");
+    const big_rational ulp = parse_rational("1e" + std::to_string(std::stol(a.value.substr(a.value.find('e') + 1)) -
+                                                                   long(d) + 1), "ulp");
+    CHECK(qa >= lo_b - ulp);
+    CHECK(qa <= hi_b + ulp);
   };
   for (auto [name, a, b] : {std::tuple{"beat_ratio", &lo.beat_ratio, &hi.beat_ratio}, {"n", &lo.n, &hi.n},
                             {"omega1", &lo.omega1, &hi.omega1}, {"omega2", &lo.omega2, &hi.omega2},
@@ -127,21 +128,27 @@ void check_agree(const verified_pair_report& lo, const verified_pair_report& hi,
   for (std::size_t i = 0; i < lo.lobes.size(); ++i) {
     const std::string pre = "asymptotic.lobes." + std::to_string(i) + ".";
     CHECK(lo.lobes[i].k == hi.lobes[i].k);
-    same(pre + "theta_asy", lo.lobes[i].theta_asy, hi.lobes[i].theta_asy);
-    same(pre + "error", lo.lobes[i].error, hi.lobes[i].error);
-    same(pre + "bound", lo.lobes[i].bound, hi.lobes[i].bound);
+    CHECK(lo.lobes[i].m == hi.lobes[i].m);
+    for (auto [name, a, b] : {std::tuple{"s", &lo.lobes[i].s, &hi.lobes[i].s},
+                              {"u_asy", &lo.lobes[i].u_asy, &hi.lobes[i].u_asy},
+                              {"theta_asy", &lo.lobes[i].theta_asy, &hi.lobes[i].theta_asy},
+                              {"theta_c", &lo.lobes[i].theta_c, &hi.lobes[i].theta_c},
+                              {"error", &lo.lobes[i].error, &hi.lobes[i].error},
+                              {"bound", &lo.lobes[i].bound, &hi.lobes[i].bound},
+                              {"ratio", &lo.lobes[i].ratio, &hi.lobes[i].ratio}})
+      same(pre + name, *a, *b);
   }
 }
 
 // Structure of the minimiser list and R at the minimisers by the naive forms, from the D_hi run.
-void check_minimisers(const resonant_pair<big_int>& p, const verified_pair_report& hi, unsigned d) {
+void check_minimisers(const resonant_pair<big_int>& p, const pair_report& hi, unsigned d) {
   const unsigned tau_digits = unsigned(p.tau().str().size());
   scoped_digits sd(hi.digits + tau_digits + 30);  // tau theta and the cancellation in q
   const mpfr_real two_pi = 2 * real_pi<mpfr_real>();
   const std::size_t expected = p.degenerate() ? 2 : (p.delta_mod4() == 0 ? 4 : 2);
   REQUIRE(hi.minimisers.size() == expected);
   std::vector<mpfr_real> th;
-  for (const auto& s : hi.minimisers) th.push_back(mpfr_real(s));
+  for (const auto& s : hi.minimisers) th.push_back(mpfr_real(s.value));
   for (std::size_t i = 0; i < th.size(); ++i) {
     CHECK(th[i] > 0);
     CHECK(th[i] < two_pi);
@@ -152,7 +159,7 @@ void check_minimisers(const resonant_pair<big_int>& p, const verified_pair_repor
     for (const auto& t : th) found = found || abs(mpfr_real(two_pi - th[i] - t)) <= tol;
     CHECK(found);
   }
-  const mpfr_real r = mpfr_real(hi.r_res), v = mpfr_real(hi.qdot0);
+  const mpfr_real r = mpfr_real(hi.r_res.value), v = mpfr_real(hi.qdot0.value);
   const test::naive_forms<mpfr_real> f(real_from_int<mpfr_real>(p.tau()), real_from_int<mpfr_real>(p.sigma()), v);
   for (const auto& t : th) {
     const mpfr_real R = f.R(t);
@@ -166,12 +173,12 @@ void check_minimisers(const resonant_pair<big_int>& p, const verified_pair_repor
 // Digits of the third run: its minimisers must place R within r_res^2 10^-(D+10) of the
 // minimum. R - r_res^2 ~ (tau W1 dtheta)^2 (q' has slope ~ tau W1 through its root), so dtheta
 // ~ 10^-D_hi must be below r_res 10^-(D/2+5)/(tau W1), with W1 = sqrt(tau/sigma).
-unsigned d_hi_for(const resonant_pair<big_int>& p, const verified_pair_report& lo, unsigned d) {
+unsigned d_hi_for(const resonant_pair<big_int>& p, const pair_report& lo, unsigned d) {
   const unsigned tau_digits = unsigned(p.tau().str().size()), sigma_digits = unsigned(p.sigma().str().size());
   const unsigned w1_digits = (tau_digits + 1 - std::min(tau_digits, sigma_digits)) / 2 + 1;
   unsigned r_digits = tau_digits;  // degenerate pairs: the zero's neighbourhood, as for r_res ~ 1/tau
   if (!p.degenerate()) {
-    const long e = std::stol(lo.r_res.substr(lo.r_res.find('e') + 1));
+    const long e = std::stol(lo.r_res.value.substr(lo.r_res.value.find('e') + 1));
     r_digits = e < 0 ? unsigned(-e) : 0u;
   }
   return d + 20 + tau_digits + w1_digits + r_digits;
@@ -179,7 +186,7 @@ unsigned d_hi_for(const resonant_pair<big_int>& p, const verified_pair_report& l
 
 }  // namespace
 
-TEST_CASE("verify_pair property: random pairs of every size agree across precisions and with R", "[truth][property]") {
+TEST_CASE("prove_pair property: random pairs of every size agree across precisions and with R", "[truth][property]") {
   const int mult = test::multiplier();
   std::mt19937_64 rng(kSeed + std::uint64_t(mult));
   const unsigned max_digits = mult > 1 ? 200u : 60u;
@@ -194,7 +201,7 @@ TEST_CASE("verify_pair property: random pairs of every size agree across precisi
         const unsigned digits_tau = lo_sizes[size_class] + unsigned(rng() % span);
         const auto p = random_pair(rng, digits_tau, cls);
         const unsigned d = 1 + unsigned(rng() % max_digits);
-        verified_pair_report lo, mid, hi;
+        pair_report lo, mid, hi;
         REQUIRE_NOTHROW(lo = report_at(p, d));
         REQUIRE_NOTHROW(mid = report_at(p, d + 10));
         REQUIRE_NOTHROW(hi = report_at(p, d_hi_for(p, lo, d)));
@@ -203,6 +210,6 @@ TEST_CASE("verify_pair property: random pairs of every size agree across precisi
         check_minimisers(p, hi, d);
         ++cases;
       }
-  std::cout << "verify_pair property: " << cases << " random pairs (tau 2..500 digits, D 1.." << max_digits
+  std::cout << "prove_pair property: " << cases << " random pairs (tau 2..500 digits, D 1.." << max_digits
             << "), multiplier " << mult << "\n";
 }

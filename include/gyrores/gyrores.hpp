@@ -29,15 +29,8 @@
 #include <gyrores/inscribed/lattice.hpp>     // O(log tau) method for any pair
 #include <gyrores/inscribed/cross_check.hpp> // lattice vs global search
 #include <gyrores/inscribed/asymptotic.hpp>  // the paper's theta_asy, error bound, r_res_asy
-#include <gyrores/inscribed/pair_analysis.hpp>  // everything reported about one pair
-#include <gyrores/inscribed/verified_pair.hpp>  // that report with verified digits
 // certificates
-#include <gyrores/certify/certificate.hpp>   // certificate data and options
-#include <gyrores/certify/proof_steps.hpp>   // the interval proof steps
-#include <gyrores/certify/cover.hpp>         // R > bound away from the minimiser's basins
-#include <gyrores/certify/certify.hpp>       // the producer: certify_pair
-#include <gyrores/certify/check.hpp>         // the checker: check_certificate
-#include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem (default)
+#include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
 #include <gyrores/design/coupling_report.hpp>  // the coupling analysis with verified digits

@@ -15,13 +15,12 @@
 // then the smaller order tau + sigma, then the smaller tau. This tie-break is gyrores' choice;
 // the paper's Case A ("preferably as fast as possible") implies it.
 //
-// Computation: the catalogue evaluates every pair with the lattice method in double (O(log tau)
-// per pair; degenerate pairs are exact zeros by integer arithmetic). Decisions that double
-// cannot make safely are refined in MPFR (256 bits): a time within a relative 1e-9 of T_max,
-// and neighbouring r_res values within a relative 1e-11 among the reported ranks. The lattice
-// method's minimiser location is *observed* (lattice.hpp STATUS); the CLI prints the reported
-// pairs with verified digits (verify_pair_values, inscribed/verified_pair.hpp), which
-// cross-checks the lattice against the global search for orders up to 20000.
+// Computation: the catalogue evaluates every pair from the lattice theorem in double
+// (theorem/minimum.hpp: O(log tau) integers and one root per pair; degenerate pairs are exact
+// zeros by integer arithmetic). Decisions that double cannot make safely are made on proved
+// 256-bit enclosures (theorem/minimum.hpp): a time within a relative 1e-9 of T_max, and
+// neighbouring r_res values within a relative 1e-11 among the reported ranks. The CLI prints the
+// reported pairs' values proved and correctly rounded (prove_pair_values, theorem/pair_report.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -55,14 +54,14 @@ std::string design_time_name(design_time t);        // "t_first", "proxy"
 // p.t_first or p.t_proxy.
 double design_time_of(const design_point& p, design_time t);
 
-// One pair in double (lattice method; degenerate pairs exactly).
+// One pair in double (the theorem's minimum; degenerate pairs exactly).
 design_point design_point_of(const resonant_pair<std::int64_t>& p);
 
 // Largest order the catalogue accepts: 5000 is ~3.8e6 pairs (~200 MB, ~25 s in double).
 inline constexpr std::int64_t design_max_order_limit = 5000;
 
 // Every resonant pair with 3 <= tau + sigma <= max_order, in enumeration order (coprime_pairs).
-// Cost: about 3 M^2/(2 pi^2) lattice evaluations in double, ~6.5 us each (M = 200: 6115 pairs,
+// Cost: about 3 M^2/(2 pi^2) pairs, each one root in double, ~6.5 us each (M = 200: 6115 pairs,
 // 0.04 s; M = 2000: ~6e5 pairs, ~4 s). Throws usage_error outside [3, design_max_order_limit].
 std::vector<design_point> design_catalogue(std::int64_t max_order);
 
@@ -78,8 +77,8 @@ struct pair_filter {
 // a den >= num b (b, den > 0).
 bool pair_filter_accepts(const pair_filter& f, const design_point& p);
 
-// time(p) <= tmax, decided in double when the margin is clear (relative 1e-9), else in MPFR at
-// 256 bits; throws compute_error if even that cannot separate them (relative 2^-200).
+// time(p) <= tmax, decided in double when the margin is clear (relative 1e-9), else on the proved
+// 256-bit enclosure of the time; throws compute_error if even that cannot separate them.
 bool design_time_within(const design_point& p, design_time which, const big_rational& tmax);
 
 struct design_options {

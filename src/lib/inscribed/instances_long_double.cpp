@@ -1,6 +1,7 @@
 // Explicit instantiations of the inscribed-radius templates for long double (declared extern in the
 // headers). One file per real type so that a parallel build spreads them over the cores.
-#include <gyrores/inscribed/pair_analysis.hpp>
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/inscribed/cross_check.hpp>
 
 namespace gyrores {
 GYRORES_DEGENERATE_INSTANCES(, long double)
@@ -8,5 +9,4 @@ GYRORES_GLOBAL_SEARCH_INSTANCES(, long double)
 GYRORES_LATTICE_INSTANCES(, long double)
 GYRORES_CROSS_CHECK_INSTANCES(, long double)
 GYRORES_ASYMPTOTIC_INSTANCES(, long double)
-GYRORES_PAIR_ANALYSIS_INSTANCES(, long double)
 }  // namespace gyrores

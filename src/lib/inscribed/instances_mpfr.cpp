@@ -1,6 +1,7 @@
 // Explicit instantiations of the inscribed-radius templates for ::gyrores::mpfr_real (declared extern in the
 // headers). One file per real type so that a parallel build spreads them over the cores.
-#include <gyrores/inscribed/pair_analysis.hpp>
+#include <gyrores/inscribed/asymptotic.hpp>
+#include <gyrores/inscribed/cross_check.hpp>
 
 namespace gyrores {
 GYRORES_DEGENERATE_INSTANCES(, ::gyrores::mpfr_real)
@@ -8,5 +9,4 @@ GYRORES_GLOBAL_SEARCH_INSTANCES(, ::gyrores::mpfr_real)
 GYRORES_LATTICE_INSTANCES(, ::gyrores::mpfr_real)
 GYRORES_CROSS_CHECK_INSTANCES(, ::gyrores::mpfr_real)
 GYRORES_ASYMPTOTIC_INSTANCES(, ::gyrores::mpfr_real)
-GYRORES_PAIR_ANALYSIS_INSTANCES(, ::gyrores::mpfr_real)
 }  // namespace gyrores
