@@ -92,6 +92,7 @@ bool agrees(const std::string& a, const std::string& b, unsigned d) {
 pair_report report_at(const resonant_pair<big_int>& p, unsigned digits) {
   pair_report_options opt;
   opt.digits = digits;
+  opt.enclosures = true;
   return prove_pair(p, opt);
 }
 

@@ -36,6 +36,7 @@ pair_report report(const resonant_pair<big_int>& p, unsigned digits, const std::
   pair_report_options opt;
   opt.digits = digits;
   opt.qdot0 = qdot0;
+  opt.enclosures = true;
   return prove_pair(p, opt);
 }
 
@@ -74,9 +75,14 @@ void check_pair(const resonant_pair<big_int>& p, unsigned digits) {
   const bool global = a <= big_int(test::hp::hp_scan_max_order);
   // Local mode needs a starting guess (only a guess: the reference examines the fast
   // half-periods around it on its own); the report's first minimiser, read at ref_digits.
-  const std::string guess = global ? "0" : report(p, std::min(ref_digits, 10000u)).theta_first.value;
+  // (Read at ref_digits: mpfr_real's default of 20 digits would not pin a half-period of 1e-30.)
+  mpfr_real guess;
+  if (!global) {
+    scoped_digits sd(ref_digits + 10);
+    guess = mpfr_real(report(p, std::min(ref_digits, 10000u)).theta_first.value);
+  }
   const auto hp = global ? test::hp::hp_reference(tau, sigma, ref_digits)
-                         : test::hp::hp_reference(tau, sigma, ref_digits, mpfr_real(guess), true);
+                         : test::hp::hp_reference(tau, sigma, ref_digits, guess, true);
   scoped_digits sd(ref_digits + 20 + 2 * log10a);
   const mpfr_real pi = real_pi<mpfr_real>(), A = mp(a), Bd = mp(b), ts = mp(big_int(tau * sigma));
   const mpfr_real x = Bd / A;
@@ -125,7 +131,7 @@ void check_pair(const resonant_pair<big_int>& p, unsigned digits) {
     CHECK(l.m == m);
     CHECK(l.holds_global_min == (abs(m) == p.strand_offset_min()));
     const mpfr_real s = pi * mp(m) / (2 * Bd);
-    const mpfr_real u_asy = paper_root_by_bisection(s);
+    const mpfr_real u_asy = m == 0 ? mpfr_real(0) : paper_root_by_bisection(s);  // s = 0: the root is 0
     const mpfr_real theta_asy = 2 * (mp(k) * pi + u_asy) / A;
     const auto lobe = test::hp::hp_lobe_root(tau, sigma, k, ref_digits);
     const mpfr_real theta_c = lobe.theta;
@@ -141,7 +147,7 @@ void check_pair(const resonant_pair<big_int>& p, unsigned digits) {
     check_real("bound", l.bound, bound, digits);
   }
   REQUIRE(r.r_res_asy);
-  const mpfr_real u = paper_root_by_bisection(pi * p.strand_offset_min() / (2 * Bd));
+  const mpfr_real u = p.degenerate() ? mpfr_real(0) : paper_root_by_bisection(pi * p.strand_offset_min() / (2 * Bd));
   const mpfr_real r_asy = x * abs(sin(u) * tan(u));
   check_real("r_res_asy", *r.r_res_asy, r_asy, digits);
   if (!p.degenerate()) check_real("r_res_asy_rel_error", *r.r_res_asy_rel_error, abs(r_asy - hp.r_res) / hp.r_res, digits);
@@ -197,6 +203,7 @@ TEST_CASE("prove_pair: exact fields are rounded once from their rational, ties t
   r = report(resonant_pair<big_int>(big_int(5), big_int(3)), 1, "0.3");
   CHECK(r.h_z_max.value == "4e-02");
   CHECK(r.r_res.value == "0e+00");
+  INFO(r.r_res.enclosure.first << ", " << r.r_res.enclosure.second);
   CHECK(r.r_res.enclosure == std::pair<std::string, std::string>{"0.000e+00", "0.000e+00"});
   CHECK(report(resonant_pair<big_int>(big_int(5), big_int(3)), 2, "0.3").h_z_max.value == "4.5e-02");
   // An exact beat ratio on a tie: (tau + sigma)/(tau - sigma) = 2305843009213693950; 17 digits: ...939|50.

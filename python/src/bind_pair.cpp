@@ -10,8 +10,9 @@
 namespace gyrores::python {
 namespace {
 
-pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0) {
+pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures) {
   pair_report_options opt;
+  opt.enclosures = enclosures;
   opt.digits = checked_digits(digits, 1, report_digits_max);
   opt.qdot0 = qdot0;
   return call_library([&] { return prove_pair(p, opt); });
@@ -20,12 +21,12 @@ pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const st
 py::object pair_dict(const py::object& tau, const py::object& sigma, long long digits, const std::string& qdot0,
                      bool enclosures) {
   const auto p = pair_of(tau, sigma);
-  return to_python(pair_report_json(p, run_pair(p, digits, qdot0), enclosures));
+  return to_python(pair_report_json(p, run_pair(p, digits, qdot0, enclosures), enclosures));
 }
 
 py::object asymptotics_dict(const py::object& tau, const py::object& sigma, long long digits) {
   const auto p = pair_of(tau, sigma);
-  const json full = pair_report_json(p, run_pair(p, digits, "1"));
+  const json full = pair_report_json(p, run_pair(p, digits, "1", false));
   json j = full["asymptotic"];
   for (const char* key : {"r_res_asy", "r_res_asy_rel_error", "digits"}) j[key] = full[key];
   return to_python(j);

@@ -82,6 +82,7 @@ std::string run_pair(const pair_args& args) {
   pair_report_options opt;
   opt.digits = unsigned(args.digits);
   opt.qdot0 = args.qdot0;
+  opt.enclosures = args.enclosures;
   const pair_report r = prove_pair(p, opt);
   if (!args.json) return pair_report_text(p, r, args.enclosures);
   return json_dump(pair_report_json(p, r, args.enclosures)) + "\n";

@@ -4,8 +4,8 @@
 //
 // Lobe frames (model/resonant.hpp): integers k, j with m = (2j+1) a - 2 k b, a = tau + sigma,
 // b = tau - sigma. The theorem (items 4, 5): the global minimisers are the points u = sign(m) u*
-// of exactly the lobes whose frame has |m| = m_min, where m_min = 0, 1, 2 as a = 2 mod 4, a odd,
-// a = 0 mod 4: 2 lobes (m = +-1) for delta odd, 4 (m = +-2, twice each) for delta = 0 mod 4.
+// of exactly the lobes whose frame has |m| = m_min, where m_min = 0, 1, 2 as a = 0 mod 4, a odd,
+// a = 2 mod 4: 2 lobes (m = +-1) for delta odd, 4 (m = +-2, twice each) for delta = 0 mod 4.
 // A minimiser's place on [0, 2 pi) is decided by integers: theta = 2 (k pi + u)/a with
 // |u| < pi/2, so lobes are ordered by k, and a k = 0 lobe with u < 0 wraps to just below 2 pi.
 // No theta formed in floating point is ever compared or reduced mod 2 pi.
@@ -20,11 +20,12 @@ namespace gyrores {
 
 inline constexpr const char* lattice_theorem_id = "lattice-theorem/1";
 
-// m_min = min over N of |a - 4N|: 0 for a = 2 mod 4 (delta = 2 mod 4, degenerate), 1 for a odd,
-// 2 for a = 0 mod 4. The same integer as resonant_pair::strand_offset_min(), from a alone.
+// m_min = min over N of |a - 4N|: 0 for a = 0 mod 4 (delta = 2 mod 4, degenerate), 1 for a odd
+// (delta odd), 2 for a = 2 mod 4 (delta = 0 mod 4). The same integer as
+// resonant_pair::strand_offset_min(), from a alone.
 template <class L> int theorem_m_min(const L& a) {
   const int r = int(int_mod(a, L(4)));
-  return r == 2 ? 0 : (r % 2 == 1 ? 1 : 2);
+  return std::min(r, 4 - r);
 }
 
 // The pass frame: the frame with m = +m_min (m_min = 1 or 2), by one modular inverse.

@@ -40,7 +40,7 @@ void check_report_digits(unsigned digits);
 // One real of a report.
 struct proved_real {
   std::string value;                              // correctly rounded, `digits` significant digits
-  std::pair<std::string, std::string> enclosure;  // holds the exact value; outward, digits + 3 digits
+  std::pair<std::string, std::string> enclosure;  // holds the exact value; outward, digits + 3 digits (when asked)
   operator const std::string&() const { return value; }  // where text is wanted, the value
 };
 inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }
@@ -56,6 +56,7 @@ struct pair_report_options {
   unsigned digits = 17;      // significant digits of every real, in [1, 10000]
   std::string qdot0 = "1";   // impulse amplitude v > 0: an exact decimal or fraction
   bool asymptotics = true;   // the paper's asymptotics (the pair values of design, Pareto, coupling skip them)
+  bool enclosures = false;   // fill proved_real::enclosure (decimal text costs as much as the roundings)
 };
 
 struct pair_report {
@@ -79,7 +80,7 @@ struct pair_report {
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt = {});
 
 // The values the design, Pareto, coupling and report commands list: prove_pair without the
-// asymptotics, qdot0 = 1.
+// asymptotics, qdot0 = 1, with the enclosures.
 pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits);
 
 // The paper's Case B quantities of its lobe k of p (qdot0 = 1): u_asy, theta_asy, q'(theta_asy)

@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include <gyrores/core/fixed_precision.hpp>
+
 namespace gyrores {
 
 std::string format_scientific(const mpfr_real& v, unsigned digits, mpfr_rnd_t rnd) {
@@ -18,7 +20,8 @@ std::string format_scientific(mpfr_srcptr v, unsigned digits, mpfr_rnd_t rnd) {
   mpfr_free_str(raw);
   const bool neg = !s.empty() && s[0] == '-';
   if (neg) s.erase(0, 1);
-  return scientific_text(neg, s, mpfr_zero_p(v) ? 0 : long(exp) - 1);
+  if (mpfr_zero_p(v)) return scientific_text(false, s, 0);  // -0 (an interval's end) prints as 0
+  return scientific_text(neg, s, long(exp) - 1);
 }
 
 bool enclosure_rounding(mpfr_srcptr lo, mpfr_srcptr hi, unsigned digits, std::string& out) {
@@ -49,10 +52,20 @@ std::string scientific_text(bool negative, const std::string& digits, long e10) 
   return out;
 }
 
-bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits) {
-  if (mpfr_zero_p(v.backend().data())) return true;
-  mpfr_real lo = v - abs(v) * rel_err, hi = v + abs(v) * rel_err;
+bool digits_settled(mpfr_srcptr v, mpfr_srcptr rel_err, unsigned digits) {
+  if (mpfr_zero_p(v)) return true;
+  // |v| rel_err exactly (the product of a p-bit and a q-bit number has p + q bits), the ends outward.
+  const mpfr_prec_t prec = mpfr_get_prec(v) + mpfr_get_prec(rel_err);
+  fixed_mpfr d(prec), lo(prec), hi(prec);
+  mpfr_mul(d, v, rel_err, MPFR_RNDN);
+  mpfr_abs(d, d, MPFR_RNDN);
+  mpfr_sub(lo, v, d, MPFR_RNDD);
+  mpfr_add(hi, v, d, MPFR_RNDU);
   return format_scientific(lo, digits) == format_scientific(hi, digits);
+}
+
+bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits) {
+  return digits_settled(v.backend().data(), rel_err.backend().data(), digits);
 }
 
 big_int parse_big_int(const std::string& text, const std::string& what) {

@@ -25,33 +25,39 @@ constexpr unsigned max_report_bits = 1u << 20;
 // not decide (the precision then doubles).
 class rounder {
  public:
-  explicit rounder(unsigned digits) : digits_(digits) {}
+  rounder(unsigned digits, bool enclosures) : digits_(digits), enclosures_(enclosures) {}
   void operator()(proved_real& out, const iv& x, const char* name) {
     if (!enclosure_rounding(x.left(), x.right(), digits_, out.value)) {
       if (undecided_.empty()) undecided_ = name;
       return;
     }
-    out.enclosure = {format_scientific(x.left(), digits_ + 3, MPFR_RNDD), format_scientific(x.right(), digits_ + 3, MPFR_RNDU)};
+    enclosure(out, x);
   }
   // A field whose exact value is the rational q (x: its enclosure at this precision).
   void exact(proved_real& out, const big_rational& q, iv& x) {
     out.value = format_rational_scientific(q, digits_);
     mpfi_set_q(x, q.backend().data());
-    out.enclosure = {format_scientific(x.left(), digits_ + 3, MPFR_RNDD), format_scientific(x.right(), digits_ + 3, MPFR_RNDU)};
+    enclosure(out, x);
   }
   const std::string& undecided() const { return undecided_; }
 
  private:
+  void enclosure(proved_real& out, const iv& x) const {
+    if (enclosures_)
+      out.enclosure = {format_scientific(x.left(), digits_ + 3, MPFR_RNDD), format_scientific(x.right(), digits_ + 3, MPFR_RNDU)};
+  }
   unsigned digits_;
+  bool enclosures_;
   std::string undecided_;
 };
 
 // Calls fill(bits, rounder) at doubling precisions from `start` until it succeeds (its proofs
 // held) with every rounding decided.
-template <class Fill> void refine(const resonant_pair<big_int>& p, unsigned digits, unsigned start, Fill&& fill) {
+template <class Fill>
+void refine(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, unsigned start, Fill&& fill) {
   std::string last = "a proof of the root";
   for (unsigned bits = start; bits <= max_report_bits; bits *= 2) {
-    rounder r(digits);
+    rounder r(digits, enclosures);
     if (!fill(bits, r)) continue;
     if (r.undecided().empty()) return;
     last = "the rounding of " + r.undecided();
@@ -319,7 +325,7 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
                           " >= 1/2: the lobe equation x tan u = tan(mu - x u) need not have a unique root in "
                           "|u| < pi/2 and the slow-node reduction (mu and x u small) does not apply";
   if (r.asymptotic_applicable) r.asymptotic_reason = asymptotic_remarks(p, paper_fast_node(a, b).tie);
-  refine(p, opt.digits, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
+  refine(p, opt.digits, opt.enclosures, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
     r.bits = bits;
     theorem_constants K(bits);
     set_theorem_constants(K, p);
@@ -341,6 +347,7 @@ pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits) 
   pair_report_options opt;
   opt.digits = digits;
   opt.asymptotics = false;
+  opt.enclosures = true;
   return prove_pair(p, opt);
 }
 
@@ -352,7 +359,7 @@ paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_in
     throw compute_error("pair " + p.str() + " has no asymptotic lobe k = " + k.str());
   const big_int m = a - 2 * k * b;
   paper_lobe_detail d;
-  refine(p, digits, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
+  refine(p, digits, true, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
     theorem_constants K(bits);
     set_theorem_constants(K, p);
     root_cache cache(K, p);
