@@ -9,9 +9,9 @@
 namespace gyrores::cli::report {
 namespace {
 
-// The paper's asymptotics for (6, 5), lobe k = 6 (theta_asy = 3.30), verified to 6 digits.
-std::string asymptotic_claims(const verified_paper_lobe& l) {
-  const double qdot_asy_rho0 = std::fabs(std::strtod(l.qdot_asy_over_rho0.c_str(), nullptr));
+// The paper's asymptotics for (6, 5), lobe k = 6 (theta_asy = 3.30), proved, 6 digits.
+std::string asymptotic_claims(const paper_lobe_detail& l) {
+  const double qdot_asy_rho0 = std::fabs(std::strtod(l.qdot_asy_over_rho0.value.c_str(), nullptr));
   std::ostringstream md;
   md << "| u_asy = -0.17 rad | lobe k = 6: u_asy = " << l.u_asy << " | "
      << verdict(agrees_with_printed("-0.17", l.u_asy)) << " (digits swapped? -0.71) |\n"
@@ -28,7 +28,7 @@ std::string asymptotic_claims(const verified_paper_lobe& l) {
 std::string case_b_claims(context& c) {
   const auto v = c.values(6, 5);
   const auto d1 = c.smallest(1, 1);
-  const auto lobe = verify_paper_lobe(resonant_pair<big_int>(6, 5), big_int(6), 6);
+  const auto lobe = prove_paper_lobe(resonant_pair<big_int>(6, 5), big_int(6), 6);
   std::ostringstream md;
   md << claims_table_head << "| delta = 1 and beat >= 10 give (6, 5) | smallest delta = 1 pair with beat >= 10: "
      << pair_name(d1.front().tau, d1.front().sigma) << " | "
