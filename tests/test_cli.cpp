@@ -35,7 +35,8 @@ TEST_CASE("pair --json has the documented schema", "[cli]") {
   auto j = cli_json("pair 6 5 --json --digits 30");
   for (const char* k : {"tau", "sigma", "delta", "delta_mod4", "v2_delta", "degenerate", "order", "beat_ratio", "n",
                         "omega1", "omega2", "rho0", "qdot0", "r_res", "h_min", "h_z_max", "theta_first", "t_first",
-                        "minimisers", "t_min_paper", "method", "digits"})
+                        "minimisers", "t_min_paper", "format", "m_min", "theorem", "bits", "digits", "asymptotic",
+                        "r_res_asy", "r_res_asy_rel_error"})
     CHECK(j.contains(k));
   CHECK(j["tau"].is_number_integer());
   CHECK(j["tau"] == 6);
@@ -46,7 +47,10 @@ TEST_CASE("pair --json has the documented schema", "[cli]") {
   CHECK(j["order"] == 11);
   CHECK(j["degenerate"] == false);
   CHECK(j["digits"] == 30);
-  CHECK(j["method"] == "lattice");
+  CHECK(j["format"] == "gyrores-pair/2");
+  CHECK(j["theorem"] == "lattice-theorem/1");
+  CHECK(j["m_min"] == 1);
+  CHECK(!j.contains("enclosures"));
   for (const char* k : {"n", "r_res", "theta_first", "t_first", "t_min_paper", "h_min"}) {
     REQUIRE(j[k].is_string());
     CHECK(mantissa_digits(j[k].get<std::string>()) == 30);
@@ -54,6 +58,22 @@ TEST_CASE("pair --json has the documented schema", "[cli]") {
   REQUIRE(j["minimisers"].size() == 2);
   // The paper prints r_min = 5.075e-2 for (6,5) (Section V, case B): right to 4 digits.
   CHECK(j["r_res"].get<std::string>().substr(0, 6) == "5.0745");
+  // --enclosures: [lo, hi] under every real's key, holding the printed value.
+  auto e = cli_json("pair 6 5 --json --digits 30 --enclosures");
+  REQUIRE(e.contains("enclosures"));
+  for (const char* k : {"n", "r_res", "h_min", "h_z_max", "theta_first", "t_first", "t_min_paper", "r_res_asy"}) {
+    INFO(k);
+    REQUIRE(e["enclosures"][k].size() == 2);
+    const double lo = std::stod(e["enclosures"][k][0].get<std::string>()), hi = std::stod(e["enclosures"][k][1].get<std::string>());
+    const double v = std::stod(e[k].get<std::string>());
+    CHECK(lo <= v * (1 + 1e-15));
+    CHECK(v <= hi * (1 + 1e-15));
+  }
+  CHECK(e["enclosures"]["minimisers"].size() == 2);
+  CHECK(e["enclosures"]["asymptotic_lobes"].size() == 2);
+  const auto text = cli_run("pair 6 5 --enclosures");
+  REQUIRE(text.status == 0);
+  CHECK(text.out.find("r_res         5.0745805791033372e-02  in [5.0745805791033372") != std::string::npos);
 }
 
 TEST_CASE("pair digits are all correct (against the library at 60 digits)", "[cli]") {
@@ -84,7 +104,7 @@ TEST_CASE("huge pairs print exact integers and a lattice result", "[cli]") {
   CHECK(r.out.find("\"tau\": 1000000000000000000000000000001,") != std::string::npos);
   CHECK(r.out.find("\"order\": 2000000000000000000000000000001,") != std::string::npos);
   auto j = nlohmann::json::parse(r.out);
-  CHECK(j["method"] == "lattice");
+  CHECK(j["format"] == "gyrores-pair/2");
   CHECK(mantissa_digits(j["r_res"].get<std::string>()) == 40);
 }
 
@@ -99,7 +119,7 @@ TEST_CASE("degenerate pairs: r_res is exactly zero, first zero at pi/2", "[cli]"
   if (!cli_available()) return;
   auto j = cli_json("pair 11 9 --json");
   CHECK(j["degenerate"] == true);
-  CHECK(j["method"] == "degenerate-exact");
+  CHECK(j["m_min"] == 0);
   CHECK(j["r_res"] == "0.0000000000000000e+00");
   CHECK(j["theta_first"] == "1.5707963267948966e+00");
   // t_first = sqrt(99) pi/2 = (delta/2) pi/n.
@@ -131,7 +151,7 @@ TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli
            row{"pair 6 5 --bogus", 2, "--bogus"},
            row{"pair 6 5 --method magic", 2, "--method"},
            row{"frobnicate", 2, ""},
-           row{"pair 200001 2 --method global", 3, "global search is limited"},
+           row{"pair 6 5 --estimate", 2, "--estimate"},
        }) {
     check_rejected(args, status, needle);
   }
@@ -178,14 +198,10 @@ TEST_CASE("certify writes a certificate that check accepts; tampering and corrup
   auto t5 = j;
   t5["tau"] = 6;  // a JSON number is not the format's integer
   CHECK(cli_run("check " + write("number.json", t5.dump())).status == 2);
-  // The cover certificate (format /1) still round-trips, and dropping an obligation fails.
-  const std::string file1 = dir + "/c1.json";
-  REQUIRE(cli_run("certify 6 5 --digits 20 --cover --out " + file1).status == 0);
-  CHECK(cli_run("check " + file1).status == 0);
-  auto j1 = nlohmann::json::parse(gyrores::test::read_text(file1));
-  CHECK(j1["format"] == "gyrores-certificate/1");
-  j1["obligations"].erase(j1["obligations"].begin());
-  CHECK(cli_run("check " + write("drop1.json", j1.dump())).status == 1);
+  // The retired cover format /1 is refused at once, exit 2 (test_certificate_retired.cpp).
+  auto t6 = j;
+  t6["format"] = "gyrores-certificate/1";
+  CHECK(cli_run("check " + write("retired.json", t6.dump())).status == 2);
   // Unreadable or malformed: exit 2.
   CHECK(cli_run("check " + write("trunc.json", text.substr(0, text.size() / 2))).status == 2);
   CHECK(cli_run("check " + write("garbage.json", "not json")).status == 2);
@@ -199,14 +215,14 @@ TEST_CASE("certify writes a certificate that check accepts; tampering and corrup
 }
 
 // Issue 12: the inputs that printed a wrong number or exited 3. The values are the independent
-// reference's (tests/test_pair_truth.cpp checks them at every digit count against
+// reference's (tests/test_pair_report.cpp checks them at every digit count against
 // src/testing/high_precision_reference.hpp).
 TEST_CASE("pair: a minimiser near 0 and its mirror near 2 pi are printed right (issue 12)", "[cli]") {
   if (!cli_available()) return;
   const std::string sigma = "1" + std::string(50, '0'), tau = "3" + std::string(49, '0') + "1";
   for (const char* d : {"5", "12"}) {
     INFO("digits " << d);
-    auto j = cli_json("pair " + tau + " " + sigma + " --json --estimate --digits " + d);
+    auto j = cli_json("pair " + tau + " " + sigma + " --json --digits " + d);
     const std::string th = std::string(d) == "5" ? "1.5708e-50" : "1.57079632679e-50";
     CHECK(j["theta_first"] == th);
     CHECK(j["t_first"] == (std::string(d) == "5" ? "2.7207e+00" : "2.72069904635e+00"));
@@ -214,27 +230,26 @@ TEST_CASE("pair: a minimiser near 0 and its mirror near 2 pi are printed right (
     CHECK(j["minimisers"][0] == th);
     CHECK(j["minimisers"][1] == (std::string(d) == "5" ? "6.2832e+00" : "6.28318530718e+00"));
   }
-  const auto r = cli_run("pair " + tau + " " + sigma + " --estimate --digits 5");
+  const auto r = cli_run("pair " + tau + " " + sigma + " --digits 5");
   REQUIRE(r.status == 0);
   CHECK(r.out.find("theta_first   1.5708e-50") != std::string::npos);
   CHECK(r.out.find("minimisers    1.5708e-50, 6.2832e+00") != std::string::npos);
 }
 
-TEST_CASE("pair: exact ties and unsettled diagnostics do not exit 3 (issue 12)", "[cli]") {
+TEST_CASE("pair: exact ties and cancelling asymptotics are proved, not exit 3 (issue 12)", "[cli]") {
   if (!cli_available()) return;
-  auto j = cli_json("pair 2305843009213693951 2305843009213693949 --json --estimate");
+  auto j = cli_json("pair 2305843009213693951 2305843009213693949 --json");
   CHECK(j["beat_ratio"] == "2.3058430092136940e+18");
-  CHECK(j["unsettled"].is_object());
   const std::string big = "1" + std::string(400, '0');
-  auto r = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --estimate");
+  auto r = cli_run("pair " + big.substr(0, 400) + "1 " + big);
   REQUIRE(r.status == 0);
   CHECK(r.out.find("r_res ") != std::string::npos);
-  // The closed form's relative error is nearly all cancellation: marked, not blocking. (The JSON
-  // holds 401-digit integers, beyond what the parser takes: read as text.)
-  auto k = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --json --estimate");
+  // The closed form's relative error is nearly all cancellation (x ~ 5e-401): proved like the
+  // rest, to 17 digits. (The JSON holds 401-digit integers, beyond what the parser takes: read
+  // as text.)
+  auto k = cli_run("pair " + big.substr(0, 400) + "1 " + big + " --json");
   REQUIRE(k.status == 0);
-  const auto at = k.out.find("\"unsettled\": {");
+  const auto at = k.out.find("\"r_res_asy_rel_error\": \"");
   REQUIRE(at != std::string::npos);
-  CHECK(k.out.substr(at, k.out.find('}', at) - at).find("\"r_res_asy_rel_error\": 0") != std::string::npos);
-  CHECK(r.out.find("rel. error < ") != std::string::npos);  // the text marks the bound
+  CHECK(mantissa_digits(k.out.substr(at + 24, k.out.find('"', at + 24) - at - 24)) == 17);
 }
