@@ -36,15 +36,17 @@ std::string design_row(context& c, design_problem prob, const std::string& T) {
 
 // The reading of the table: when (11, 9) and (6, 5) are chosen, and the fastest admissible pair.
 std::string design_reading(const context& c) {
-  const auto e = c.find(6, 5);
+  const auto ev = c.values(6, 5);  // proved, as every printed number
   double fastest = 0;
   std::string fastest_pair;
+  design_point fastest_point;
   pair_filter f10;
   f10.beat_min = big_rational(10);
   for (const auto& p : c.catalogue)
     if (pair_filter_accepts(f10, p) && (fastest_pair.empty() || p.t_first < fastest)) {
       fastest = p.t_first;
       fastest_pair = pair_name(p.tau, p.sigma);
+      fastest_point = p;
     }
   design_options o;
   o.problem = design_problem::contain;
@@ -58,11 +60,13 @@ std::string design_reading(const context& c) {
         "include degenerate pairs whose proxy is below T_max but whose exact first zero comes delta/2 times later "
         "(`gyrores design absorb --tmax 16 --beat 10 --proxy`). Containment picks (6, 5) as soon as T_max >= its exact "
         "t_first = "
-     << num(e.t_first) << "; with the proxy it needs T_max >= pi/n = " << num(e.t_proxy);
+     << ev.t_first << "; with the proxy it needs T_max >= pi/n = " << ev.t_min_paper;
   if (rp.feasible_any())
     md << ", and at T_max = 17 the proxy chooses " << pair_name(rp.ranked.front().tau, rp.ranked.front().sigma)
-       << ", whose r_res is " << num(e.r_res / rp.ranked.front().r_res) << " times smaller";
-  md << ". The fastest pair with beat >= 10 is " << fastest_pair << " (t_first = " << num(fastest)
+       << ", whose r_res is " << c.values(rp.ranked.front().tau, rp.ranked.front().sigma).r_res << " against "
+       << ev.r_res;
+  md << ". The fastest pair with beat >= 10 is " << fastest_pair
+     << " (t_first = " << c.values(fastest_point.tau, fastest_point.sigma).t_first
      << "): below that no pair qualifies and `gyrores design` exits with status 3.\n\n";
   return md.str();
 }

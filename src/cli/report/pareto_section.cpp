@@ -23,9 +23,9 @@ const char* const pair_table_head =
 std::string front_observation(const context& c, const std::vector<design_point>& front) {
   std::ostringstream md;
   md << "Observation (this data, not a theorem): the fastest pair is " << pair_name(front.front().tau, front.front().sigma)
-     << " (t_first = " << num(front.front().t_first) << "), and the front runs down a family of pairs whose ratio tau/sigma "
+     << " (t_first = " << c.values(front.front().tau, front.front().sigma).t_first << "), and the front runs down a family of pairs whose ratio tau/sigma "
         "tends to 3 until it ends at the degenerate pair (3, 1), r_res = 0 at t_first = sqrt(3) pi/2 = "
-     << num(c.find(3, 1).t_first)
+     << c.values(3, 1).t_first
      << ". Every slower pair, including all near-irrational (small n) ones, is dominated by (3, 1): with exact times, deep "
         "exchange does not have to be slow; the paper's trade-off picture holds only among pairs that exclude (3, 1).\n\n";
   return md.str();
