@@ -57,10 +57,10 @@ struct root_enclosure {
   fixed_mpfi tc, wc, mu;  // tan(centre), tan(mu - x centre), mu (theorem) or s (paper)
 };
 
-// The theorem's root for offset m >= 1 (mu = pi m/(2a) < pi/2: m < a, true for m_min and the
-// fast node's |m|): r.U is a proved bracket of H^{-1}(mu) about the ladder's point with relative
-// half-width 2^-(prec - 16), r.T = tan(r.U). False when the proof fails at this precision (the
-// caller doubles it); never a wrong enclosure.
+// The theorem's root for offset 0 < m < a (mu = pi m/(2a) < pi/2; true for m_min and the fast
+// node's |m|; usage_error otherwise): r.U is a proved bracket of H^{-1}(mu) about the ladder's
+// point with relative half-width 2^-(prec - 16), r.T = tan(r.U). False when the proof fails at
+// this precision (the caller doubles it); never a wrong enclosure.
 bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
 // The ladder alone (step 1): r.u, r.centre, r.tc, r.wc, r.mu for offset m; false if the centre's
@@ -79,5 +79,11 @@ bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_i
 
 // Step 3: r = sqrt(G) over T = tan(U) (v = 1).
 void theorem_radius(fixed_mpfi& r, const theorem_constants& K, const fixed_mpfi& T);
+
+// The addition formula of steps 1-2, as an enclosure at out's precision: out holds tan(c + d) for
+// every c with tan c in TC and every d in D, (TC + TD)/(1 - TC TD) with TD = D + D^3/3 +
+// [-1, 1] |D|^5/7. Precondition (not checked): |D| <= 1/4 (the remainder bound needs it; the
+// brackets use |D| <= 2^-10). Where 1 - TC TD holds 0 (c + d near a pole) out is unbounded.
+void tan_shift(fixed_mpfi& out, const fixed_mpfi& tc, const fixed_mpfi& d);
 
 }  // namespace gyrores

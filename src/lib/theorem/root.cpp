@@ -88,6 +88,8 @@ void tan_shift_point(fr& out, mpfr_srcptr tc, mpfr_srcptr d) {
   mpfr_div(out, out, den, MPFR_RNDN);
 }
 
+}  // namespace
+
 // tan(c + d) for every d in D (|D| <= 1/4) and tan c in TC: (TC + TD)/(1 - TC TD) with
 // TD = D + D^3/3 + [-1, 1] |D|^5/7 (the header comment, step 2).
 void tan_shift(iv& out, const iv& tc, const iv& d) {
@@ -111,6 +113,8 @@ void tan_shift(iv& out, const iv& tc, const iv& d) {
   mpfi_add(out, tc, td);
   mpfi_div(out, out, den);
 }
+
+namespace {
 
 // Arb's error for a small argument |v| ~ 2^-k is not relative to v: k more bits keep the
 // result as accurate, relatively, as the argument (without them the ball of tan(mu - x c) for
@@ -385,6 +389,9 @@ bool theorem_end(const theorem_constants& K, const root_enclosure& r, const iv& 
 }  // namespace
 
 bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m) {
+  // 0 < m < a keeps mu in (0, pi/2), where the bracket's argument holds (header, step 2).
+  if (m <= 0 || mpfr_cmp_z(K.a.left(), m.backend().data()) <= 0)
+    throw usage_error("the theorem's root needs an offset 0 < m < a, got m = " + m.str());
   pi_ratio(r.mu, K, m, K.a);
   return newton_ladder(r, K, true, theorem_scout(r, K));
 }
