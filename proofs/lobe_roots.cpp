@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include <gyrores/core/interval_newton.hpp>
-#include <gyrores/inscribed/asymptotic.hpp>
+#include "reference/asymptotic.hpp"
 
 namespace gyrores::proofs {
 

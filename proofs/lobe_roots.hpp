@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <optional>
 
-#include <gyrores/certify/proof_steps.hpp>
+#include "reference/proof_steps.hpp"
 
 namespace gyrores::proofs {
 
@@ -20,7 +20,7 @@ struct paper_lobe {
 paper_lobe paper_lobe_of(const proof::constants& K, const big_int& m);
 
 // Double-precision guesses of u_c (lobe_equation_root) and u_asy (u_plus_tan_u_root) for the
-// lobe with offset m of the pair of order a and delta b (inscribed/asymptotic.hpp; x < 1/2).
+// lobe with offset m of the pair of order a and delta b (tests/reference/asymptotic.hpp; x < 1/2).
 struct lobe_guesses {
   double u_c, u_asy;
 };

@@ -26,7 +26,7 @@
 // The log gives, per lobe, the enclosure of ratio = |theta_c - theta_asy|/(pi^3 x^2/a) and of
 // its x -> 0 limit 2 C(s)/pi^3 = 2 tan^3 u/(3 pi^3 (1 + sec^2 u)) at u = u_asy (docs/mathematics.md §3).
 // Option --every K: log only every K-th pair (and every pair with a new largest ratio).
-#include <gyrores/inscribed/asymptotic.hpp>
+#include "reference/asymptotic.hpp"
 
 #include <limits>
 

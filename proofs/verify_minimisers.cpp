@@ -34,15 +34,15 @@
 //   cert.check   (with --check) gyrores::check_certificate re-proves the certificate.       [asserted]
 //
 // Options: --check (run the independent checker too, ~doubles the time); --digits D (default 6).
-#include <gyrores/certify/check.hpp>
-#include <gyrores/certify/certify.hpp>
-#include <gyrores/certify/proof_steps.hpp>
-#include <gyrores/inscribed/asymptotic.hpp>
+#include "reference/asymptotic.hpp"
 
 #include <limits>
 #include <optional>
 #include <set>
 
+#include "reference/certify.hpp"
+#include "reference/check.hpp"
+#include "reference/proof_steps.hpp"
 #include "verify_common.hpp"
 
 using namespace gyrores;

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/inscribed/asymptotic.hpp>
+#include "reference/asymptotic.hpp"
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/search/global_search.hpp>
 #include "testing/naive_forms.hpp"
 #include "testing/test_support.hpp"
 
@@ -502,7 +502,7 @@ namespace {
 
 // Independent reference for asymptotic_error_scaled(x, s, u, pi): the root E of
 //   E + sin(E x^2)/(x^2 cos u cos(u + E x^2)) - (tan w - w)/x^3,   w = x (s - u - E x^2),
-// the cancellation-free equation of inscribed/asymptotic.hpp written out directly, with the
+// the cancellation-free equation of tests/reference/asymptotic.hpp written out directly, with the
 // inputs x, s, u taken exactly (they are the values the library was given, not the exact
 // reals they round), evaluated in mpfr at 50 digits plus the 2 log10(1/|w|) that tan w - w
 // loses to cancellation, and solved by Boost's TOMS 748 (not the library's wrapper) on a bracket

@@ -1,21 +1,23 @@
-// Certificates: enclosures contain independent references (src/testing/high_precision_reference.hpp,
+// The cover certificate of the tests' reference (tests/reference/: the retired format /1, an
+// oracle for the theorem's certificates and the proof programs, no longer part of the product):
+// enclosures contain independent references (src/testing/high_precision_reference.hpp,
 // naive formulation in MPFR, no lobe-frame code), widths meet the digits, the checker accepts
 // honest certificates at 20, 100 and 1000 digits and rejects tampered ones; the JSON form reads
 // back to the same certificate; the cover the proof programs use.
 #include <catch2/catch.hpp>
 
-#include <gyrores/certify/check.hpp>
-#include <gyrores/certify/certify.hpp>
-#include <gyrores/certify/cover.hpp>
-#include <gyrores/certify/proof_steps.hpp>
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/interval.hpp>
-#include <gyrores/inscribed/lattice.hpp>
-#include <gyrores/io/certificate_json.hpp>
+#include "reference/lattice.hpp"
 #include <gyrores/model/enumerate.hpp>
 
 #include <limits>
 
+#include "reference/certificate_json.hpp"
+#include "reference/certify.hpp"
+#include "reference/check.hpp"
+#include "reference/cover.hpp"
+#include "reference/proof_steps.hpp"
 #include "testing/high_precision_reference.hpp"
 
 using namespace gyrores;

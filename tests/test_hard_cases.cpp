@@ -22,10 +22,10 @@
 #include <iostream>
 #include <iomanip>
 
-#include <gyrores/inscribed/cross_check.hpp>
+#include <gyrores/search/cross_check.hpp>
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/inscribed/global_search.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/search/global_search.hpp>
+#include "reference/lattice.hpp"
 #include <gyrores/core/decimal.hpp>
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_toms748.hpp"

@@ -11,10 +11,10 @@
 #include <sstream>
 #include <vector>
 
-#include <gyrores/inscribed/cross_check.hpp>
+#include <gyrores/search/cross_check.hpp>
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/inscribed/global_search.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/search/global_search.hpp>
+#include "reference/lattice.hpp"
 #include <gyrores/theorem/lobes.hpp>
 #include "testing/test_support.hpp"
 
@@ -170,19 +170,19 @@ TEST_CASE("cross_check_lattice accepts a true result and rejects tampered ones",
   for (pair64 p : {pair64(6, 5), pair64(9, 4), pair64(5, 1), pair64(1000, 1), pair64(101, 37)}) {
     INFO("pair " << p.str());
     auto lat = gyrores::inscribed_lattice<double>(p, 1.0);
-    CHECK_NOTHROW(gyrores::cross_check_lattice(p, 1.0, lat));
+    CHECK_NOTHROW(gyrores::cross_check_global(p, 1.0, lat));
 
     auto bad_r = lat;
     bad_r.r_res *= 1 + 1e-6;
-    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, 1.0, bad_r), gyrores::compute_error);
+    CHECK_THROWS_AS(gyrores::cross_check_global(p, 1.0, bad_r), gyrores::compute_error);
 
     auto bad_theta = lat;
     bad_theta.minimisers.front() *= 1 + 1e-6;
-    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, 1.0, bad_theta), gyrores::compute_error);
+    CHECK_THROWS_AS(gyrores::cross_check_global(p, 1.0, bad_theta), gyrores::compute_error);
 
     auto bad_count = lat;
     bad_count.minimisers.pop_back();
-    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, 1.0, bad_count), gyrores::compute_error);
+    CHECK_THROWS_AS(gyrores::cross_check_global(p, 1.0, bad_count), gyrores::compute_error);
   }
   {
     // The same in mpfr_real, whose r_res carries digits the double check cannot see: a relative
@@ -190,9 +190,9 @@ TEST_CASE("cross_check_lattice accepts a true result and rejects tampered ones",
     scoped_digits d(40);
     pair64 p(9, 4);
     auto lat = gyrores::inscribed_lattice<mpfr_real>(p, mpfr_real(2));
-    CHECK_NOTHROW(gyrores::cross_check_lattice(p, mpfr_real(2), lat));
+    CHECK_NOTHROW(gyrores::cross_check_global(p, mpfr_real(2), lat));
     lat.r_res *= 1 + mpfr_real("1e-6");
-    CHECK_THROWS_AS(gyrores::cross_check_lattice(p, mpfr_real(2), lat), gyrores::compute_error);
+    CHECK_THROWS_AS(gyrores::cross_check_global(p, mpfr_real(2), lat), gyrores::compute_error);
   }
 }
 

@@ -1,5 +1,7 @@
 // Umbrella header: the whole mathematical library, layer by layer in the order the data flows
 // (docs/architecture.md). File and JSON I/O is the separate io/ part: include <gyrores/io/...>.
+// The skeptic's cross-validation (search/: the global search over every critical point) is on
+// no default path and not included here: include <gyrores/search/...> for it.
 #pragma once
 // core: errors, integers, reals, decimal text, intervals, roots, precision and verified digits
 #include <gyrores/core/error.hpp>            // usage_error (bad input), compute_error (could not compute honestly)
@@ -22,13 +24,6 @@
 #include <gyrores/theorem/root.hpp>           // u* and the paper's root: points in double, proved enclosures
 #include <gyrores/theorem/minimum.hpp>        // r_res, minimisers, theta_first, t_first
 #include <gyrores/theorem/pair_report.hpp>    // everything about one pair, every real proved
-// inscribed radius: degenerate pairs, global search, lattice, asymptotics, analysis
-#include <gyrores/inscribed/result.hpp>      // inscribed_result<T>
-#include <gyrores/inscribed/degenerate.hpp>  // delta = 2 mod 4: r_res = 0 by integer arithmetic
-#include <gyrores/inscribed/global_search.hpp>  // reference method: all critical points
-#include <gyrores/inscribed/lattice.hpp>     // O(log tau) method for any pair
-#include <gyrores/inscribed/cross_check.hpp> // lattice vs global search
-#include <gyrores/inscribed/asymptotic.hpp>  // the paper's theta_asy, error bound, r_res_asy
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 // design, figures data, sweeps

@@ -1,9 +1,20 @@
 // Real types gyrores runs on, and exact-as-possible conversions into them.
 //
 // Every numerical routine is a template on the real type T. Supported: double, long double,
-// float128, cpp_bin_float_*, mpfr_real (MPFR, precision chosen at run time) and, for
-// certificates, mpfi_real (MPFI intervals). mpfr_real and mpfi_real use expression templates
-// off, so `auto` in generic code holds a value, not an expression.
+// float128, cpp_bin_float_*, mpfr_fixed<D> (MPFR with D decimal digits fixed at compile time),
+// mpfr_real (MPFR, precision chosen at run time) and, for the proof programs and the tests'
+// oracles, mpfi_real (MPFI intervals). The MPFR and MPFI types use expression templates off, so
+// `auto` in generic code holds a value, not an expression.
+//
+// Precision and threads. mpfr_real and mpfi_real take the precision of a new value from a
+// process-wide default (Boost 1.74 keeps it in one static variable), and Boost's own operators
+// and functions on them set that default for the duration of the call whenever an operand's
+// precision differs from it. So mpfr_real and mpfi_real arithmetic is safe on several threads at
+// once only while every value has the default precision and nobody changes the default. The
+// library never changes it (docs/architecture.md, Conventions): proved code works on
+// fixed_mpfr/fixed_mpfi (core/fixed_precision.hpp) or Arb balls, and generic code that needs a
+// chosen MPFR precision runs in mpfr_fixed<D> (core/precision.hpp, with_real_type), whose
+// precision is part of the type.
 #pragma once
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -35,11 +46,24 @@ using mpfi_real = boost::multiprecision::number<boost::multiprecision::mpfi_floa
 #define GYRORES_FOR_COMPILED_REALS(X, PREFIX) \
   X(PREFIX, double) X(PREFIX, long double) X(PREFIX, ::gyrores::float128) X(PREFIX, ::gyrores::mpfr_real)
 
+// MPFR with D > 0 decimal digits (digits10_2_2(D) bits) fixed by the type: Boost's precision
+// guards do nothing for it, so it never reads or writes the process-wide default.
+template <unsigned Digits10>
+using mpfr_fixed = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<Digits10>,
+                                                 boost::multiprecision::et_off>;
+
 template <class T> inline constexpr bool is_mpfr_v = std::is_same_v<T, mpfr_real>;
+namespace detail {
+template <class T> struct is_mpfr_fixed : std::false_type {};
+template <unsigned D>
+struct is_mpfr_fixed<boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>,
+                                                   boost::multiprecision::et_off>> : std::bool_constant<(D > 0)> {};
+}  // namespace detail
+template <class T> inline constexpr bool is_mpfr_fixed_v = detail::is_mpfr_fixed<T>::value;
 template <class T> inline constexpr bool is_mpfi_v = std::is_same_v<T, mpfi_real>;
 template <class T> inline constexpr bool is_variable_precision_v = is_mpfr_v<T> || is_mpfi_v<T>;
 
-// Working precision of T in bits (for mpfr/mpfi: the current default precision).
+// Working precision of T in bits (for mpfr_real/mpfi_real: the current default precision).
 template <class T> unsigned real_bits() {
   if constexpr (is_variable_precision_v<T>)
     return unsigned(boost::multiprecision::detail::digits10_2_2(T::default_precision()));
@@ -54,8 +78,10 @@ template <class T> T real_epsilon() {
 }
 
 // Sets the default decimal precision of mpfr_real and mpfi_real for a scope, restoring it after.
-// Boost 1.74 keeps this default in one process-wide variable: do not change it concurrently
-// from several threads.
+// Boost 1.74 keeps this default in one process-wide variable, so this is for single-threaded
+// programs only (the tests' oracles, the proof programs, the benchmarks): code that may run on
+// any thread must not use it (see the header comment). The library's last user is the retired
+// lattice method (tests/reference/lattice.hpp).
 class scoped_digits {
  public:
   explicit scoped_digits(unsigned digits10)
@@ -92,7 +118,19 @@ inline unsigned digits10_to_bits(unsigned digits) {
 // at least `bits` bits.
 inline unsigned digits10_for_bits(unsigned bits) { return bits_to_digits10(bits) + 1u; }
 
-template <class T> T real_pi() { return boost::math::constants::pi<T>(); }
+// pi in T, correctly rounded. mpfr_fixed: by MPFR at each call (MPFR caches pi per thread):
+// Boost's pi<T>() for a fixed-precision MPFR type computes pi at that precision when the
+// program starts (a static initialiser per type), which the large types of the precision
+// ladder (core/precision.hpp) must not cost every process.
+template <class T> T real_pi() {
+  if constexpr (is_mpfr_fixed_v<T>) {
+    T r;
+    mpfr_const_pi(r.backend().data(), MPFR_RNDN);
+    return r;
+  } else {
+    return boost::math::constants::pi<T>();
+  }
+}
 
 // sin x and cos x of one argument, together: the lattice method's evaluations need both of two
 // angles. Generic types: std/Boost sin and cos (GCC fuses them into one sincos for double).
@@ -121,7 +159,7 @@ template <class T> T real_from_int(int128 v) {
 // the built-in conversion from int64 or int128 below 2^126; others via decimal text, correctly
 // rounded by their parsers).
 template <class T> T real_from_int(const big_int& v) {
-  if constexpr (is_variable_precision_v<T>) {
+  if constexpr (is_variable_precision_v<T> || is_mpfr_fixed_v<T>) {
     return T(v);
   } else {
     if (v == 0) return T(0);
@@ -155,7 +193,7 @@ template <class T> std::string real_type_name() {
   if constexpr (std::is_same_v<T, double>) return "double";
   else if constexpr (std::is_same_v<T, long double>) return "long double";
   else if constexpr (std::is_same_v<T, float128>) return "float128";
-  else if constexpr (is_mpfr_v<T>) return "mpfr(" + std::to_string(real_bits<T>()) + " bits)";
+  else if constexpr (is_mpfr_v<T> || is_mpfr_fixed_v<T>) return "mpfr(" + std::to_string(real_bits<T>()) + " bits)";
   else if constexpr (is_mpfi_v<T>) return "mpfi(" + std::to_string(real_bits<T>()) + " bits)";
   else return "binary" + std::to_string(real_bits<T>());
 }

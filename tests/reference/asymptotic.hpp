@@ -56,12 +56,12 @@
 #include <utility>
 #include <vector>
 
-#include <gyrores/inscribed/lattice.hpp>
+#include "reference/lattice.hpp"
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/resonant.hpp>
-#include <gyrores/inscribed/result.hpp>
+#include <gyrores/search/result.hpp>
 #include <gyrores/core/roots.hpp>
 
 namespace gyrores {
@@ -487,7 +487,7 @@ template <class T, pair_integer I> asymptotic_report<T> paper_asymptotics(const 
   return rep;
 }
 
-// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+// Compiled once in tests/reference/ for double, long double, float128 and mpfr_real.
 #define GYRORES_ASYMPTOTIC_INSTANCES(PREFIX, T) \
   PREFIX template root_result<T> u_plus_tan_u_solve<T>(const T&); \
   PREFIX template T lobe_equation_root<T>(const T&, const T&, const T&, const T&); \

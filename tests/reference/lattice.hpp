@@ -32,10 +32,10 @@
 #include <tuple>
 #include <vector>
 
-#include <gyrores/inscribed/degenerate.hpp>
-#include <gyrores/inscribed/global_search.hpp>
+#include <gyrores/search/degenerate.hpp>
+#include <gyrores/search/global_search.hpp>
 #include <gyrores/model/resonant.hpp>
-#include <gyrores/inscribed/result.hpp>
+#include <gyrores/search/result.hpp>
 #include <gyrores/core/roots.hpp>
 #include <gyrores/theorem/lobes.hpp>
 
@@ -504,7 +504,7 @@ inscribed_result<T> inscribed_lattice(const resonant_pair<I>& p, const T& v, con
     return detail::inscribed_lattice_impl<T, big_int>(p, v, opt);
 }
 
-// Compiled once in src/lib/inscribed/ for double, long double, float128 and mpfr_real.
+// Compiled once in tests/reference/ for double, long double, float128 and mpfr_real.
 #define GYRORES_LATTICE_INSTANCES(PREFIX, T) \
   PREFIX template inscribed_result<T> inscribed_lattice<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&, const lattice_options&); \
   PREFIX template inscribed_result<T> inscribed_lattice<T, big_int>(const resonant_pair<big_int>&, const T&, const lattice_options&);
