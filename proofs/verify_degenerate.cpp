@@ -17,11 +17,10 @@
 //   P3.iff         r_res = 0 <=> delta = 2 mod 4: the conjunction of the above for the pair.
 // Cover strategy: "all-lobes" (every fast lobe bisected) when a <= 8 b, "slow-nodes" (Rayleigh
 // bound away from the slow nodes, the lobes at each node bisected) otherwise; both are
-// proof::run_cover (certify/cover.hpp) with bound 0 (proofs/global-minimality.md §6, §7).
-#include <gyrores/certify/cover.hpp>
-
+// proof::run_cover (reference/cover.hpp) with bound 0 (proofs/global-minimality.md §6, §7).
 #include <limits>
 
+#include "reference/cover.hpp"
 #include "verify_common.hpp"
 
 using namespace gyrores;

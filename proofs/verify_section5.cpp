@@ -20,12 +20,11 @@
 //    certified r_res is below that of (6, 5). For orders a >= 62 this follows from
 //    r_res <= pi m_min/(2a) <= pi/a < r_res(6, 5) (proofs/README.md P8), so --max-order 61 completes the proof
 //    that (6, 5) is the best containment pair under the beat condition.
-#include <gyrores/certify/certify.hpp>
-
 #include <limits>
 #include <numeric>
 
 #include "lobe_roots.hpp"
+#include "reference/certify.hpp"
 #include "verify_common.hpp"
 
 using namespace gyrores;

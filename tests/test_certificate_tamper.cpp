@@ -1,20 +1,21 @@
-// The tamper catalogue: every field of a certificate's JSON (docs/formats.md) is changed in turn,
-// in a way that makes the certificate false or inconsistent, written to a file, read back
-// (io/certificate_json.hpp, io/files.hpp) and checked; the checker must refuse each one (a
+// The tamper catalogue of the cover reference's certificates (tests/reference/, the retired format
+// /1): every field of a certificate's JSON (docs/formats.md) is changed in turn, in a way that
+// makes the certificate false or inconsistent, written to a file, read back
+// (reference/certificate_json.hpp, io/files.hpp) and checked; the checker must refuse each one (a
 // failing verdict, or "malformed"). Pairs: small (6, 5), x -> 1 (1000, 1), huge (10^30+1, 10^30)
 // and (2^64+1, 2^64), degenerate (11, 9), and (10^9, 1), which is not proved (r_res <= hi only).
 // The obligations' `statement` texts are prose for the reader and are not part of the claim.
 #include <catch2/catch.hpp>
 
-#include <gyrores/certify/check.hpp>
-#include <gyrores/certify/certify.hpp>
-#include <gyrores/io/certificate_json.hpp>
 #include <gyrores/io/files.hpp>
 
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "reference/certificate_json.hpp"
+#include "reference/certify.hpp"
+#include "reference/check.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;

@@ -1,19 +1,19 @@
-// Mutation tests of the proof steps (certify/mutation.hpp): with each fault switched on in turn,
+// Mutation tests of the cover reference's proof steps (reference/mutation.hpp): with each fault switched on in turn,
 // the checks below (the kinds test_certificate makes: honest certificates against an independent
 // reference, and statements the steps must refuse) must fail somewhere. A fault that no check
 // notices would be a proof step that the tests run without really testing.
 #include <catch2/catch.hpp>
 
-#include <gyrores/certify/check.hpp>
-#include <gyrores/certify/certify.hpp>
-#include <gyrores/certify/cover.hpp>
-#include <gyrores/certify/mutation.hpp>
-#include <gyrores/certify/proof_steps.hpp>
 #include <gyrores/core/interval.hpp>
 
 #include <string>
 #include <vector>
 
+#include "reference/certify.hpp"
+#include "reference/check.hpp"
+#include "reference/cover.hpp"
+#include "reference/mutation.hpp"
+#include "reference/proof_steps.hpp"
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_forms.hpp"
 

@@ -1,11 +1,11 @@
 // Lattice-theorem certificates (certify/theorem_certificate.hpp) and their independent checker
 // (src/checker/): every hard case of docs/mathematics.md §4 is certified and checked through the
 // JSON text; the claims agree with the independent high-precision reference (global scan, no
-// library numerics) and with the cover certificate (proved without the theorem) on every pair up
-// to order 40; every field of the format, tampered, is refused.
+// library numerics) and with the cover certificate of the tests' reference (tests/reference/,
+// proved without the theorem) on every pair up to order 40; every field of the format, tampered,
+// is refused.
 #include <catch2/catch.hpp>
 
-#include <gyrores/certify/certify.hpp>
 #include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/io/certificate_json.hpp>
 #include <gyrores/model/enumerate.hpp>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "certificate_checker.hpp"
+#include "reference/certify.hpp"
 #include "testing/high_precision_reference.hpp"
 
 using namespace gyrores;

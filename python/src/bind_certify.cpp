@@ -1,10 +1,8 @@
-// gyrores.certify and gyrores.check: the producers (certify/theorem_certificate.hpp, the default;
-// certify/certify.hpp with cover=True) and the checkers (the independent Arb checker of
-// src/checker/ for "gyrores-certificate/2", certify/check.hpp for /1), through the JSON form
-// (io/certificate_json.hpp), so that a certificate made in Python is byte for byte the one
-// `gyrores certify` writes.
-#include <gyrores/certify/check.hpp>
-#include <gyrores/certify/certify.hpp>
+// gyrores.certify and gyrores.check: the producer (certify/theorem_certificate.hpp) and the
+// independent Arb checker (src/checker/), through the JSON form (io/certificate_json.hpp), so
+// that a certificate made in Python is byte for byte the one `gyrores certify` writes, and
+// check answers as `gyrores check` does. A certificate of the retired format /1 is refused at
+// once (UsageError), as `gyrores check` refuses it with exit 2.
 #include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/certificate_json.hpp>
@@ -15,36 +13,25 @@
 namespace gyrores::python {
 namespace {
 
-py::object certify_dict(const py::object& tau, const py::object& sigma, long long digits, bool cover) {
+py::object certify_dict(const py::object& tau, const py::object& sigma, long long digits) {
   const auto p = pair_of(tau, sigma);
   const unsigned d = checked_digits(digits, 1, 10000);
-  if (cover) return to_python(certificate_to_json(call_library([&] { return certify_pair(p, d); })));
   return to_python(certificate_to_json(call_library([&] { return certify_by_theorem(p, d); })));
 }
 
-// As `gyrores check`: malformed text is a usage_error (ValueError); a checker that cannot compute
-// its own enclosures has not re-proved the certificate, which is a failing verdict, not an error.
+// As `gyrores check`: a retired or malformed text is a usage_error (ValueError); otherwise the
+// checker's verdict, (holds, failure).
 py::tuple check_text(const std::string& text) {
-  if (certificate_format_of(text) == theorem_certificate_format) {
-    auto v = gyrores_checker::check_theorem_certificate(text);
-    if (v.status == 2) throw usage_error("malformed certificate: " + v.message.substr(v.message.find(':') + 2));
-    return py::make_tuple(v.status == 0, v.status == 0 ? std::string() : v.message);
-  }
-  const certificate c = certificate_from_text(text);
-  const check_verdict v = call_library([&] {
-    try {
-      return check_certificate(c);
-    } catch (const compute_error& e) {
-      return check_verdict{false, e.what()};
-    }
-  });
-  return py::make_tuple(v.holds, v.failure);
+  if (certificate_format_of(text) == retired_certificate_format) throw usage_error(retired_certificate_message());
+  auto v = gyrores_checker::check_theorem_certificate(text);
+  if (v.status == 2) throw usage_error("malformed certificate: " + v.message.substr(v.message.find(':') + 2));
+  return py::make_tuple(v.status == 0, v.status == 0 ? std::string() : v.message);
 }
 
 }  // namespace
 
 void bind_certify(py::module_& m) {
-  m.def("_certify", &certify_dict, py::arg("tau"), py::arg("sigma"), py::arg("digits"), py::arg("cover"),
+  m.def("_certify", &certify_dict, py::arg("tau"), py::arg("sigma"), py::arg("digits"),
         "The certificate of `gyrores certify` as a dict. Use gyrores.certify.");
   m.def("_check_text", &check_text, py::arg("text"),
         "(holds, failure) for a certificate's JSON text. Use gyrores.check.");

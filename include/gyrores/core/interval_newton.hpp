@@ -1,6 +1,6 @@
 // The one interval Newton of gyrores: proves that a function has exactly one root near a point
-// guess and encloses it (MPFI, outward rounding). Used by the certificates' "local-root" step
-// (certify/proof_steps.hpp) and by the proof programs (proofs/lobe_roots.hpp).
+// guess and encloses it (MPFI, outward rounding). Used by the proof programs (proofs/lobe_roots.hpp)
+// and by the "local-root" step of the tests' cover reference (tests/reference/proof_steps.hpp).
 //
 // The method (the interval Newton of arb_calc): for an interval X and its midpoint m,
 //   N(X) = m - f(m)/f'(X).

@@ -23,8 +23,8 @@
 // proved; and two runs can round the same way and both be wrong (an error that does not shrink
 // with the precision: a wrong branch taken, a missed minimiser, a tolerance in an iteration). It
 // catches the usual failures of floating point (too few bits, cancellation, a value on a rounding
-// boundary). For results that are proved, use certificates (certify/certificate.hpp: interval
-// arithmetic, checked obligations).
+// boundary). For results that are proved, use certificates (certify/theorem_certificate.hpp:
+// interval arithmetic, re-checked by an independent checker).
 #pragma once
 #include <functional>
 #include <map>

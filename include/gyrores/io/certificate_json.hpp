@@ -1,29 +1,29 @@
-// Certificates as JSON text (docs/formats.md): "gyrores-certificate/2" (the lattice theorem's,
-// the default; integers as decimal strings; read only by the independent checker, src/checker/)
-// and "gyrores-certificate/1" (the cover's, `gyrores certify --cover`; integers as JSON numbers
-// of any size). Writing is deterministic (fields in a fixed order), so a certificate's text is
-// reproducible byte for byte. Reading is strict: a missing or mistyped
-// field is "malformed" (usage_error), which `gyrores check` reports with exit 2.
+// Certificates as JSON text (docs/formats.md): "gyrores-certificate/2", the lattice theorem's
+// certificate (integers as decimal strings), read only by the independent checker
+// (src/checker/). Writing is deterministic (fields in a fixed order), so a certificate's text is
+// reproducible byte for byte.
+//
+// "gyrores-certificate/1", the interval-cover certificate of earlier versions, is retired: a file
+// in that format is recognised by its "format" field and refused with one line saying how to
+// re-certify; nothing of it is read or checked (docs/formats.md, "Retired: gyrores-certificate/1").
 #pragma once
 #include <string>
 
-#include <gyrores/certify/certificate.hpp>
 #include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/io/json.hpp>
 
 namespace gyrores {
 
 // The JSON object of a certificate; json_dump() gives its text.
-json certificate_to_json(const certificate& c);
 json certificate_to_json(const theorem_certificate& c);
 
 // The "format" field of a certificate's text, or "" when the text is not a JSON object with a
-// string "format" (such a text is then read as /1, whose reader says what is wrong).
+// string "format". Never throws for bad text.
 std::string certificate_format_of(const std::string& text);
 
-// Parses a "gyrores-certificate/1" text. Throws usage_error("malformed certificate: ...") on any problem
-// (not JSON, a missing field, a wrong type, a claim that is not ["lo", "hi"] or null). The
-// numbers' content is not checked here: check_certificate (certify/check.hpp) does that.
-certificate certificate_from_text(const std::string& text);
+// The retired format, and the one line that refuses a file in it (what the format was, that it
+// is retired, how to re-certify): `gyrores check` prints it and exits 2, gyrores.check raises it.
+inline constexpr const char* retired_certificate_format = "gyrores-certificate/1";
+std::string retired_certificate_message();
 
 }  // namespace gyrores

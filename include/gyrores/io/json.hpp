@@ -2,7 +2,8 @@
 //
 // Integers of any size: nlohmann-json holds 64 bits, so a big_int is emitted through a marker
 // string that json_dump() replaces by the bare digits (a JSON number of any length). Reading
-// them back needs the number's text, not nlohmann's double: see io/certificate_json.hpp.
+// them back needs the number's text, not nlohmann's double (as tests/reference/certificate_json.cpp
+// does for the retired /1 certificates).
 #pragma once
 #include <nlohmann/json.hpp>
 #include <cstdint>

@@ -5,7 +5,6 @@
 // 2 (k pi + sign(m) u*)/a and t_first = sqrt(tau sigma) theta_first in MPFI.
 #include <gyrores/certify/theorem_certificate.hpp>
 
-#include <gyrores/certify/certificate.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/theorem/lobes.hpp>

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/certify/certificate.hpp>
-#include <gyrores/certify/proof_steps.hpp>
+#include "reference/certificate.hpp"
+#include "reference/proof_steps.hpp"
 
 namespace gyrores::proof {
 

@@ -1,13 +1,13 @@
-// The independent checker (certify/check.hpp), in named steps: the header, the degenerate case,
+// The independent checker (reference/check.hpp), in named steps: the header, the degenerate case,
 // the cover level (basin and cover), the working level (claims against the checker's own
 // enclosures).
-#include <gyrores/certify/check.hpp>
+#include "reference/check.hpp"
 
 #include <limits>
 #include <optional>
 
-#include <gyrores/certify/cover.hpp>
-#include <gyrores/certify/proof_steps.hpp>
+#include "reference/cover.hpp"
+#include "reference/proof_steps.hpp"
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/model/pair.hpp>

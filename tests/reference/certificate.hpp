@@ -1,5 +1,13 @@
-// Certificates: the data a certificate holds ("gyrores-certificate/1", docs/formats.md), the
-// options shared by the producer and the checker, and the checker's verdict.
+// The tests' reference of the retired cover certificate ("gyrores-certificate/1", docs/formats.md,
+// "Retired"): the data a certificate holds, the options shared by the producer and the checker,
+// and the checker's verdict.
+//
+// Not part of the product: the library and the tool refuse /1 files (io/certificate_json.hpp).
+// The tests keep this proof, which does not use the lattice theorem (it proves global minimality
+// by an interval cover of the lobes), as an independent oracle: the theorem's certificates must
+// agree with it (tests/test_theorem_certificate.cpp), and the proof programs (proofs/) use its
+// steps. Built as the static library gyrores_reference (tests/reference/CMakeLists.txt); include
+// as "reference/<name>.hpp".
 //
 // A certificate states interval enclosures of r_res, theta_first and t_first for v = qdot0 = 1
 // (r_res scales linearly with v), with the obligations the proof rests on:
@@ -10,9 +18,9 @@
 //               for odd tau, sigma), with equal R;
 //   cover       R > r_hi^2 everywhere outside the basins (cover.hpp);
 //   rayleigh    the Rayleigh cut-off of the "slow-nodes" cover;
-//   degenerate  delta = 2 mod 4: r_res = 0 by integer arithmetic (inscribed/degenerate.hpp).
+//   degenerate  delta = 2 mod 4: r_res = 0 by integer arithmetic (search/degenerate.hpp).
 // The producer is certify.hpp (certify_pair), the independent checker check.hpp
-// (check_certificate), the JSON form io/certificate_json.hpp, the written argument
+// (check_certificate), the JSON form certificate_json.hpp, the written argument
 // proofs/global-minimality.md.
 #pragma once
 #include <cstddef>

@@ -5,7 +5,7 @@
 // producer's numbers, and accepts only if each claim contains the checker's own enclosure, meets
 // the stated digits, and every required obligation is present (proofs/global-minimality.md).
 #pragma once
-#include <gyrores/certify/certificate.hpp>
+#include "reference/certificate.hpp"
 
 namespace gyrores {
 

@@ -1,12 +1,13 @@
-// The proof steps of certify/proof_steps.hpp (proofs/global-minimality.md).
-#include <gyrores/certify/proof_steps.hpp>
+// The proof steps of reference/proof_steps.hpp (proofs/global-minimality.md).
+#include "reference/proof_steps.hpp"
 
 #include <atomic>
 
-#include <gyrores/certify/mutation.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/interval_newton.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+
+#include "reference/lattice.hpp"
+#include "reference/mutation.hpp"
 
 namespace gyrores::proof {
 

@@ -1,5 +1,5 @@
-// The cover obligation of certify/cover.hpp.
-#include <gyrores/certify/cover.hpp>
+// The cover obligation of reference/cover.hpp.
+#include "reference/cover.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// Test-only faults in the proof steps (certify/proof_steps.hpp): a step that always or never
+// Test-only faults in the proof steps (reference/proof_steps.hpp): a step that always or never
 // proves, an off-by-one lobe frame, a wrong sign, a lost symmetry. tests/test_mutations.cpp
 // switches each on in turn and shows that the tests catch it, so a green suite says the proof
 // steps are exercised, not merely run. Nothing outside that test sets one; when none is active

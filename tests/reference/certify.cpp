@@ -1,12 +1,12 @@
-// The producer of certificates (certify/certify.hpp), in named steps: the degenerate case, the
+// The producer of certificates (reference/certify.hpp), in named steps: the degenerate case, the
 // cover level (basin and cover, once), the working level (enclosures to the digits asked).
-#include <gyrores/certify/certify.hpp>
+#include "reference/certify.hpp"
 
 #include <algorithm>
 #include <optional>
 
-#include <gyrores/certify/cover.hpp>
-#include <gyrores/certify/proof_steps.hpp>
+#include "reference/cover.hpp"
+#include "reference/proof_steps.hpp"
 #include <gyrores/core/error.hpp>
 
 namespace gyrores {

@@ -93,7 +93,7 @@ struct image {
 std::vector<image> images_of(const constants& k, const big_int& kk, const big_int& jj, bool with_shift);
 
 // Steps "local-root" and "symmetry" together, for a non-degenerate pair: the lattice method
-// (inscribed/lattice.hpp, in MPFR) gives the guess and the frame, interval Newton proves the q'
+// (tests/reference/lattice.hpp, in MPFR) gives the guess and the frame, interval Newton proves the q'
 // root X, and the enclosures of r = |q| there, of every minimiser image's theta and of the
 // first one (theta_first, t_first = sqrt(tau sigma) theta_first) follow.
 struct minimiser_enclosures {

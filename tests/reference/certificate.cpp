@@ -1,5 +1,5 @@
-// Certificate data (certify/certificate.hpp).
-#include <gyrores/certify/certificate.hpp>
+// Certificate data (reference/certificate.hpp).
+#include "reference/certificate.hpp"
 
 #include <gyrores/core/decimal.hpp>
 

@@ -13,7 +13,7 @@
 // If the cover cannot be completed (order too high, or an undecided box), the certificate says
 // "not proved" and claims only r_res <= r_hi (a point of the trajectory attains it).
 #pragma once
-#include <gyrores/certify/certificate.hpp>
+#include "reference/certificate.hpp"
 #include <gyrores/model/pair.hpp>
 
 namespace gyrores {
