@@ -1,10 +1,14 @@
 // gyrores-bench: speed against error for every way of computing the inscribed radius r_res and
 // its minimiser, at every precision, against the peers a user would otherwise use, in one run.
+// The main methods are the theorem's path (include/gyrores/theorem/: theorem_double in double,
+// theorem_proved and theorem_report as proved enclosures, certificate); the library's methods
+// from before the theorem (ref_*, the paper's asymptotics) are comparison methods.
 //
 //   gyrores-bench --quick [--csv FILE]            the check (< 60 s): double and 1000 digits;
 //                                                 (6,5), (10^12+1,10^12), (1000,1); asymptotics,
-//                                                 exact, naive TOMS 748, one evaluation, Arb,
-//                                                 certified at 30 digits
+//                                                 theorem (double, proved), reference lattice,
+//                                                 naive TOMS 748, one evaluation, Arb; proved
+//                                                 and certificate at 30 digits
 //   gyrores-bench [--csv FILE] [--report FILE] [--plot-dir DIR]
 //                                                 the full report (bench/run writes
 //                                                 bench/RESULTS.md, results.csv and the plot)
@@ -94,7 +98,7 @@ void add_options(CLI::App& app, options& o, std::string& methods, std::string& p
   app.add_option("--report", o.report, "the Markdown report (bench/RESULTS.md)")->type_name("FILE");
   app.add_option("--plot-dir", o.plot_dir, "write DIR/speed_vs_error.gp (run gnuplot there for the SVG and PNG)")
       ->type_name("DIR");
-  app.add_option("--methods", methods, "run only these methods, e.g. exact,global")->type_name("LIST");
+  app.add_option("--methods", methods, "run only these methods, e.g. theorem_double,ref_global")->type_name("LIST");
   app.add_option("--pairs", pairs, "run only these pairs, e.g. '(6,5),(9,4)'")->type_name("LIST");
   app.add_option("--precisions", precisions, "run only these precisions, e.g. double,mp1000")->type_name("LIST");
   app.add_option("--python", o.python, "the Python of the mpmath peer (default: $GYRORES_PYTHON or python3)")
@@ -177,11 +181,11 @@ std::vector<method_def> all_methods(const options& opt, const run_config& cfg) {
   return all;
 }
 
-// Quick mode: 30 digits only for the certified-vs-uncertified pair of rows.
+// Quick mode: 30 digits only for the certificate-against-proof pair of rows.
 bool quick_excluded(const options& opt, const method_def& m, const precision& pr) {
   if (!opt.quick) return false;
-  if (pr.name == "mp30") return m.name != "certified" && m.name != "exact";
-  if (m.name == "certified") return pr.name != "mp30";
+  if (pr.name == "mp30") return m.name != "certificate" && m.name != "theorem_proved";
+  if (m.name == "certificate") return pr.name != "mp30";
   return false;
 }
 
@@ -288,17 +292,26 @@ void print_summary(const std::vector<measurement>& rows, const std::vector<bench
               ctx.load_before.c_str(), ctx.load_after.c_str());
 }
 
-// --check: the library's exact methods must deliver their precision: digits >= nominal - 1.5
-// (certificates: at least the digits they claim). Prints each short row; returns their count.
+// --check: the library's methods (the theorem's path and the references from before it) must
+// deliver their precision: digits >= nominal - 1.5 (certificates: at least the digits they
+// claim; a proved enclosure must also hold the reference). Prints each short row; returns their
+// count.
 int check_rows(const std::vector<measurement>& rows, const std::vector<precision>& precisions) {
   int bad = 0;
-  const std::set<std::string> exact_methods{"exact", "newton_doubling", "toms748_local", "global", "certified"};
+  const std::set<std::string> library{"theorem_double", "theorem_proved", "theorem_report", "certificate",
+                                      "ref_lattice",    "ref_newton_polish", "ref_toms748_local", "ref_global"};
   for (const auto& m : rows) {
-    if (!exact_methods.count(m.method)) continue;
+    if (!library.count(m.method)) continue;
     double nominal = 0;
     for (const auto& pr : precisions)
       if (pr.name == m.precision) nominal = pr.digits;
-    const double need = m.method == "certified" ? nominal : nominal - 1.5;
+    const double need = m.method == "certificate" ? nominal : nominal - 1.5;
+    if (m.note.find("ENCLOSURE MISSES") != std::string::npos) {
+      std::printf("CHECK FAILED: %s %s %s: %s\n", m.method.c_str(), m.precision.c_str(), m.pair.c_str(),
+                  m.note.c_str());
+      ++bad;
+      continue;
+    }
     if (m.failed || !(m.digits() >= need) || !(m.median_ns > 0)) {
       std::printf("CHECK FAILED: %s %s %s: %s digits (need %.1f)%s\n", m.method.c_str(), m.precision.c_str(),
                   m.pair.c_str(), format_digits(m.digits()).c_str(), need, m.failed ? (" " + m.note).c_str() : "");
@@ -333,7 +346,9 @@ int main(int argc, char** argv) {
   const std::vector<precision> precisions = selected(all_precisions(), opt.quick, {"double", "mp30", "mp1000"}, opt.precisions);
   const std::vector<method_def> methods =
       selected(all_methods(opt, cfg), opt.quick,
-               {"theta_asy", "r_res_asy", "exact", "naive_toms748", "one_eval", "arb_newton", "certified"}, opt.methods);
+               {"theta_asy", "r_res_asy", "theorem_double", "theorem_proved", "ref_lattice", "naive_toms748", "one_eval",
+                "arb_newton", "certificate"},
+               opt.methods);
   const run_plan plan = plan_cases(pairs, precisions, methods, [&](const method_def& m, const precision& pr) {
     return quick_excluded(opt, m, pr);
   });

@@ -69,13 +69,4 @@ bench_case typed_case(const std::string& method, const precision& pr, const benc
   });
 }
 
-// The lattice method's first minimiser in double: its lobe frame and local coordinate u (the
-// start of the root refiners that skip the scout: newton_doubling, Arb).
-struct first_minimiser {
-  lobe_frame<big_int> frame;
-  double u;
-};
-first_minimiser first_minimiser_of(const bench_pair& bp);
-
-
 }  // namespace gyrores::bench

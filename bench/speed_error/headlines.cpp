@@ -1,5 +1,5 @@
-// speed_error/report.hpp: the headline figures (H1-H5) and the ratio to the best row, computed
-// from the rows of one run.
+// speed_error/report.hpp: the headline figures (H1-H5, each about the theorem's path) and the
+// ratio to the best row, computed from the rows of one run.
 #include <algorithm>
 #include <string>
 
@@ -51,36 +51,51 @@ void add_ratios(headline& h, const std::vector<measurement>& rows, const std::ve
   }
 }
 
-// Where the time goes: the exact method's own q' evaluations against its total (double).
+// What the double path costs in units of one evaluation of (q, q') (one_eval), and what the
+// reference lattice from before the theorem costs against it (medians over the pairs).
 std::string h1_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  std::vector<double> share;
+  std::vector<double> units, lattice;
   for (const auto& bp : pairs) {
-    const auto* e = find_row(rows, "exact", "double", bp.name);
+    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
     const auto* o = find_row(rows, "one_eval", "double", bp.name);
-    if (e && o && e->evaluations) share.push_back(double(*e->evaluations) * o->median_ns / e->median_ns);
+    const auto* l = find_row(rows, "ref_lattice", "double", bp.name);
+    if (e && o) units.push_back(e->median_ns / o->median_ns);
+    if (e && l) lattice.push_back(l->median_ns / e->median_ns);
   }
-  if (share.empty()) return "";
-  std::sort(share.begin(), share.end());
-  return "In double the exact method's own evaluations of q' (its evals x one_eval) are " +
-         format_number("%.0f", 100 * share.front()) + "-" + format_number("%.0f", 100 * share.back()) +
-         "% of its time; the rest is fixed cost (integer lattice arithmetic, constants, the minimiser list and result).";
+  std::string out;
+  if (!units.empty())
+    out = "In double theorem_minimum_double costs " + format_number("%.2g", median(units)) +
+          " evaluations of (q, q', z, z') (one_eval: two sin_cos; median over the pairs): the lobes by integers, "
+          "u* by safeguarded Newton on H(u) = x u + arctan(x tan u), one tangent for r_res.";
+  if (!lattice.empty())
+    out += std::string(out.empty() ? "" : " ") + "The reference lattice from before the theorem (ref_lattice) takes " +
+           format_number("%.2g", median(lattice)) + "x its time.";
+  return out;
 }
 
 headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  headline h{"H1", "Exact r_res in double costs at most 1.5x the paper's asymptotic theta_asy alone, for every pair size",
+  headline h{"H1",
+             "The theorem's r_res in double (theorem_minimum_double) costs at most 1.5x the paper's asymptotic "
+             "theta_asy alone, for every pair size",
              {}, 0, 0, ""};
   for (const auto& bp : pairs) {
-    const auto* e = find_row(rows, "exact", "double", bp.name);
+    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
     const auto* t = find_row(rows, "theta_asy", "double", bp.name);
-    if (!e) continue;
+    if (!e) {
+      if (t)
+        h.values.push_back({bp.name, "n/a: theorem_minimum_double takes pairs of order below 2^62 (theta_asy " +
+                                         format_time(t->median_ns) + ")"});
+      continue;
+    }
     if (!t) {
-      h.values.push_back({bp.name, "n/a: theta_asy undefined for x >= 1/2 (exact " + format_time(e->median_ns) + ")"});
+      h.values.push_back(
+          {bp.name, "n/a: theta_asy undefined for x >= 1/2 (theorem " + format_time(e->median_ns) + ")"});
       continue;
     }
     const double r = e->median_ns / t->median_ns;
     ++h.total;
     if (r <= 1.5) ++h.met;
-    h.values.push_back({bp.name, ratio_text(r) + " (exact " + format_time(e->median_ns) + ", theta_asy " +
+    h.values.push_back({bp.name, ratio_text(r) + " (theorem " + format_time(e->median_ns) + ", theta_asy " +
                                      format_time(t->median_ns) + ")"});
   }
   h.remark = h1_remark(rows, pairs);
@@ -103,8 +118,8 @@ auto times_of(const std::string& num_label, const std::string& den_label) {
   };
 }
 
-std::string naive_against_exact(const measurement& n, const measurement& e) {
-  return "naive " + format_time(n.median_ns) + " with " + format_digits(n.digits()) + " digits; exact " +
+std::string naive_against_proved(const measurement& n, const measurement& e) {
+  return "naive " + format_time(n.median_ns) + " with " + format_digits(n.digits()) + " digits; proved " +
          format_time(e.median_ns) + " with " + format_digits(e.digits());
 }
 
@@ -123,11 +138,11 @@ const measurement* fastest_simulation(const std::vector<measurement>& rows, cons
 
 headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"H3",
-             "Against time-domain simulation reaching 1e-8 relative error in r_res, gyrores (exact, double) is at "
-             "least 1000x faster and reaches full precision",
+             "Against time-domain simulation reaching 1e-8 relative error in r_res, the theorem in double "
+             "(theorem_minimum_double) is at least 1000x faster and reaches full precision",
              {}, 0, 0, ""};
   for (const auto& bp : pairs) {
-    const auto* e = find_row(rows, "exact", "double", bp.name);
+    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
     if (!e) continue;
     bool any = false;
     const measurement* best = fastest_simulation(rows, bp.name, any);
@@ -141,41 +156,65 @@ headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>&
     const bool full = e->digits() >= 14.5;
     if (r >= 1000 && full) ++h.met;
     h.values.push_back({bp.name, ratio_text(r) + " (" + best->method + ": " + format_time(best->median_ns) + ", " +
-                                     format_digits(best->digits_r) + " digits in r_res; exact " +
+                                     format_digits(best->digits_r) + " digits in r_res; theorem " +
                                      format_time(e->median_ns) + ", " + format_digits(e->digits()) + " digits)"});
   }
   return h;
 }
 
-// Cost in units of the library's own evaluation: MPFR one_eval against Arb's, at `prec`
-// (medians over the pairs); "" when a row is missing everywhere.
+// The certificate against the proof it writes down, and against the unproved value from before
+// the theorem (remark).
+headline h4(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  headline h = ratio_headline(
+      "H4",
+      "A certificate at 30 digits (certify_by_theorem) costs at most 3x the theorem's proved minimum at 30 digits "
+      "(prove_minimum)",
+      rows, pairs, {"mp30", "certificate", "theorem_proved", true, 3, ""}, times_of("certificate", "proved"));
+  std::vector<double> lattice;
+  for (const auto& bp : pairs) {
+    const auto* c = find_row(rows, "certificate", "mp30", bp.name);
+    const auto* l = find_row(rows, "ref_lattice", "mp30", bp.name);
+    if (c && l) lattice.push_back(c->median_ns / l->median_ns);
+  }
+  if (!lattice.empty()) {
+    std::sort(lattice.begin(), lattice.end());
+    h.remark = "Against the unproved 30-digit value of the reference lattice from before the theorem (ref_lattice), "
+               "the certificate costs " +
+               ratio_text(lattice.front()) + "-" + ratio_text(lattice.back()) + ".";
+  }
+  return h;
+}
+
+// Cost in units of one evaluation: MPFR one_eval against Arb's, at `prec` (medians over the
+// pairs); "" when a row is missing everywhere.
 std::string h5_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs, const char* prec) {
-  std::vector<double> ev_ratio, exact_units, arb_units;
+  std::vector<double> ev_ratio, proved_units, arb_units;
   for (const auto& bp : pairs) {
     const auto* o = find_row(rows, "one_eval", prec, bp.name);
     const auto* ao = find_row(rows, "arb_one_eval", prec, bp.name);
-    const auto* e = find_row(rows, "exact", prec, bp.name);
+    const auto* e = find_row(rows, "theorem_proved", prec, bp.name);
     const auto* a = find_row(rows, "arb_newton", prec, bp.name);
     if (!o || !ao || !e || !a) continue;
     ev_ratio.push_back(o->median_ns / ao->median_ns);
-    exact_units.push_back(e->median_ns / o->median_ns);
+    proved_units.push_back(e->median_ns / o->median_ns);
     arb_units.push_back(a->median_ns / ao->median_ns);
   }
   if (ev_ratio.empty()) return "";
-  return std::string("At ") + prec + " (medians over the pairs): one MPFR " +
-         "evaluation (one_eval, two real_sin_cos: Arb's arb_sin_cos at the working precision) costs " + format_number("%.2g", median(ev_ratio)) +
-         "x one Arb evaluation (arb_one_eval, two arb_sin_cos); exact costs " +
-         format_number("%.2g", median(exact_units)) + " MPFR evaluations, Arb's refinement " +
+  return std::string("At ") + prec + " (medians over the pairs): one MPFR evaluation (one_eval, two real_sin_cos: " +
+         "Arb's arb_sin_cos at the working precision) costs " + format_number("%.2g", median(ev_ratio)) +
+         "x one Arb evaluation (arb_one_eval, two arb_sin_cos); the theorem's proved minimum costs " +
+         format_number("%.2g", median(proved_units)) + " MPFR evaluations, Arb's refinement " +
          format_number("%.2g", median(arb_units)) + " Arb evaluations.";
 }
 
 headline h5(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"H5",
-             "At 1000 and 10000 digits, exact theta and r_res together in at most 1.5x the time Arb takes to refine "
-             "the root alone",
+             "At 1000 and 10000 digits, the theorem's proved enclosures of theta and r_res (prove_minimum) take at "
+             "most 1.5x the time Arb takes to refine the root alone",
              {}, 0, 0, ""};
   for (const char* prec : {"mp1000", "mp10000"})
-    add_ratios(h, rows, pairs, {prec, "exact", "arb_newton", true, 1.5, std::string(" ") + prec}, times_of("exact", "Arb"));
+    add_ratios(h, rows, pairs, {prec, "theorem_proved", "arb_newton", true, 1.5, std::string(" ") + prec},
+               times_of("proved", "Arb"));
   for (const char* prec : {"mp1000", "mp10000"}) {
     const std::string r = h5_remark(rows, pairs, prec);
     if (!r.empty()) h.remark += std::string(h.remark.empty() ? "" : " ") + r;
@@ -210,15 +249,17 @@ std::map<const measurement*, double> ratios_to_best(const std::vector<measuremen
 
 std::vector<headline> compute_headlines(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   return {h1(rows, pairs),
-          ratio_headline("H2a", "At 1000 digits, exact r_res costs at most 4x one evaluation of (q, q') at that precision",
-                         rows, pairs, {"mp1000", "exact", "one_eval", true, 4, ""}, times_of("exact", "one evaluation")),
-          ratio_headline("H2b", "At 1000 digits, exact r_res is at least 5x faster than plain TOMS748 on the naive "
-                         "formulation",
-                         rows, pairs, {"mp1000", "naive_toms748", "exact", false, 5, ""}, naive_against_exact),
-          h3(rows, pairs),
-          ratio_headline("H4", "Certified r_res at 30 digits costs at most 3x uncertified (exact at 30 digits)", rows,
-                         pairs, {"mp30", "certified", "exact", true, 3, ""}, times_of("certified", "exact")),
-          h5(rows, pairs)};
+          ratio_headline("H2a",
+                         "At 1000 digits, the theorem's proved r_res (prove_minimum) costs at most 4x one evaluation "
+                         "of (q, q') at that precision",
+                         rows, pairs, {"mp1000", "theorem_proved", "one_eval", true, 4, ""},
+                         times_of("proved", "one evaluation")),
+          ratio_headline("H2b",
+                         "At 1000 digits, the theorem's proved r_res is at least 5x faster than plain TOMS748 on the "
+                         "naive formulation",
+                         rows, pairs, {"mp1000", "naive_toms748", "theorem_proved", false, 5, ""},
+                         naive_against_proved),
+          h3(rows, pairs), h4(rows, pairs), h5(rows, pairs)};
 }
 
 }  // namespace gyrores::bench

@@ -7,8 +7,10 @@
 
 namespace gyrores::bench {
 
-// gyrores itself: theta_asy, r_res_asy, exact, toms748_local, newton_doubling, global,
-// certified, one_eval; and the obvious peer, plain Boost TOMS 748 on the naive formulation.
+// gyrores itself: the theorem's path (theorem_double, theorem_proved, theorem_report,
+// certificate), the references from before the theorem (theta_asy, r_res_asy, ref_lattice,
+// ref_toms748_local, ref_newton_polish, ref_global), the unit of work one_eval; and the obvious
+// peer, plain Boost TOMS 748 on the naive formulation.
 std::vector<method_def> library_methods(const run_config& cfg);
 
 // Boost.Odeint time-domain simulation (dopri5 at several tolerances, a symplectic RKN at

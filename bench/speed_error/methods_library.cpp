@@ -1,16 +1,19 @@
-// gyrores' own methods, and plain Boost TOMS 748 on the naive formulation.
+// gyrores' own methods: the theorem's path (theorem_double, theorem_proved, theorem_report,
+// certificate), the methods from before the theorem as references (the lattice scout and
+// polish, TOMS 748 in local coordinates, the global search, the paper's asymptotics), the unit
+// of work (one_eval); and the obvious peer, plain Boost TOMS 748 on the naive formulation.
 #include <cstdio>
 #include <memory>
 #include <sstream>
 #include <type_traits>
 
 #include "case_support.hpp"
-#include <gyrores/inscribed/asymptotic.hpp>
 #include <gyrores/certify/theorem_certificate.hpp>
-#include <gyrores/inscribed/global_search.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/theorem/pair_report.hpp>
 #include "methods.hpp"
+#include "pre_theorem.hpp"
 #include "reference.hpp"
+#include "theorem_path.hpp"
 #include "testing/naive_toms748.hpp"  // src/testing/: the obvious implementation (peer (c))
 
 namespace gyrores::bench {
@@ -28,11 +31,6 @@ std::string real_text(long double v) {
 std::string real_text(const float128& v) { return v.str(36, std::ios_base::scientific); }
 std::string real_text(const mpfr_real& v) {
   return v.str(std::streamsize(v.precision() + 5), std::ios_base::scientific);
-}
-
-first_minimiser first_minimiser_of(const bench_pair& bp) {
-  auto r0 = inscribed_lattice<double>(bp.p, 1.0);
-  return {{r0.first.k, r0.first.j, r0.first.m}, r0.first.u};
 }
 
 namespace {
@@ -64,7 +62,7 @@ template <class T> T star_s(int m_min, const big_int& b) {
   return real_pi<T>() * real_from_ratio<T>(big_int(m_min), big_int(2 * b));
 }
 
-// ---- cases --------------------------------------------------------------------------------
+// ---- cases: the paper's asymptotics (reference implementation, pre-theorem) -----------------
 
 // The pair as the library's int64 instance when `fits`, else as big_int: fn(pair).
 struct pair_arg {
@@ -110,6 +108,87 @@ bench_case r_res_asy_case(const bench_pair& bp, const precision& pr, const refer
       [m_min, b](auto tag) { return star_s<real_of<decltype(tag)>>(m_min, b); });
 }
 
+// ---- the theorem's path (include/gyrores/theorem/, certify/theorem_certificate.hpp) ----------
+
+// theorem_minimum_double: the minimum in double from the theorem (pairs of order below 2^62).
+bench_case theorem_double_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const auto p64 = bp.p64();
+  return make_case(
+      "theorem_double", pr, bp, [p64] { return theorem_minimum_double(p64); },
+      [](const minimum_double& m) {
+        outcome o;
+        o.theta = real_text(m.theta_first);
+        o.r_res = real_text(m.r_res);
+        return o;
+      });
+}
+
+// The proved minimum at the precision of pr's digits (theorem_path.hpp with_proved_minimum):
+// timed whole (constants, u* proved, the enclosures); scored at the enclosures' midpoints, and
+// the reference must lie in the r_res enclosure.
+bench_case theorem_proved_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const auto p = bp.p;
+  const unsigned digits = pr.digits;
+  bench_case c = new_case("theorem_proved", pr, bp);
+  c.timed = [=] { with_proved_minimum(p, digits, [](const minimum_enclosure& M) { benchmark::DoNotOptimize(&M); }); };
+  c.pilot = [=] {
+    outcome o;
+    const unsigned bits = with_proved_minimum(p, digits, [&](const minimum_enclosure& M) {
+      o.r_res = enclosure_mid_text(M.r_res);
+      o.theta = enclosure_mid_text(*M.minimisers.front());
+      o.r_enclosure = enclosure_ends_text(M.r_res);
+    });
+    if (bits != proved_start_bits(digits))
+      o.note = "proved at " + std::to_string(bits) + " bits (started at " +
+               std::to_string(proved_start_bits(digits)) + ")";
+    return o;
+  };
+  return c;
+}
+
+// prove_pair: everything `gyrores pair --digits D` prints, each real correctly rounded from a
+// proved enclosure; scored on the rounded r_res and theta_first.
+bench_case theorem_report_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const auto p = bp.p;
+  pair_report_options opt;
+  opt.digits = pr.digits;
+  bench_case c = new_case("theorem_report", pr, bp);
+  c.timed = [=] { benchmark::DoNotOptimize(prove_pair(p, opt)); };
+  c.pilot = [=] {
+    const pair_report r = prove_pair(p, opt);
+    outcome o;
+    o.r_res = r.r_res.value;
+    o.theta = r.theta_first.value;
+    return o;
+  };
+  return c;
+}
+
+// The midpoint of a certified enclosure [lo, hi] (decimal text), as text.
+std::string enclosure_mid(const std::pair<std::string, std::string>& e) {
+  mpfr_real lo(e.first), hi(e.second);
+  return real_text(mpfr_real((lo + hi) / 2));
+}
+
+bench_case certificate_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const auto p = bp.p;
+  const unsigned digits = pr.digits;
+  bench_case c = new_case("certificate", pr, bp);
+  c.timed = [=] { benchmark::DoNotOptimize(certify_by_theorem(p, digits)); };
+  c.pilot = [=] {
+    auto cert = certify_by_theorem(p, digits);
+    outcome o;
+    scoped_digits d(digits + 30);
+    o.r_res = enclosure_mid(cert.r_res);
+    o.theta = enclosure_mid(cert.theta_first);
+    o.r_enclosure = cert.r_res;
+    return o;
+  };
+  return c;
+}
+
+// ---- references from before the theorem (pre_theorem.hpp) -----------------------------------
+
 template <class T> outcome inscribed_outcome(const inscribed_result<T>& r) {
   outcome o;
   o.theta = real_text(r.theta_first);
@@ -124,25 +203,25 @@ bench_case inscribed_case(const std::string& name, const bench_pair& bp, const p
   return typed_case(name, pr, bp, solve, [](const auto& r) { return inscribed_outcome(r); });
 }
 
-bench_case exact_case(const bench_pair& bp, const precision& pr, const reference&) {
+bench_case ref_lattice_case(const bench_pair& bp, const precision& pr, const reference&) {
   const pair_arg pa(bp, bp.fits64());
-  return inscribed_case("exact", bp, pr, [pa](auto tag) {
+  return inscribed_case("ref_lattice", bp, pr, [pa](auto tag) {
     using T = real_of<decltype(tag)>;
     return pa([](const auto& p) { return inscribed_lattice<T>(p, T(1)); });
   });
 }
 
-bench_case toms748_local_case(const bench_pair& bp, const precision& pr, const reference&) {
+bench_case ref_toms748_local_case(const bench_pair& bp, const precision& pr, const reference&) {
   const auto p = bp.p;
-  return inscribed_case("toms748_local", bp, pr, [p](auto tag) {
+  return inscribed_case("ref_toms748_local", bp, pr, [p](auto tag) {
     using T = real_of<decltype(tag)>;
     return inscribed_lattice<T>(p, T(1), lattice_options{.solver = lattice_solver::toms748_full});
   });
 }
 
-bench_case global_case(const bench_pair& bp, const precision& pr, const reference&) {
+bench_case ref_global_case(const bench_pair& bp, const precision& pr, const reference&) {
   const auto p64 = bp.p64();
-  return inscribed_case("global", bp, pr, [p64](auto tag) {
+  return inscribed_case("ref_global", bp, pr, [p64](auto tag) {
     using T = real_of<decltype(tag)>;
     return inscribed_global<T>(p64, T(1));
   });
@@ -154,7 +233,7 @@ template <class I, class L>
 bench_case polish_case(const bench_pair& bp, const precision& pr, const resonant_pair<I>& p, const lobe_frame<L>& f,
                        const L& a, double u0) {
   return typed_case(
-      "newton_doubling", pr, bp,
+      "ref_newton_polish", pr, bp,
       [=](auto tag) {
         using T = real_of<decltype(tag)>;
         return lobe_root_polish(p, T(1), f, a, T(u0), 53);
@@ -171,8 +250,9 @@ bench_case polish_case(const bench_pair& bp, const precision& pr, const resonant
       });
 }
 
-bench_case newton_doubling_case(const bench_pair& bp, const precision& pr, const reference&) {
-  const first_minimiser fm = first_minimiser_of(bp);
+// Started from the theorem's first minimiser in double (theorem_path.hpp).
+bench_case ref_newton_polish_case(const bench_pair& bp, const precision& pr, const reference&) {
+  const first_minimiser fm = theorem_first_minimiser(bp.p);
   const lobe_frame<big_int>& fb = fm.frame;
   if (bp.fits_int128_lattice()) {
     const lobe_frame<int128> f{int128(std::int64_t(fb.k)), int128(std::int64_t(fb.j)), int128(std::int64_t(fb.m))};
@@ -182,33 +262,12 @@ bench_case newton_doubling_case(const bench_pair& bp, const precision& pr, const
   return polish_case(bp, pr, bp.p, fb, bp.order(), fm.u);
 }
 
-// The midpoint of a certified enclosure [lo, hi] (decimal text), as text.
-std::string enclosure_mid(const std::pair<std::string, std::string>& e) {
-  mpfr_real lo(e.first), hi(e.second);
-  return real_text(mpfr_real((lo + hi) / 2));
-}
+// ---- the unit of work, and the naive peer -----------------------------------------------------
 
-bench_case certified_case(const bench_pair& bp, const precision& pr, const reference&) {
-  const auto p = bp.p;
-  const unsigned digits = pr.digits;
-  bench_case c = new_case("certified", pr, bp);
-  c.timed = [=] { benchmark::DoNotOptimize(certify_by_theorem(p, digits)); };
-  c.pilot = [=] {
-    auto cert = certify_by_theorem(p, digits);
-    outcome o;
-    scoped_digits d(digits + 30);
-    o.r_res = enclosure_mid(cert.r_res);
-    o.theta = enclosure_mid(cert.theta_first);
-    o.r_enclosure = cert.r_res;
-    return o;
-  };
-  return c;
-}
-
-// One evaluation of (q, q', z, z') at the first minimiser; the constants and the frame are
-// computed at the first call (untimed: the pilot runs first) and kept.
+// One evaluation of (q, q', z, z') at the theorem's first minimiser; the constants and the frame
+// are computed at the first call (untimed: the pilot runs first) and kept.
 bench_case one_eval_case(const bench_pair& bp, const precision& pr, const reference&) {
-  const first_minimiser fm = first_minimiser_of(bp);
+  const first_minimiser fm = theorem_first_minimiser(bp.p);
   const auto p = bp.p;
   const big_int a = bp.order();
   return dispatch_real(pr, [&](auto tag) {
@@ -253,9 +312,33 @@ bench_case naive_toms748_case(const bench_pair& bp, const precision& pr, const r
 
 // ---- skip rules -----------------------------------------------------------------------------
 
-const char* kOnly30 = "30 digits serve only the certified-vs-uncertified comparison (exact, certified, one_eval)";
+const char* kOnly30 =
+    "30 digits serve the certificate's comparisons (certificate, theorem_proved, theorem_report, ref_lattice, "
+    "one_eval)";
 
 std::string skip_never(const bench_pair&, const precision&) { return ""; }
+
+std::string skip_theorem_double(const bench_pair& bp, const precision& pr) {
+  if (pr.kind != real_kind::dbl)
+    return "the theorem's point path is double only (theorem_minimum_double); every other precision takes the "
+           "proved path (theorem_proved)";
+  if (!bp.fits64())
+    return "theorem_minimum_double takes pairs of order below 2^62 (std::int64_t); larger pairs take the proved "
+           "path (theorem_proved)";
+  return "";
+}
+
+std::string skip_theorem_proved(const bench_pair&, const precision& pr) {
+  if (pr.kind == real_kind::dbl)
+    return "in double the theorem's path is theorem_double; the proved path runs at 19 digits (the long_double "
+           "row) and up";
+  return "";
+}
+
+std::string skip_decimal_only(const bench_pair&, const precision& pr) {
+  if (!pr.is_mp()) return "its precision is a number of decimal digits (30 to 10000): it runs at the mp precisions";
+  return "";
+}
 
 // Full-precision TOMS 748 at 10000 digits: 30-60 evaluations of ~17 ms sines (1-3 s per call).
 std::string skip_toms748_10000(const bench_pair& bp, const precision& pr) {
@@ -277,21 +360,21 @@ std::string skip_asymptotic(const bench_pair& bp, const precision& pr) {
 
 std::string skip_toms748_local(const bench_pair& bp, const precision& pr) {
   if (pr.kind == real_kind::dbl)
-    return "in double the exact method's own root solve is the counterpart (TOMS 748 in local coordinates, Newton "
-           "first for x < 1/2)";
+    return "in double the reference lattice's own root solve is the counterpart (TOMS 748 in local coordinates, "
+           "Newton first for x < 1/2)";
   if (pr.name == "mp30") return kOnly30;
   return skip_toms748_10000(bp, pr);
 }
 
-std::string skip_newton_doubling(const bench_pair&, const precision& pr) {
-  if (pr.kind == real_kind::dbl) return "the double scout is the start: nothing to polish in double";
+std::string skip_newton_polish(const bench_pair&, const precision& pr) {
+  if (pr.kind == real_kind::dbl) return "the double root is the start: nothing to polish in double";
   if (pr.name == "mp30") return kOnly30;
   return "";
 }
 
 // Global search cost per call: 4 tau root solves at full precision. Beyond the limits below a
 // single call takes more than ~1 s on this machine (measured: (1000,1) at 50 digits 2.2 s,
-// (6,5) at 1000 digits 0.7 s), and it adds no digit over the exact method.
+// (6,5) at 1000 digits 0.7 s), and it adds no digit over the other methods.
 std::string skip_global(const bench_pair& bp, const precision& pr) {
   if (bp.order() > 100000)
     return "the global search is O(tau) (4 tau root solves) and limited to order <= 1e5 "
@@ -299,17 +382,12 @@ std::string skip_global(const bench_pair& bp, const precision& pr) {
   if (pr.name == "mp30") return kOnly30;
   if (pr.name == "mp10000")
     return "4 tau TOMS 748 solves at 10000 digits: ~30 s per call even for (6,5) (one 10000-digit sine costs "
-           "~17 ms here); no digit beyond the exact method";
+           "~17 ms here); no digit beyond the theorem's";
   if (pr.name == "mp1000" && bp.order() > 20)
     return "4 tau TOMS 748 solves at 1000 digits: ~0.7 s x tau/6 per call (~2 min for (101,100)), beyond the "
            "run's 10-minute budget";
   if ((pr.name == "mp50" || pr.name == "mp100") && bp.order() > 500)
     return "4 tau TOMS 748 solves at 50/100 digits: ~2 s per call for (1000,1), beyond the run's budget";
-  return "";
-}
-
-std::string skip_certified(const bench_pair& bp, const precision& pr) {
-  if (!pr.is_mp()) return "certificates are MPFI enclosures with a decimal-digits target (30 to 10000)";
   return "";
 }
 
@@ -319,50 +397,75 @@ std::string skip_naive_toms748(const bench_pair& bp, const precision& pr) {
 
 }  // namespace
 
-// The table of methods: name (also the plot series), what it computes (for the report), when it
-// is skipped, how a case is built.
+// The table of methods: name, plot series (theorem_double and theorem_proved form one, the
+// theorem's path from double up), what it computes (for the report; its
+// first words say which kind: the theorem's path, a reference from before the theorem, the
+// unit of work, a peer), when it is skipped, how a case is built.
 std::vector<method_def> library_methods(const run_config&) {
   return {
+      {"theorem_double", "theorem",
+       "**theorem (double)**: theorem_minimum_double (theorem/minimum.hpp): m_min and the minimisers' lobes by "
+       "integers (one modular inverse), u* = H^{-1}(pi m_min/(2a)) by safeguarded Newton (theorem_root_double), "
+       "r_res = sqrt(G(u*)) and every minimiser; nothing proved (the sweep rows, design catalogue and figures)",
+       skip_theorem_double, theorem_double_case},
+      {"theorem_proved", "theorem",
+       "**theorem, proved (MPFI+Arb)**: the proved minimum at the digits' precision (theorem/root.hpp, "
+       "minimum.hpp): set_theorem_constants and prove_minimum at digits log2(10) + 32 bits (doubled if u* is not "
+       "proved or r_res, theta_first are wider than the digits): the Newton ladder, Arb enclosures of the tangents "
+       "at its last centre, a bracket of u* proved by the addition formula, enclosures of r_res and every "
+       "minimiser; scored at the enclosures' midpoints",
+       skip_theorem_proved, theorem_proved_case},
+      {"theorem_report", "theorem_report",
+       "**theorem, whole report**: prove_pair(pair, digits) (theorem/pair_report.hpp), everything `gyrores pair "
+       "--digits D` prints (r_res, H_q min, H_z max, every minimiser, t_first, the paper's asymptotics for x < 1/2, "
+       "...), each real correctly rounded from a proved enclosure (precision doubled until every rounding is "
+       "decided); scored on the printed r_res and theta_first",
+       skip_decimal_only, theorem_report_case},
+      {"certificate", "certificate",
+       "**certificate**: certify_by_theorem(pair, digits) (certify/theorem_certificate.hpp): the lattice-theorem "
+       "certificate (integer facts, a bracket of u* with decimal ends proved, MPFI enclosures of r_res, "
+       "theta_first and t_first with at least `digits` digits); scored at the enclosure midpoint",
+       skip_decimal_only, certificate_case},
       {"theta_asy", "theta_asy",
-       "the paper's theta_asy alone (asymptotic.hpp theta_asy_only<T>: k = round(a/(2b)), one TOMS 748 root of "
-       "u + tan u = s, no root of q'); heuristic, approximates the lobe root theta_c; evaluations: u - atan(s - u)",
+       "the paper's theta_asy alone, heuristic; **reference (pre-theorem)** implementation "
+       "(tests/reference/asymptotic.hpp theta_asy_only<T>: k = round(a/(2b)), one TOMS 748 root of u + tan u = s, "
+       "no root of q'); approximates the lobe root theta_c; evaluations: u - atan(s - u)",
        skip_asymptotic, theta_asy_case},
       {"r_res_asy", "r_res_asy",
        "the observed closed form r_res_asy = v x |sin u* tan u*|, u* + tan u* = pi m_min/(2b) (docs/mathematics.md "
-       "§3, asymptotic.hpp): one root of u + tan u = s; heuristic",
+       "§3), heuristic; **reference (pre-theorem)** implementation (tests/reference/asymptotic.hpp): one root of "
+       "u + tan u = s",
        skip_asymptotic, r_res_asy_case},
-      {"exact", "exact",
-       "inscribed_lattice<T>: the exact r_res and every minimiser in O(log tau). double: a root of q' in local "
-       "coordinates (safeguarded Newton for x < 1/2, TOMS 748 otherwise); other types: that double scout, then "
-       "Newton (MPFR: with precision doubling, lobe_root_polish); evaluations: q' evaluations of all root solvers",
-       skip_never, exact_case},
-      {"toms748_local", "toms748_local",
-       "TOMS 748 in local coordinates at full precision T (inscribed_lattice<T> with lattice_solver::toms748_full: "
-       "the lattice method's bracket solved by TOMS 748 in T; no double scout, no Newton, no precision ladder)",
-       skip_toms748_local, toms748_local_case},
-      {"newton_doubling", "newton_doubling",
-       "the Newton polish alone (lattice.hpp lobe_root_polish) from the double root of the first minimiser's "
-       "frame: MPFR with precision doubling, fixed types plain Newton; the exact method minus its double scout",
-       skip_newton_doubling, newton_doubling_case},
-      {"global", "global",
-       "inscribed_global<T>: all 4 tau critical points (roots of q' and z'), each by TOMS 748 in local "
-       "coordinates at full precision; assumes nothing about where the minimum is",
-       skip_global, global_case},
-      {"certified", "certified",
-       "certify_by_theorem(pair, digits): the lattice-theorem certificate (proofs/lattice-theorem.md): integer "
-       "facts, a proved bracket of u* and MPFI enclosures of r_res and theta_first with at least `digits` digits; "
-       "scored at the enclosure midpoint",
-       skip_certified, certified_case},
+      {"ref_lattice", "ref_lattice",
+       "**reference (pre-theorem)**: the lattice scout and Newton polish, inscribed_lattice<T> "
+       "(tests/reference/lattice.hpp): the minimisers' sites by integers; double: a root of q' in local coordinates "
+       "(safeguarded Newton for x < 1/2, TOMS 748 otherwise); other types: that double scout, then Newton (MPFR: "
+       "with precision doubling, lobe_root_polish); nothing proved; evaluations: q' evaluations of all root solvers",
+       skip_never, ref_lattice_case},
+      {"ref_toms748_local", "ref_toms748_local",
+       "**reference (pre-theorem)**: TOMS 748 in local coordinates at full precision T (inscribed_lattice<T> with "
+       "lattice_solver::toms748_full: the lattice method's bracket solved by TOMS 748 in T; no double scout, no "
+       "Newton, no precision ladder)",
+       skip_toms748_local, ref_toms748_local_case},
+      {"ref_newton_polish", "ref_newton_polish",
+       "**reference (pre-theorem)**: the lattice's Newton polish alone (lobe_root_polish) from the "
+       "theorem's double root of the first minimiser's lobe: MPFR with precision doubling, fixed types plain "
+       "Newton; ref_lattice minus its double scout",
+       skip_newton_polish, ref_newton_polish_case},
+      {"ref_global", "ref_global",
+       "**reference (pre-theorem)**: the global search, inscribed_global<T> (include/gyrores/search/, the opt-in "
+       "cross-validation): all 4 tau critical points (roots of q' and z'), each by TOMS 748 in local coordinates at "
+       "full precision; assumes nothing about where the minimum is",
+       skip_global, ref_global_case},
       {"one_eval", "one_eval",
-       "one evaluation of (q, q', z, z') at the first minimiser (resonant.hpp lobe_eval: two real_sin_cos, "
-       "for MPFR Arb's arb_sin_cos), "
-       "constants precomputed: the unit of work",
+       "**unit of work**: one evaluation of (q, q', z, z') at the theorem's first minimiser (model/resonant.hpp "
+       "lobe_eval: two real_sin_cos, for MPFR Arb's arb_sin_cos), constants precomputed",
        skip_never, one_eval_case},
       {"naive_toms748", "naive_toms748",
-       "peer (c), the obvious implementation: plain boost::math::tools::toms748_solve with eps_tolerance(bits - 2) "
-       "on the naive q'(theta) = W1 cos(tau theta) + W2 cos(sigma theta) (tau theta formed directly) over the fast "
-       "half-period [i pi/tau, (i+1) pi/tau] holding theta_first (the paper's lobe when it carries the minimum), "
-       "then r = rho0 |sin tau theta + sin sigma theta|",
+       "**peer (c)**, the obvious implementation: plain boost::math::tools::toms748_solve with eps_tolerance(bits - "
+       "2) on the naive q'(theta) = W1 cos(tau theta) + W2 cos(sigma theta) (tau theta formed directly) over the "
+       "fast half-period [i pi/tau, (i+1) pi/tau] holding theta_first (the paper's lobe when it carries the "
+       "minimum), then r = rho0 |sin tau theta + sin sigma theta|",
        skip_naive_toms748, naive_toms748_case},
   };
 }

@@ -2,8 +2,8 @@
 //
 //  arb_newton: arb_calc_refine_root_newton (Newton in ball arithmetic with precision doubling)
 //    on q'(u) = cos u sin(mu - x u) - x sin u cos(mu - x u) in the first minimiser's lobe frame
-//    (the same local coordinates as gyrores: mu = pi m/(2a), x = b/a), from the double root of
-//    inscribed_lattice<double> as a ball of relative radius 2^-40; convergence region of
+//    (the same local coordinates as gyrores: mu = pi m/(2a), x = b/a), from the theorem's double
+//    root u = sign(m) u* (theorem_path.hpp) as a ball of relative radius 2^-40; convergence region of
 //    relative radius 2^-20, its factor from arb_calc_newton_conv_factor at 64 bits. Timed: the
 //    constants x, mu at full precision, the convergence factor and the refinement: the root
 //    alone (theta_first is formed from it untimed, to score it; r_res is not computed).
@@ -22,8 +22,8 @@
 #include <memory>
 
 #include "case_support.hpp"
-#include <gyrores/inscribed/lattice.hpp>
 #include "reference.hpp"
+#include "theorem_path.hpp"
 #endif
 
 namespace gyrores::bench {
@@ -118,7 +118,7 @@ int lobe_qdot(arb_ptr out, const arb_t u, void* param, slong order, slong prec) 
   return 0;
 }
 
-// Inputs shared by both Arb methods: the first minimiser's frame and its double root.
+// Inputs shared by both Arb methods: the theorem's first minimiser lobe and its double root.
 struct arb_inputs {
   big_int a, b, k, j, m;
   double u0;
@@ -126,7 +126,7 @@ struct arb_inputs {
 };
 
 arb_inputs inputs_of(const bench_pair& bp, const precision& pr) {
-  const first_minimiser fm = first_minimiser_of(bp);
+  const first_minimiser fm = theorem_first_minimiser(bp.p);
   scoped_digits d(pr.digits);
   return {bp.order(), bp.delta(), fm.frame.k, fm.frame.j, fm.frame.m, fm.u, slong(real_bits<mpfr_real>())};
 }
@@ -161,7 +161,9 @@ refine_result arb_refine(const arb_inputs& in) {
 std::string skip_arb(const bench_pair&, const precision& pr) {
   if (!pr.is_mp())
     return "Arb is a multiprecision ball library; its fixed-precision counterpart is the double start itself";
-  if (pr.name == "mp30") return "30 digits serve only the certified-vs-uncertified comparison (exact, certified, one_eval)";
+  if (pr.name == "mp30")
+    return "30 digits serve the certificate's comparisons (certificate, theorem_proved, theorem_report, "
+           "ref_lattice, one_eval)";
   return "";
 }
 
@@ -237,12 +239,13 @@ bench_case arb_one_eval_case(const bench_pair& bp, const precision& pr, const re
 std::vector<method_def> arb_methods(const run_config&) {
   return {
       {"arb_newton", "arb",
-       "peer (d): Arb's arb_calc_refine_root_newton on q' in the first minimiser's lobe frame (local coordinates), "
-       "from the double root (ball of relative radius 2^-40), convergence factor at 64 bits; the root alone",
+       "**peer (d)**: Arb's arb_calc_refine_root_newton on q' in the first minimiser's lobe frame (local "
+       "coordinates; its root is the theorem's u*), from the theorem's double root (ball of relative radius 2^-40), "
+       "convergence factor at 64 bits; the root alone, enclosed (a ball)",
        skip_arb, arb_newton_case},
       {"arb_one_eval", "arb_one_eval",
-       "one Arb evaluation of q' and its derivative (two arb_sin_cos) at the first minimiser: Arb's counterpart "
-       "of one_eval",
+       "**peer (d), unit of work**: one Arb evaluation of q' and its derivative (two arb_sin_cos) at the first "
+       "minimiser: Arb's counterpart of one_eval",
        skip_arb, arb_one_eval_case},
   };
 }

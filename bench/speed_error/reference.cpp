@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <gyrores/inscribed/asymptotic.hpp>
-#include <gyrores/inscribed/lattice.hpp>
+#include <gyrores/theorem/lobes.hpp>
+#include "pre_theorem.hpp"
 #include "testing/high_precision_reference.hpp"  // src/testing/: the independent reference
 
 namespace gyrores::bench {
@@ -41,7 +41,8 @@ reference compute_reference(const bench_pair& bp, unsigned digits) {
   if (a <= 100000) {
     h = hp::hp_reference(tau, sigma, digits);
   } else {
-    // A guess to pick the fast half-periods; accurate to far below pi/tau.
+    // A guess to pick the fast half-periods, accurate to far below pi/tau: the reference lattice
+    // (pre-theorem), not the theorem's path that the benchmark measures.
     mpfr_real guess;
     {
       gyrores::scoped_digits d(gyrores::digits10_for_bits(2 * bit_length(a) + 64));

@@ -5,13 +5,13 @@
 // (bits + 2 log2(a) + 96 guard bits), bisection then Newton with precision doubling; it uses
 // none of the library's numerical code (no lobe frames, local coordinates, TOMS 748 wrapper or
 // lattice). Orders <= 1e5: every one of the 4 tau critical points is examined (global mode).
-// Larger orders: local mode around a guess (the library's theta_first at modest precision, used
-// only to pick fast half-periods; +-4 of them around the guess and its symmetry images are
-// solved independently). The paper's lobe root theta_c (x < 1/2) is found the same way
-// (hp_lobe_root): the lobe |alpha - k pi| < pi/2, k = round(a/(2b)) (the smaller on a tie), is
-// covered by the fast half-periods [i pi/tau, (i+1) pi/tau] with i in [floor((2k-1) tau/a),
-// floor((2k+1) tau/a)]; each holds one root of q', solved independently, and the one inside the
-// lobe is theta_c.
+// Larger orders: local mode around a guess (theta_first of the reference lattice from before
+// the theorem, pre_theorem.hpp, at modest precision, used only to pick fast half-periods; +-4
+// of them around the guess and its symmetry images are solved independently). The paper's lobe
+// root theta_c (x < 1/2) is found the same way (hp_lobe_root): the lobe |alpha - k pi| < pi/2,
+// k = round(a/(2b)) (the smaller on a tie), is covered by the fast half-periods
+// [i pi/tau, (i+1) pi/tau] with i in [floor((2k-1) tau/a), floor((2k+1) tau/a)]; each holds one
+// root of q', solved independently, and the one inside the lobe is theta_c.
 //
 // Error metric (defined once): correct digits = -log10(|x - ref| / |ref|), clipped to
 // [0, reference digits]; x and ref are compared at the reference's precision. A method that
@@ -42,7 +42,7 @@ double correct_digits(const std::string& value, const std::string& ref, unsigned
 // Correct digits against the nearest of several references.
 double correct_digits_nearest(const std::string& value, const std::vector<std::string>& refs, unsigned ref_digits);
 
-// Fills m.digits_theta / m.digits_r from an outcome; notes whether a certified enclosure
+// Fills m.digits_theta / m.digits_r from an outcome; notes whether a proved enclosure
 // contains the reference.
 void score(measurement& m, const outcome& o, const reference& ref);
 

@@ -106,6 +106,16 @@ void write_definitions(std::ostream& f, const run_context& ctx) {
        "time of the best method at the same pair and precision: the fastest whose digits are within 1 of the "
        "precision's own (16 for double, 19 long double, 34 float128, N for mpN; or of the most any method reached, if "
        "fewer). 1 = the best; a faster method with fewer digits gets a ratio below 1.\n\n";
+  f << "**Methods** (details under *Methods* below). The theorem's path, what the product runs "
+       "(include/gyrores/theorem/, proofs/lattice-theorem.md): *theorem_double* = theorem (double), "
+       "theorem_minimum_double; *theorem_proved* = theorem, proved (MPFI+Arb), prove_minimum at the digits' "
+       "precision (the long_double and float128 rows: at 19 and 34 digits); *theorem_report* = prove_pair, all "
+       "`gyrores pair` prints; *certificate* = certify_by_theorem. Reference (pre-theorem): the library's methods "
+       "from before the theorem, now the tests' independent references (tests/reference/): *ref_lattice* (lattice "
+       "scout and Newton polish), *ref_toms748_local*, *ref_newton_polish*, *ref_global* (global search), and the "
+       "paper's asymptotics *theta_asy*, *r_res_asy* (heuristics). Unit of work: *one_eval* (and Arb's "
+       "*arb_one_eval*). Peers: Boost.Odeint simulation, mpmath findroot, plain TOMS 748 on the naive formulation, "
+       "Arb's Newton refinement.\n\n";
   f << "**Reference.** src/testing/high_precision_reference.hpp, independent of the library's numerics: the naive "
        "formulation (sin(tau theta) formed directly) at brute precision (digits + 2 log2(a) + 96 bits), bisection then "
        "Newton with precision doubling; all 4 tau critical points for orders <= 1e5, +-4 fast half-periods around a "
@@ -201,7 +211,7 @@ void write_methods(std::ostream& f, const std::vector<method_def>& methods, cons
     }
     f << "| " << m.name << " | " << m.description << " |\n";
   }
-  f << "| mpmath_findroot | peer (b): `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) at "
+  f << "| mpmath_findroot | **peer (b)**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) at "
        "`mp.dps` = digits, from theta_first rounded to ceil(log10 a) + 8 digits and a point 1e-4 half-periods away "
        "(bench/mpmath_peer.py); then r = rho0 |sin tau theta + sin sigma theta| |\n\n";
   f << "Precisions: `double`, `long_double` (x87, 64-bit mantissa), `float128` (Boost.Multiprecision, libquadmath), "
@@ -343,7 +353,7 @@ void write_plot_script(const std::string& dir, const run_context& ctx, const std
   for (std::size_t fi = 0; fi < families.size(); ++fi)
     body << "set style line " << fi + 1 << " lc rgb '" << std::vector<std::string>{
         "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
-        "#17becf", "#000000", "#aa0000", "#00aa88", "#0000aa"}[fi % 14]
+        "#17becf", "#000000", "#aa0000", "#00aa88", "#0000aa", "#aaaa00", "#aa00aa", "#555555"}[fi % 17]
          << "' pt " << (fi % 13) + 1 << " ps 1.1 lw 1.5\n";
   body << "set logscale xy\nset xlabel 'median CPU time per call [s]'\nset ylabel 'correct digits'\n"
        << "set format x '10^{%L}'\nset grid\nset key outside right top font ',9'\nset yrange [0.25:20000]\n";
