@@ -39,6 +39,9 @@ minimum_double theorem_minimum_double(const resonant_pair<std::int64_t>& p);
 
 // ---- enclosures ----
 
+// theta = 2 (k pi + U)/a (k an integer, U an enclosure of the lobe coordinate u).
+void lobe_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& k, const fixed_mpfi& U);
+
 // theta = 2 (key pi + sign(m) U)/a of a minimiser lobe f of a pair of order a (k reduced; key =
 // lobe_order_key), U an enclosure of u* (0 for degenerate lobes).
 void minimiser_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& a, const lobe_frame<big_int>& f,

@@ -77,6 +77,14 @@ bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, 
 // prove_theorem_root. m = 0 gives the exact root 0.
 bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
+// out = pi m/(2 d) at K's precision (d = K.a: the theorem's mu; d = K.b: the paper's s).
+void pi_ratio(fixed_mpfi& out, const theorem_constants& K, const big_int& m, const fixed_mpfi& d);
+
+// The paper's error and bound of a lobe from d = |u_c - u_asy| (enclosures at K's precision):
+// error = 2 d/a = |theta_c - theta_asy| (formed from the roots, not from two thetas that cancel),
+// bound = pi^3 x^2/a.
+void paper_error_bound(fixed_mpfi& error, fixed_mpfi& bound, const theorem_constants& K, const fixed_mpfi& d);
+
 // Step 3: r = sqrt(G) over T = tan(U) (v = 1).
 void theorem_radius(fixed_mpfi& r, const theorem_constants& K, const fixed_mpfi& T);
 

@@ -32,12 +32,17 @@ minimum_double theorem_minimum_double(const resonant_pair<std::int64_t>& p) {
 
 void minimiser_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& a, const lobe_frame<big_int>& f,
                      const fixed_mpfi& U) {
-  const big_int key = lobe_order_key(f, a);
-  fixed_mpfi k(K.prec);
-  mpfi_set_z(k, key.backend().data());
-  mpfi_mul(out, K.pi, k);
-  if (f.m < 0) mpfi_sub(out, out, U);
-  else mpfi_add(out, out, U);
+  fixed_mpfi u(K.prec);
+  if (f.m < 0) mpfi_neg(u, U);
+  else mpfi_set(u, U);
+  lobe_theta(out, K, lobe_order_key(f, a), u);
+}
+
+void lobe_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& k, const fixed_mpfi& U) {
+  fixed_mpfi kk(K.prec);
+  mpfi_set_z(kk, k.backend().data());
+  mpfi_mul(out, K.pi, kk);
+  mpfi_add(out, out, U);
   mpfi_mul_2ui(out, out, 1);
   mpfi_div(out, out, K.a);
 }

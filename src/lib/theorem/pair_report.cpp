@@ -195,16 +195,6 @@ bool signed_root(iv& U, iv* T, root_cache& cache, const big_int& m, bool theorem
   return true;
 }
 
-// theta = 2 (k pi + U)/a.
-void lobe_theta(iv& out, const theorem_constants& K, const big_int& k, const iv& U) {
-  iv kk(K.prec);
-  mpfi_set_z(kk, k.backend().data());
-  mpfi_mul(out, K.pi, kk);
-  mpfi_add(out, out, U);
-  mpfi_mul_2ui(out, out, 1);
-  mpfi_div(out, out, K.a);
-}
-
 // The enclosures of one paper lobe k: s, u_asy (and tan u_asy in Ta), theta_asy, u_c (in Uc),
 // theta_c, error, bound, ratio.
 struct lobe_enclosures {
@@ -214,21 +204,13 @@ struct lobe_enclosures {
 
 bool prove_lobe(lobe_enclosures& L, const theorem_constants& K, root_cache& cache, const big_int& k, const big_int& m) {
   if (!signed_root(L.u_asy, &L.Ta, cache, m, false) || !signed_root(L.Uc, &L.Tc, cache, m, true)) return false;
-  mpfi_set_z(L.s, m.backend().data());
-  mpfi_mul(L.s, L.s, K.pi);
-  mpfi_div(L.s, L.s, K.b);
-  mpfi_div_2ui(L.s, L.s, 1);
+  pi_ratio(L.s, K, m, K.b);
   lobe_theta(L.theta_asy, K, k, L.u_asy);
   lobe_theta(L.theta_c, K, k, L.Uc);
-  // error = 2 |u_c - u_asy|/a: the difference of the two roots, not of the two thetas.
-  mpfi_sub(L.error, L.Uc, L.u_asy);
-  mpfi_abs(L.error, L.error);
-  mpfi_mul_2ui(L.error, L.error, 1);
-  mpfi_div(L.error, L.error, K.a);
-  mpfi_sqr(L.bound, K.pi);
-  mpfi_mul(L.bound, L.bound, K.pi);
-  mpfi_mul(L.bound, L.bound, K.x2);
-  mpfi_div(L.bound, L.bound, K.a);
+  iv d(K.prec);
+  mpfi_sub(d, L.Uc, L.u_asy);
+  mpfi_abs(d, d);
+  paper_error_bound(L.error, L.bound, K, d);
   mpfi_div(L.ratio, L.error, L.bound);
   return true;
 }

@@ -61,9 +61,6 @@ void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p
   mpfi_const_pi(K.pi);
 }
 
-namespace {
-
-// out = pi m/(2 d), d = a or b.
 void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const iv& d) {
   iv t(K.prec);
   mpfi_set_z(t, m.backend().data());
@@ -71,6 +68,17 @@ void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const iv& d
   mpfi_div(out, out, d);
   mpfi_div_2ui(out, out, 1);
 }
+
+void paper_error_bound(iv& error, iv& bound, const theorem_constants& K, const iv& d) {
+  mpfi_mul_2ui(error, d, 1);
+  mpfi_div(error, error, K.a);
+  mpfi_sqr(bound, K.pi);
+  mpfi_mul(bound, bound, K.pi);
+  mpfi_mul(bound, bound, K.x2);
+  mpfi_div(bound, bound, K.a);
+}
+
+namespace {
 
 // ---- tangents ----
 
