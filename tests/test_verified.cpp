@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <vector>
 
 #include <gyrores/core/precision.hpp>
 #include <gyrores/core/verified_digits.hpp>
@@ -88,11 +89,56 @@ TEST_CASE("verified digits: a diagnostic that does not settle is partial or a bo
         format_scientific(mpfr_real(mpfr_real(1) / 3 + mpfr_real(run.plan.bits) * mpfr_real("1e-15")), settled));
   REQUIRE(run.unsettled.count("noise"));
   CHECK(run.unsettled.at("noise") == 0u);
-  // The bound covers both runs' values (2^-226 and 2^-290 in the second round).
+  // The bound covers both runs' values (2^-226 and 2^-331 in the second round: the check runs 64
+  // bits beyond the plan's rung of 267 bits).
   CHECK(mpfr_real(run.fields.at("noise").at(0)) >= ldexp(mpfr_real(1), -int(run.plan.bits)));
   CHECK(run.unsettled.count("x") == 0);
   // Without the predicate the same computation is refused.
   CHECK_THROWS_AS(compute_verified(20, false, compute), compute_error);
+}
+
+TEST_CASE("verified digits: MPFR plans run on the precision ladder, whatever the default precision", "[verified]") {
+  CHECK(plan_working_bits({real_kind::f128, 113}) == 113);
+  CHECK(plan_working_bits({real_kind::mpfr, 124}) == 134);  // mpfr_fixed<40>
+  CHECK(plan_working_bits({real_kind::mpfr, 135}) == 267);  // mpfr_fixed<80>
+  CHECK(plan_working_bits({real_kind::mpfr, mpfr_ladder_max_bits}) == mpfr_ladder_max_bits);
+  CHECK_THROWS_AS(plan_working_bits({real_kind::mpfr, mpfr_ladder_max_bits + 1}), usage_error);
+  CHECK_THROWS_AS(with_real_type({real_kind::mpfr, mpfr_ladder_max_bits + 1}, [](auto) { return 0; }), usage_error);
+  // The type and the value's bits are the rung's, at any default precision; pi to all of them.
+  scoped_digits low(20);
+  const auto pi = with_real_type({real_kind::mpfr, 300}, [](auto tag) {
+    using T = decltype(tag);
+    return real_to_mpfr(real_pi<T>());
+  });
+  REQUIRE(mpfr_get_prec(pi.backend().data()) == 533);
+  mpfr_t ref;
+  mpfr_init2(ref, 533);
+  mpfr_const_pi(ref, MPFR_RNDN);
+  CHECK(mpfr_equal_p(ref, pi.backend().data()));
+  mpfr_clear(ref);
+  CHECK(mpfr_real::default_precision() == 20);
+  // The two runs of a round are on different rungs (30 digits: 124 bits asked, 134 held; the check
+  // 198 asked, 267 held), and the digits do not depend on the default precision.
+  std::vector<unsigned> bits;
+  auto third = [&](auto tag) {
+    using T = decltype(tag);
+    bits.push_back(real_bits<T>());
+    real_fields f;
+    put_field(f, "x", T(T(1) / 3));
+    return f;
+  };
+  const auto run = compute_verified_per_type(30, false, third);
+  CHECK(bits == std::vector<unsigned>{134, 267});
+  CHECK(run.fields.at("x").at(0) == "3.33333333333333333333333333333e-01");
+  // Beyond the ladder no round runs.
+  int calls = 0;
+  CHECK_THROWS_WITH(compute_verified(20500, false,
+                                     [&](const precision_plan&) {
+                                       ++calls;
+                                       return real_fields{};
+                                     }),
+                    Catch::Contains("largest working type"));
+  CHECK(calls == 0);
 }
 
 TEST_CASE("coupling report: verified horizon minimum and the resonant case", "[verified][coupling]") {

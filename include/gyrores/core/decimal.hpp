@@ -1,17 +1,21 @@
 // Decimal input and output with every printed digit accounted for.
 //
 // real_to_mpfr: exact conversion of any supported real into an mpfr_real (no rounding: the
-// target precision is raised to hold every bit). format_scientific: correctly rounded
-// scientific notation with D significant digits, by MPFR, to nearest by default or in a given
-// direction (outward ends of enclosures). digits_settled: Ziv's test: given a value known to
-// within a relative error e, the D-digit rounding is certain only if both ends of
-// [v(1-e), v(1+e)] round to the same string. parse_big_int, real_from_decimal: decimal input.
+// target carries the bits of the source, whatever Boost's default precision). format_scientific:
+// correctly rounded scientific notation with D significant digits, by MPFR, to nearest by
+// default or in a given direction (outward ends of enclosures). digits_settled: Ziv's test:
+// given a value known to within a relative error e, the D-digit rounding is certain only if both
+// ends of [v(1-e), v(1+e)] round to the same string. parse_big_int, real_from_decimal: decimal
+// input. Nothing here reads or writes Boost's process-wide default precision (core/real.hpp), so
+// every function may run on any thread (real_from_decimal<mpfr_real> excepted: it parses at
+// that default).
 #pragma once
 #include <mpfr.h>
 
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -20,30 +24,45 @@
 
 namespace gyrores {
 
-// Exact copy of v as an mpfr_real (precision >= the bits of T).
+namespace detail {
+// An mpfr_real of exactly `bits` bits holding 0, made without reading Boost's default precision.
+inline mpfr_real mpfr_real_of_bits(mpfr_prec_t bits) {
+  mpfr_t t;
+  mpfr_init2(t, bits);
+  mpfr_set_zero(t, 1);
+  mpfr_real r{mpfr_real::backend_type(t)};
+  mpfr_clear(t);
+  return r;
+}
+}  // namespace detail
+
+// Exact copy of v as an mpfr_real (precision >= the bits of T; mpfr_real and mpfr_fixed: theirs).
 template <class T> mpfr_real real_to_mpfr(const T& v) {
-  mpfr_real r;
   if constexpr (is_mpfr_v<T>) {
-    r = v;  // copies precision and value
+    return v;  // copies precision and value
+  } else if constexpr (is_mpfr_fixed_v<T>) {
+    return mpfr_real{mpfr_real::backend_type(v.backend().data())};  // its precision and value
   } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, long double>) {
-    r.precision(20);  // 68 bits >= the 64 of long double
+    mpfr_real r = detail::mpfr_real_of_bits(68);  // >= the 64 of long double
     mpfr_set_ld(r.backend().data(), static_cast<long double>(v), MPFR_RNDN);
+    return r;
   } else if constexpr (std::is_same_v<T, float128>) {
     // Three doubles hold the 113 bits of a float128 exactly (53 + 53 + 53 >= 113).
     double hi = static_cast<double>(v);
     float128 rest = v - float128(hi);
     double mid = static_cast<double>(rest);
     double lo = static_cast<double>(rest - float128(mid));
-    mpfr_real acc;
-    acc.precision(200);
+    mpfr_real acc = detail::mpfr_real_of_bits(666);  // 200 digits: more than the 113 bits of v
     mpfr_set_d(acc.backend().data(), hi, MPFR_RNDN);
     mpfr_add_d(acc.backend().data(), acc.backend().data(), mid, MPFR_RNDN);
     mpfr_add_d(acc.backend().data(), acc.backend().data(), lo, MPFR_RNDN);
     return acc;
   } else {
-    r = mpfr_real(v.str(0, std::ios_base::scientific));
+    // Other binary types (cpp_bin_float): their round-trip text read back at their own bits.
+    mpfr_real r = detail::mpfr_real_of_bits(std::numeric_limits<T>::digits);
+    mpfr_set_str(r.backend().data(), v.str(0, std::ios_base::scientific).c_str(), 10, MPFR_RNDN);
+    return r;
   }
-  return r;
 }
 
 // "d.ddd...e+XX" (at least two exponent digits) from the significant digits `digits` (no sign,
@@ -64,7 +83,9 @@ std::string format_scientific(mpfr_srcptr v, unsigned digits, mpfr_rnd_t rnd = M
 bool enclosure_rounding(mpfr_srcptr lo, mpfr_srcptr hi, unsigned digits, std::string& out);
 
 // True when every value within a relative `rel_err` of v rounds to the same `digits`-digit
-// string as v (Ziv's rounding test). Exact zero (rel_err irrelevant) is settled.
+// string as v (Ziv's rounding test; the ends v (1 -+ rel_err) are rounded outward). Exact zero
+// (rel_err irrelevant) is settled.
+bool digits_settled(mpfr_srcptr v, mpfr_srcptr rel_err, unsigned digits);
 bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits);
 
 // Parse a decimal integer (optional sign, digits only, any size; leading zeros are decimal, not

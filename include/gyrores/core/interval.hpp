@@ -3,6 +3,11 @@
 // Never use <, ==, sign() on mpfi_real: in Boost 1.74 an ambiguous comparison throws from a
 // noexcept function and terminates the process. Every predicate here reads the endpoints:
 // "certainly" answers true only when the whole interval satisfies the condition.
+//
+// Precision: new intervals and points take Boost's default precision of mpfi_real/mpfr_real,
+// which the arguments must have (core/real.hpp); these helpers serve the proof programs and the
+// tests' cover reference, which set it and run single-threaded. Proved code of the library works
+// on fixed_mpfi (core/fixed_precision.hpp) or Arb balls instead.
 #pragma once
 #include <mpfi.h>
 

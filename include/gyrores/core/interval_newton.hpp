@@ -21,7 +21,10 @@ namespace gyrores {
 // A function of one interval variable returning an enclosure of its range (f or f').
 using interval_function = std::function<mpfi_real(const mpfi_real&)>;
 
-// Encloses the root of f near `guess`, at the current MPFI/MPFR precision (scoped_digits).
+// Encloses the root of f near `guess`, at Boost's default precision of mpfi_real and mpfr_real,
+// which guess and scale must have (core/real.hpp: the callers, the proof programs and the tests'
+// cover reference, set it and run single-threaded; proved code of the library uses
+// core/fixed_precision.hpp and Arb instead).
 //   f, df        enclosures of f and f' on an interval (df is evaluated on the whole X, f on
 //                its midpoint as a point interval);
 //   guess        a point near the root, e.g. a floating-point root polished to the working

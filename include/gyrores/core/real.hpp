@@ -79,9 +79,8 @@ template <class T> T real_epsilon() {
 
 // Sets the default decimal precision of mpfr_real and mpfi_real for a scope, restoring it after.
 // Boost 1.74 keeps this default in one process-wide variable, so this is for single-threaded
-// programs only (the tests' oracles, the proof programs, the benchmarks): code that may run on
-// any thread must not use it (see the header comment). The library's last user is the retired
-// lattice method (tests/reference/lattice.hpp).
+// programs only: the library does not use it (see the header comment); the tests' oracles, the
+// proof programs and the benchmarks do.
 class scoped_digits {
  public:
   explicit scoped_digits(unsigned digits10)

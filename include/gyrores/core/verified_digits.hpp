@@ -3,13 +3,20 @@
 //
 // The computation is a function from a precision plan (core/precision.hpp) to named real
 // fields (each a list of values, copied exactly into MPFR). compute_verified runs it twice: in the
-// plan for D digits, and in MPFR with 64 more bits. A field's D-digit string is accepted only if
+// plan for D digits, and in MPFR with 64 more bits than the plan's run holds (plan_working_bits:
+// an MPFR plan runs in the smallest type of the precision ladder holding its bits). A field's
+// D-digit string is accepted only if
 //   1. both runs round every value of the field to the same D significant digits (to nearest), and
 //   2. the higher-precision value passes Ziv's rounding test (core/decimal.hpp, digits_settled)
-//      for a relative error of 2^-(bits - 12), bits being that run's precision: every value that
-//      close rounds to the same string.
+//      for a relative error of 2^-(bits - 12), bits being the precision that run asked for (its
+//      type may hold more): every value that close rounds to the same string.
 // If any field fails, the plan becomes MPFR with twice the bits and both runs repeat, at most 5
-// rounds in all; then compute_error ("could not settle D digits: <field> ...").
+// rounds in all (fewer if the check run would exceed the ladder, mpfr_ladder_max_bits); then
+// compute_error ("could not settle D digits: <field> ...").
+//
+// Threads: nothing here reads or writes Boost's process-wide default precision (the fields'
+// values carry their own and are read through MPFR's C API; compute_verified_per_type runs in
+// fixed-precision types), so compute_verified may run on any thread if `compute` may.
 //
 // Diagnostics (fields the caller names as such, e.g. the relative error of a closed form, nearly
 // all cancellation) never block the main answer: once every main field has settled, a
@@ -38,7 +45,7 @@
 namespace gyrores {
 
 // The real-valued fields of a result, by name, as exact MPFR copies (a field may hold several
-// values, e.g. all minimisers).
+// values, e.g. all minimisers), each with the precision of the run that computed it.
 using real_fields = std::map<std::string, std::vector<mpfr_real>>;
 
 // The accepted D-digit strings ("d.ddd...e+XX"), by field name, in the same order.
@@ -77,7 +84,8 @@ verified_run compute_verified(unsigned digits, bool needs_mpfr,
                               const diagnostic_predicate& is_diagnostic = {});
 
 // The same, for a generic computation written once for every real type: per_type(T{}) returns
-// the real_fields computed in T (with_real_type, core/precision.hpp).
+// the real_fields computed in T (with_real_type, core/precision.hpp: double, long double,
+// float128 and every rung of the MPFR ladder, mpfr_fixed<D>).
 template <class F> verified_run compute_verified_per_type(unsigned digits, bool needs_mpfr, F&& per_type) {
   return compute_verified(digits, needs_mpfr,
                           [&](const precision_plan& plan) { return with_real_type(plan, per_type); });

@@ -126,6 +126,13 @@ template <class T> struct horizon_motion {
   }
 };
 
+// q'/rho0 or z'/rho0 as one function type, so that the root solver is compiled once per T.
+template <class T> struct horizon_derivative {
+  const horizon_motion<T>* m;
+  bool of_z;  // z' (else q')
+  T operator()(const T& t) const { return of_z ? m->zdot(t) : m->qdot(t); }
+};
+
 // The running minimum of H_q over the critical points examined. Every candidate within a
 // relative tie band of the running minimum is kept; at the end the earliest of them is the first
 // time the minimum is attained.
@@ -197,7 +204,10 @@ inline std::string approximate_count_text(double count) {
 // min of H_q = (q^2 + q'^2)/2 over [0, horizon] for coupling n != 0 (|n| is used) and impulse
 // v > 0, by the exact bracketing of the critical points described in the header comment.
 // Preconditions (checked, usage_error): v > 0, horizon >= 0, n != 0, at most
-// horizon_max_critical_points critical points.
+// horizon_max_critical_points critical points. mpfr_real works at Boost's default precision,
+// which every argument must have (else Boost's operators change that process-wide default
+// during the call: core/real.hpp); mpfr_fixed<D> carries its own (coupling_report.hpp runs the
+// ladder of core/precision.hpp).
 template <class T> horizon_min_result<T> horizon_minimum(const T& n_in, const T& v, const T& horizon) {
   using std::fabs;
   using std::floor;
@@ -213,8 +223,7 @@ template <class T> horizon_min_result<T> horizon_minimum(const T& n_in, const T&
   if (T count = 2 * horizon / step; count > T(double(horizon_max_critical_points)))
     throw usage_error("the horizon is too long: " + detail::approximate_count_text(static_cast<double>(count)) +
                       " critical points (limit " + std::to_string(horizon_max_critical_points) + ")");
-  auto qdot = [&m](const T& t) { return m.qdot(t); };
-  auto zdot = [&m](const T& t) { return m.zdot(t); };
+  const detail::horizon_derivative<T> qdot{&m, false}, zdot{&m, true};
   horizon_min_result<T> r;
   detail::horizon_min_tracker<T> best(ldexp(T(1), -int(3 * real_bits<T>() / 4)));
   best.consider(T(0), v * v / 2, T(0), v, false);  // t = 0: the z' root of the first interval

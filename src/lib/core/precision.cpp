@@ -24,4 +24,21 @@ precision_plan plan_for_digits(unsigned digits, bool needs_mpfr) {
   return {real_kind::mpfr, digits10_to_bits(digits) + 24};
 }
 
+unsigned plan_working_bits(const precision_plan& plan) {
+  switch (plan.kind) {
+    case real_kind::f64: return unsigned(std::numeric_limits<double>::digits);
+    case real_kind::f80: return unsigned(std::numeric_limits<long double>::digits);
+    case real_kind::f128: return unsigned(std::numeric_limits<float128>::digits);
+    case real_kind::mpfr: break;
+  }
+  for (unsigned k = 0; k < mpfr_ladder_rungs; ++k)
+    if (plan.bits <= mpfr_ladder_bits(k)) return mpfr_ladder_bits(k);
+  detail::throw_beyond_mpfr_ladder(plan.bits);
+}
+
+void detail::throw_beyond_mpfr_ladder(unsigned bits) {
+  throw usage_error("an MPFR precision of " + std::to_string(bits) + " bits is beyond the largest working type (" +
+                    std::to_string(mpfr_ladder_max_bits) + " bits)");
+}
+
 }  // namespace gyrores

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/fixed_precision.hpp>
 
 namespace gyrores {
 namespace {
@@ -15,21 +16,19 @@ constexpr int ziv_lost_bits = 12;  // bits the check run is assumed to have lost
 
 constexpr int diagnostic_rounds = 2;  // rounds after which an unsettled diagnostic is accepted as partial
 
-mpfr_real ziv_rel(unsigned check_bits) {
-  scoped_digits d(30);
-  return ldexp(mpfr_real(1), -int(check_bits) + ziv_lost_bits);
-}
+// The fields' values are mpfr_real of their run's precision, read here through MPFR's C API
+// only: Boost's operators on them would set the process-wide default precision (core/real.hpp).
 
 // True when a and b round to the same `digits` digits and b passes Ziv's test.
-bool value_settled(const mpfr_real& a, const mpfr_real& b, const mpfr_real& rel, unsigned digits) {
-  return format_scientific(a, digits) == format_scientific(b, digits) && digits_settled(b, rel, digits);
+bool value_settled(const mpfr_real& a, const mpfr_real& b, mpfr_srcptr rel, unsigned digits) {
+  return format_scientific(a, digits) == format_scientific(b, digits) && digits_settled(b.backend().data(), rel, digits);
 }
 
 // The D-digit strings of field `name` (values va of the plan's run, vb of the check run), or
 // nullopt with `problem` saying how it failed.
 std::optional<std::vector<std::string>> settled_field(const std::string& name, const std::vector<mpfr_real>& va,
                                                       const std::vector<mpfr_real>* vb, unsigned digits,
-                                                      unsigned check_bits, const mpfr_real& rel, std::string& problem) {
+                                                      unsigned check_bits, mpfr_srcptr rel, std::string& problem) {
   if (!vb || vb->size() != va.size()) {
     problem = name + " has a different number of values at " + std::to_string(check_bits) + " bits";
     return std::nullopt;
@@ -47,15 +46,20 @@ std::optional<std::vector<std::string>> settled_field(const std::string& name, c
 }
 
 // The most digits (< D) on which a and b agree and settle, or 0.
-unsigned partial_digits(const mpfr_real& a, const mpfr_real& b, const mpfr_real& rel, unsigned digits) {
+unsigned partial_digits(const mpfr_real& a, const mpfr_real& b, mpfr_srcptr rel, unsigned digits) {
   if (digits <= 1) return 0;
-  scoped_digits sd(30);
   // Start near -log10 of the larger of the runs' relative difference and Ziv's error.
   unsigned top = digits - 1;
-  if (!mpfr_zero_p(b.backend().data())) {
-    mpfr_real diff = abs(mpfr_real(a - b)) / abs(b);
-    if (diff < rel) diff = rel;
-    const double lg = -log10(diff).convert_to<double>();
+  mpfr_srcptr av = a.backend().data(), bv = b.backend().data();
+  if (!mpfr_zero_p(bv)) {
+    fixed_mpfr diff(std::max(mpfr_get_prec(av), mpfr_get_prec(bv)));
+    mpfr_sub(diff, av, bv, MPFR_RNDN);
+    mpfr_abs(diff, diff, MPFR_RNDN);
+    mpfr_div(diff, diff, bv, MPFR_RNDN);
+    mpfr_abs(diff, diff, MPFR_RNDN);
+    if (mpfr_less_p(diff, rel)) mpfr_set(diff, rel, MPFR_RNDN);
+    mpfr_log10(diff, diff, MPFR_RNDN);
+    const double lg = -mpfr_get_d(diff, MPFR_RNDN);
     if (lg + 2 < double(top)) top = lg + 2 < 1 ? 1u : unsigned(lg + 2);
   }
   for (unsigned d = top; d >= 1; --d)
@@ -66,7 +70,7 @@ unsigned partial_digits(const mpfr_real& a, const mpfr_real& b, const mpfr_real&
 // A diagnostic that did not settle: its values with the digits that did (the fewest over its
 // values), or estimated bounds on |value| (max(|a|, |b|) + |a - b|, 2 digits rounded up).
 std::vector<std::string> partial_field(const std::vector<mpfr_real>& va, const std::vector<mpfr_real>& vb,
-                                       const mpfr_real& rel, unsigned digits, unsigned& settled) {
+                                       mpfr_srcptr rel, unsigned digits, unsigned& settled) {
   settled = digits;
   for (std::size_t i = 0; i < va.size(); ++i) settled = std::min(settled, partial_digits(va[i], vb[i], rel, digits));
   std::vector<std::string> strs;
@@ -75,11 +79,27 @@ std::vector<std::string> partial_field(const std::vector<mpfr_real>& va, const s
       strs.push_back(format_scientific(va[i], settled));
       continue;
     }
-    const mpfr_real aa = abs(va[i]), ab = abs(vb[i]);
-    mpfr_real bound = (aa > ab ? aa : ab) + abs(mpfr_real(va[i] - vb[i]));
+    mpfr_srcptr a = va[i].backend().data(), b = vb[i].backend().data();
+    const mpfr_prec_t prec = std::max(mpfr_get_prec(a), mpfr_get_prec(b)) + 2;
+    fixed_mpfr bound(prec), diff(prec);
+    mpfr_sub(diff, a, b, MPFR_RNDU);
+    mpfr_abs(diff, diff, MPFR_RNDU);
+    if (mpfr_cmpabs(a, b) >= 0) mpfr_abs(bound, a, MPFR_RNDU);
+    else mpfr_abs(bound, b, MPFR_RNDU);
+    mpfr_add(bound, bound, diff, MPFR_RNDU);
     strs.push_back(format_scientific(bound, 2, MPFR_RNDU));
   }
   return strs;
+}
+
+// The check run of `plan`: MPFR with 64 bits beyond what the plan's run holds (an MPFR plan runs
+// on a rung of the ladder, with up to twice its bits: core/precision.hpp), so that the two runs
+// always differ; nullopt beyond the ladder.
+std::optional<precision_plan> check_plan(const precision_plan& plan) {
+  if (plan.kind == real_kind::mpfr && plan.bits > mpfr_ladder_max_bits) return std::nullopt;
+  const unsigned bits = plan_working_bits(plan) + check_extra_bits;
+  if (bits > mpfr_ladder_max_bits) return std::nullopt;
+  return precision_plan{real_kind::mpfr, bits};
 }
 
 // One round's verdict: every main field settled (the run), or nullopt with `problem`. A
@@ -88,7 +108,8 @@ std::vector<std::string> partial_field(const std::vector<mpfr_real>& va, const s
 std::optional<verified_run> confirmed_fields(const real_fields& a, const real_fields& b, unsigned digits,
                                              unsigned check_bits, const diagnostic_predicate& is_diagnostic,
                                              bool accept_partial, bool& diagnostics_pending, std::string& problem) {
-  const mpfr_real rel = ziv_rel(check_bits);
+  fixed_mpfr rel(2);  // 2^-(check_bits - 12): Ziv's relative error for the check run
+  mpfr_set_si_2exp(rel, 1, -long(check_bits) + ziv_lost_bits, MPFR_RNDN);
   verified_run out;
   diagnostics_pending = false;
   for (const auto& [name, va] : a) {
@@ -128,11 +149,17 @@ verified_run compute_verified(unsigned digits, bool needs_mpfr,
   std::string last_problem;
   std::optional<verified_run> main_settled;  // the first round whose main fields all settled
   for (int round = 0; round < verification_rounds; ++round) {
-    const precision_plan check{real_kind::mpfr, plan.bits + check_extra_bits};
-    real_fields a = compute(plan), b = compute(check);
+    const auto check = check_plan(plan);
+    if (!check) {  // no further round: as after the last one
+      if (main_settled) return std::move(*main_settled);
+      last_problem = "the precision would exceed the largest working type (" + std::to_string(mpfr_ladder_max_bits) +
+                     " bits)";
+      break;
+    }
+    real_fields a = compute(plan), b = compute(*check);
     bool pending = false;
     const bool accept_partial = round + 1 >= diagnostic_rounds || round + 1 == verification_rounds;
-    if (auto run = confirmed_fields(a, b, digits, check.bits, is_diagnostic, accept_partial, pending, last_problem)) {
+    if (auto run = confirmed_fields(a, b, digits, check->bits, is_diagnostic, accept_partial, pending, last_problem)) {
       run->plan = plan;
       if (!pending || accept_partial) return std::move(*run);
       if (!main_settled) main_settled = std::move(*run);
