@@ -64,9 +64,9 @@ std::string h1_remark(const std::vector<measurement>& rows, const std::vector<be
   }
   std::string out;
   if (!units.empty())
-    out = "In double theorem_minimum_double costs " + format_number("%.2g", median(units)) +
-          " evaluations of (q, q', z, z') (one_eval: two sin_cos; median over the pairs): the lobes by integers, "
-          "u* by safeguarded Newton on H(u) = x u + arctan(x tan u), one tangent for r_res.";
+    out = "In double theorem_minimum_double takes the time of " + format_number("%.2g", median(units)) +
+          " evaluations of (q, q', z, z') (one_eval, two sin_cos; median over the pairs) for the lobes by integers, "
+          "u* by safeguarded Newton on H(u) = x u + arctan(x tan u) and r_res from tan u*.";
   if (!lattice.empty())
     out += std::string(out.empty() ? "" : " ") + "The reference lattice from before the theorem (ref_lattice) takes " +
            format_number("%.2g", median(lattice)) + "x its time.";

@@ -163,13 +163,15 @@ void write_cell(std::ostream& f, const measurement* hit, const std::map<const me
   f << " |";
 }
 
-// One table per precision that ran: a row per method (in the order of the rows), a column per pair.
+// One table per precision that ran: a row per method (in the order of the methods table: the
+// theorem's path first; methods outside it, the mpmath peer, last), a column per pair.
 void write_tables(std::ostream& f, const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs,
-                  const std::vector<precision>& precisions) {
+                  const std::vector<precision>& precisions, const std::vector<method_def>& methods) {
   const auto ratios = ratios_to_best(rows, precisions);
   f << "## Tables\n\nEach cell: time, correct digits (d), evaluations (ev), ratio to the best. Blank: not run "
        "(see *Skipped combinations*).\n\n";
   std::vector<std::string> method_order;
+  for (const auto& m : methods) method_order.push_back(m.name);
   for (const auto& m : rows)
     if (std::find(method_order.begin(), method_order.end(), m.method) == method_order.end())
       method_order.push_back(m.method);
@@ -303,7 +305,7 @@ void write_markdown(const std::string& path, const run_context& ctx, const std::
   write_setup(f, ctx);
   write_definitions(f, ctx);
   write_headlines(f, rows, pairs);
-  write_tables(f, rows, pairs, precisions);
+  write_tables(f, rows, pairs, precisions, methods);
   write_methods(f, methods, pairs);
   write_skips(f, skips, pairs, precisions);
   write_notes(f, rows);
@@ -328,7 +330,7 @@ void write_plot_script(const std::string& dir, const run_context& ctx, const std
   int n = 0;
   std::ostringstream plots;
   for (std::size_t pi = 0; pi < panels.size(); ++pi) {
-    plots << "set title '" << panels[pi] << "'\nplot ";
+    plots << "set title '" << panels[pi] << "' noenhanced\nplot ";
     bool first = true;
     for (std::size_t fi = 0; fi < families.size(); ++fi) {
       std::vector<std::pair<double, double>> pts;
