@@ -11,7 +11,11 @@ decimal strings otherwise (an ``mpf`` holds every verified digit, but mpmath pri
 its own ``mpmath.mp.dps``: raise it to see or keep them all); certificates keep the exact strings
 of their JSON form. Bad input
 raises ``UsageError`` (a ``ValueError``), a result that cannot be computed honestly
-``ComputeError`` (an ``ArithmeticError``), with the library's one-line messages.
+``ComputeError`` (an ``ArithmeticError``), with the library's one-line messages. Every function
+may be called from several threads at once, and the library takes no lock: ``pair``,
+``asymptotics``, ``certify``, ``design``, ``pareto``, ``coupling`` and ``sweep`` release the GIL
+while they compute, so threads (e.g. a ``concurrent.futures.ThreadPoolExecutor``) run them in
+parallel.
 """
 
 import json as _json

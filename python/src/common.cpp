@@ -6,11 +6,6 @@
 
 namespace gyrores::python {
 
-std::mutex& library_mutex() {
-  static std::mutex m;
-  return m;
-}
-
 big_int big_int_of(const py::handle& value, const std::string& what) {
   // bool is a subclass of int in Python; True as a pair member is almost certainly a mistake.
   if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))

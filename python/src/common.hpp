@@ -1,11 +1,11 @@
-// What every binding file of the Python module shares: the call into the library (GIL released,
-// one library call at a time), Python integers and digits to the library's types, and JSON
-// (gyrores::json, io/json.hpp) to Python objects.
+// What every binding file of the Python module shares: the call into the library (GIL released),
+// Python integers and digits to the library's types, and JSON (gyrores::json, io/json.hpp) to
+// Python objects.
 #pragma once
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
-#include <mutex>
+#include <mutex>  // bind_sweep.cpp relies on it (its std::mutex); it should include <mutex> itself
 #include <string>
 #include <utility>
 
@@ -18,16 +18,14 @@ namespace gyrores::python {
 
 namespace py = pybind11;
 
-// Serialises the library calls of all Python threads: Boost 1.74 keeps MPFR's default precision
-// in one process-wide variable (sweep/engine.hpp), so two verify_pair calls must not overlap.
-std::mutex& library_mutex();
-
-// Runs f() with the GIL released (other Python threads keep running) and the library mutex held.
-// Lock order: the GIL is released before the mutex is taken, so a callback that re-acquires the
-// GIL while the mutex is held (sweep progress) cannot deadlock.
+// Runs f() with the GIL released, so that other Python threads keep running, library calls
+// included: every library function the bindings call may run on any number of threads at once
+// (none writes process-wide state such as Boost's default MPFR precision: docs/architecture.md,
+// Conventions; python/tests/test_threads.py). f must not touch Python objects (read them
+// before, convert after) unless it takes the GIL back (py::gil_scoped_acquire, as the sweep's
+// progress callback does).
 template <class F> auto call_library(F&& f) {
   py::gil_scoped_release release;
-  std::lock_guard<std::mutex> lock(library_mutex());
   return std::forward<F>(f)();
 }
 
