@@ -11,6 +11,7 @@
 #include <gyrores/gyrores.hpp>
 
 #include "cli_checks.hpp"
+#include "reference/lattice.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
