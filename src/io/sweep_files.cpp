@@ -37,8 +37,8 @@ json read_state(const std::string& state, const json& run_files) {
   }
   if (st.value("format", "") != state_format) throw usage_error("cannot resume: '" + state + "' is not a resume state");
   if (st.at("run") != run_files)
-    throw usage_error("cannot resume: the state at '" + state + "' is for another sweep: " + st.at("run").dump() +
-                      "; this one is " + run_files.dump());
+    throw usage_error("cannot resume: the state at '" + state + "' is for another sweep: " +
+                      sweep_run_mismatch(st.at("run"), run_files) + "; start it again without --resume");
   return st;
 }
 

@@ -31,8 +31,8 @@ void check_one_complete_set(const std::vector<sweep_input>& in, const json& iden
   std::set<std::int64_t> seen;
   for (auto& x : in) {
     if (sweep_run_identity(x.run) != ident)
-      throw usage_error("'" + x.path + "' comes from a different sweep (" + sweep_run_identity(x.run).dump() + " vs " +
-                        ident.dump() + ")");
+      throw usage_error("'" + x.path + "' comes from a different sweep than '" + in[0].path +
+                        "': " + sweep_run_mismatch(sweep_run_identity(x.run), ident));
     if (shard_count(x) != n)
       throw usage_error("'" + x.path + "' is a shard of " + std::to_string(shard_count(x)) + ", the others of " +
                         std::to_string(n));

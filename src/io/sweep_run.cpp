@@ -13,6 +13,7 @@ json sweep_run_json(const sweep_config& c, const std::string& type, unsigned dig
   j["max_examples"] = c.max_examples;
   j["type"] = type;
   j["digits"] = digits;
+  j["method"] = sweep_rows_method;
   if (c.certified) j["certified"] = true;  // absent in uncertified runs (files of earlier versions)
   return j;
 }
@@ -29,6 +30,19 @@ json sweep_run_identity(json run) {
   run.erase("complete");
   run.erase("merged_shards");
   return run;
+}
+
+std::string sweep_run_mismatch(const json& found, const json& wanted) {
+  if (!found.is_object() || !found.contains("method"))
+    return "it was written by an earlier version of gyrores, whose rows came from the lattice method's solver "
+           "(these come from the theorem's root, " + std::string(sweep_rows_method) + ")";
+  std::string keys;
+  for (const auto& [k, v] : wanted.items())
+    if (!found.contains(k) || found.at(k) != v) keys += (keys.empty() ? "" : ", ") + k;
+  for (const auto& [k, v] : found.items())
+    if (!wanted.contains(k)) keys += (keys.empty() ? "" : ", ") + k;
+  if (keys.empty()) keys = "the order of its keys";
+  return "it differs in " + keys + " (" + found.dump() + " vs " + wanted.dump() + ")";
 }
 
 }  // namespace gyrores

@@ -12,12 +12,23 @@
 namespace gyrores {
 
 // {min_order (at least 3), max_order, shard, checks, cross_check_max_order, max_examples, type,
-// digits[, certified: true]}; `type` is the working real type's name, `digits` the significant digits of its reals
-// in rows (17 for double).
+// digits, method[, certified: true]}; `type` is the working real type's name (sweep_type_name),
+// `digits` the significant digits of its reals in rows (17 for double), `method` how the rows'
+// values are computed: sweep_rows_method.
 json sweep_run_json(const sweep_config& c, const std::string& type, unsigned digits);
 template <class T> json sweep_run_json(const sweep_config& c) {
-  return sweep_run_json(c, real_type_name<T>(), std::is_same_v<T, double> ? 17u : c.digits);
+  return sweep_run_json(c, sweep_type_name<T>(c), std::is_same_v<T, double> ? 17u : c.digits);
 }
+
+// The run descriptions' `method`: the rows come from the lattice theorem's root (sweep/evaluate.hpp).
+// Files of earlier versions (rows from the lattice method's solver) have no `method`: a resume or
+// a merge refuses to mix them with these.
+inline constexpr const char* sweep_rows_method = "lattice-theorem/1";
+
+// Why a resume state or shard output described by `found` cannot continue or join the sweep
+// described by `wanted` (run descriptions): one clause ("it was written by an earlier version
+// ...", or the keys that differ), without a full stop.
+std::string sweep_run_mismatch(const json& found, const json& wanted);
 
 // The checks of a run description.
 sweep_check_set sweep_checks_of_run(const json& run);

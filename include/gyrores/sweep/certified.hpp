@@ -1,52 +1,110 @@
-// The proofs of a certified sweep (`gyrores sweep --certified`): per pair, the paper's claims
-// decided by exact integers and interval arithmetic, never by floating point.
+// The enclosures of a sweep row, from the lattice theorem (proofs/lattice-theorem.md), and the
+// integer facts the checks rest on. `gyrores sweep --certified` decides its checks from them (a
+// pass is a proof), and every row wider than double takes its values from them.
 //
-// sweep_prove_pair(p) establishes, for one pair (amplitude v = 1):
+// sweep_prove_pair(p, opt) establishes, for one pair (amplitude v = 1):
 //  - R(pi/2) exactly: at theta = pi/2 the phases a pi/4 and b pi/4 are multiples of pi/4, so
 //    4 a^2 R(pi/2) is an integer (`quarter_R_scaled`), and its vanishing is decided exactly
 //    (P3 in docs/mathematics.md);
-//  - the minimisers' lobes by the lattice theorem (proofs/lattice-theorem.md, exact integers:
-//    inscribed/lattice_theorem.hpp) and their count, 2 (delta odd) or 4 (delta = 0 mod 4);
-//  - enclosures of r_res and theta_first: u* is bracketed by proving H(lo) < mu_min < H(hi) in
-//    MPFI (H increases), then r_res = sqrt(G([lo, hi])), theta_first = 2 (k pi + sign(m) u*)/a;
-//  - for x < 1/2, an enclosure of the paper's error |theta_c - theta_asy| in the lobe
-//    k = round(a/(2b)) (the smaller on a tie), without cancellation: with f(u) = u +
-//    arctan(x tan u)/x - s and u_a + tan u_a = s (s = pi |m|/(2b)), f(u_a) = -D with
-//    D = t - arctan(x t)/x >= 0, t = tan u_a, and f' = 1 + (1 + t^2)/(1 + x^2 t^2) >= 2, so
-//    u_c - u_a = D/f'(xi) with xi in [u_a, u_a + D/2] (mean value theorem). D is evaluated by
-//    its alternating series when x t is small.
-// Every bound is outward: the doubles returned are rounded down (lo) and up (hi) from MPFI
-// intervals. Precision starts at 64 bits and doubles (to 512) when a decision or an enclosure is
-// too wide. Nothing here uses the global MPFR precision, so it is safe on the sweep's threads.
+//  - the minimisers' lobes (theorem/lobes.hpp, exact integers; the theorem's items 4 and 5) and
+//    m_min, which sweep_lobes_hold checks against the pair independently;
+//  - enclosures of r_res, theta_first, t_first, t_min_paper = pi/|n| and their ratio: u* by
+//    prove_theorem_root, r_res = sqrt(G) over tan(U) (theorem_radius), theta_first =
+//    2 (k pi + sign(m) u*)/a of the first lobe (minimiser_theta, theorem/minimum.hpp); and
+//    r_res^2 <= R(pi/2) decided against the exact integer;
+//  - for x < 1/2 and opt.asy, the paper's error |theta_c - theta_asy| = 2 (u_c - u_a)/a in its
+//    lobe k = round(a/(2b)) (the smaller k on a tie), m = a - 2 k b: u_c = H^{-1}(pi |m|/(2a))
+//    by prove_theorem_root, u_a + tan u_a = pi |m|/(2b) by prove_paper_root (both brackets
+//    proved; the signs of u_c, u_a follow m's, so |u_c - u_a| is the same), their difference at
+//    2 log2(a) + 8 more bits, which covers the cancellation (u_c - u_a > u_a/(17 a^2), shown
+//    in src/lib/sweep/certified.cpp); the bound pi^3 x^2/a, the ratio and
+//    the constant error a/x^2.
+// Precision: the enclosures start at opt.bits + 32 bits (opt.bits: the row's working precision;
+// with the asy error, 2 log2(a) + 8 more for all of them) and must be narrower than
+// 2^-(opt.bits + 8) relative, so that their midpoints, rounded to the row's type, are its values;
+// otherwise the precision doubles, up to 8 times the start. Every
+// object carries its own precision (core/fixed_precision.hpp): nothing here reads or writes
+// Boost's process-wide default, so it runs on any number of threads.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
+#include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/integer.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
 
 namespace gyrores {
 
-struct sweep_proof {
-  int128 quarter_R_scaled = 0;            // 4 a^2 R(pi/2), exact
-  int m_min = 0;                          // min |a - 4N|
-  std::vector<lobe_frame<int128>> lobes;  // the minimisers' lobes (theorem), theta order
-  bool enclosed = false;                  // r_res/theta_first enclosures below were proved
-  double r_lo = 0, r_hi = 0;              // r_res (0, 0 for degenerate pairs: exact)
-  double theta_lo = 0, theta_hi = 0;      // theta_first
-  bool r_below_R_half_pi = false;         // r_hi^2 <= R(pi/2), proved (non-degenerate pairs)
-  bool has_asy = false;                   // asked for and x < 1/2
-  bool asy_enclosed = false;              // the error's enclosure was proved
-  double asy_error_hi = 0, asy_bound_lo = 0, asy_ratio_lo = 0, asy_ratio_hi = 0, asy_constant_hi = 0;
-  std::string note;                       // why something could not be proved (resource limits)
-};
-
 // 4 a^2 R(pi/2) (v = 1) for a pair with order a and delta b (a > b >= 1, a = b mod 2): exact.
 int128 sweep_quarter_R_scaled(std::int64_t a, std::int64_t b);
 
-// The proofs above for pair p (order <= 2^40); `asy`: also the paper's error bound (x < 1/2).
-sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, bool asy);
+// The theorem's integer claims about the minimisers of p, checked (docs/mathematics.md §3):
+// m_min = p.strand_offset_min() = min over N of |a - 4N|; 2 lobes (delta odd or = 2 mod 4) or 4
+// (delta = 0 mod 4); each a frame with (2j+1) a - 2 k b = m, |m| = m_min, 0 <= k < a; in strictly
+// increasing theta order (lobe_order_key), hence distinct. Precondition (not checked): the
+// products (2j+1) a fit in L.
+template <class L>
+bool sweep_lobes_hold(const resonant_pair<std::int64_t>& p, int m_min, std::span<const lobe_frame<L>> lobes) {
+  const L a = L(std::int64_t(p.order())), b = L(p.delta());
+  const int amod = int(int_mod(std::int64_t(p.order()), std::int64_t(4)));
+  const int independent = amod < 4 - amod ? amod : 4 - amod;
+  const std::size_t expected = m_min == 2 ? 4 : 2;
+  if (m_min != independent || m_min != p.strand_offset_min() || lobes.size() != expected) return false;
+  for (std::size_t i = 0; i < lobes.size(); ++i) {
+    const auto& f = lobes[i];
+    if ((2 * f.j + 1) * a - 2 * f.k * b != f.m || (f.m != m_min && f.m != -m_min) || f.k < 0 || f.k >= a) return false;
+    const L key = f.k == 0 && f.m < 0 ? a : f.k;  // lobe_order_key (theorem/lobes.hpp), restated
+    if (i > 0) {
+      const auto& e = lobes[i - 1];
+      if (!((e.k == 0 && e.m < 0 ? a : e.k) < key)) return false;
+    }
+  }
+  return true;
+}
+
+struct sweep_proof_options {
+  unsigned bits = 53;       // the row's working precision (sweep_bits, evaluate.hpp)
+  bool asy = false;         // also the paper's error (pairs with x < 1/2)
+  bool minimisers = false;  // also every minimiser's theta, as the double nearest its midpoint
+};
+
+// The minimum's enclosures, at `prec` bits.
+struct sweep_minimum_enclosure {
+  explicit sweep_minimum_enclosure(mpfr_prec_t p)
+      : prec(p), r_res(p), theta_first(p), t_first(p), t_min_paper(p), t_ratio(p) {}
+  mpfr_prec_t prec;
+  fixed_mpfi r_res, theta_first, t_first;  // r_res = [0, 0] for degenerate pairs
+  fixed_mpfi t_min_paper;                   // pi/|n| = pi sqrt(tau sigma)/b
+  fixed_mpfi t_ratio;                       // t_first/t_min_paper = theta_first b/pi
+  std::array<double, 4> minimisers{};       // with opt.minimisers, ascending (lobes' order)
+};
+
+// The paper's error in its lobe, at `prec` bits.
+struct sweep_asy_enclosure {
+  explicit sweep_asy_enclosure(mpfr_prec_t p) : prec(p), error(p), bound(p), ratio(p), constant(p) {}
+  mpfr_prec_t prec;
+  fixed_mpfi error, bound, ratio, constant;  // |theta_c - theta_asy|, pi^3 x^2/a, error/bound, error a/x^2
+};
+
+struct sweep_proof {
+  int128 quarter_R_scaled = 0;            // 4 a^2 R(pi/2), exact
+  int m_min = 0;                          // theorem_m_min(a)
+  std::vector<lobe_frame<int128>> lobes;  // the minimisers' lobes (k in [0, a)), theta order
+  std::unique_ptr<sweep_minimum_enclosure> minimum;  // null: not proved within the precision limit
+  bool r_below_R_half_pi = false;         // r_res^2 <= R(pi/2), proved (non-degenerate pairs)
+  bool has_asy = false;                   // asked for and x < 1/2
+  std::unique_ptr<sweep_asy_enclosure> asy;  // null unless has_asy and proved
+  std::string note;                       // what could not be proved (a resource limit)
+};
+
+// The proofs above for pair p (order <= 2^40). Throws only what the root solvers' double scouts
+// throw (compute_error, never for valid pairs); what is not proved within the precision limit
+// is left null and named in `note`.
+sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, const sweep_proof_options& opt = {});
 
 }  // namespace gyrores
