@@ -7,7 +7,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <string>
 
 #include <gyrores/core/real.hpp>
@@ -94,7 +93,8 @@ class sweep_file_session {
 
 }  // namespace detail
 
-// Runs the sweep cfg with T as working type (MPFR: at cfg.digits + 8 digits), writing the files
+// Runs the sweep cfg with T as working type (MPFR: cfg.digits + 8 digits, sweep_bits; the
+// process-wide MPFR precision is neither read nor set), writing the files
 // named in `files`; progress, if set, is called after every block (on the calling thread).
 // Returns complete = false when eo.max_pairs or *eo.stop ended the run early (a checkpoint was
 // written: run again with files.resume to continue). usage_error for an invalid cfg, a file
@@ -106,10 +106,6 @@ sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files
   sweep_config cfg = cfg_in;
   if (cfg.min_order < 3) cfg.min_order = 3;
   sweep_validate(cfg);
-  // MPFR: the working precision (digits + 8 guard digits) is set once, before any thread starts
-  // and before the run description (which names the precision) is formed.
-  std::optional<scoped_digits> digits_scope;
-  if constexpr (is_variable_precision_v<T>) digits_scope.emplace(cfg.digits + 8);
   detail::sweep_file_session session(cfg, files, sweep_run_json<T>(cfg), progress);
   sweep_row_formatter<T> format_row;
   if (!files.rows_path.empty())

@@ -6,9 +6,8 @@
 // back per-block results; the calling thread consumes the blocks strictly in enumeration order
 // (rows text, accumulator). A stop flag is honoured at block boundaries: blocks already taken are
 // finished and delivered, so the pairs done are always a prefix of the shard's enumeration, which
-// is what a resume state records (docs/formats.md). mpfr_real runs on one worker (Boost 1.74
-// keeps MPFR's default precision in one process-wide variable, which the lattice polish changes
-// temporarily).
+// is what a resume state records (docs/formats.md). Every real type runs on every worker: a
+// row never reads or writes Boost's process-wide MPFR precision (evaluate.hpp).
 #pragma once
 #include <atomic>
 #include <cstddef>
@@ -66,13 +65,11 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
 
 // sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (computation failures become
 // error rows, they do not stop the run); format_row, if set, appends a row's text to the
-// block's `rows` (it runs on the workers). Variable-precision types run on one worker.
+// block's `rows` (it runs on the workers).
 template <class T>
 sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
                         const std::function<void(sweep_block&)>& on_block,
                         const sweep_row_formatter<T>& format_row = {}) {
-  sweep_engine_options o = opt;
-  if constexpr (is_variable_precision_v<T>) o.threads = 1;
   auto evaluate = [&cfg, &format_row](const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk) {
     for (const auto& p : pairs) {
       auto row = sweep_evaluate<T>(p, cfg);
@@ -80,7 +77,7 @@ sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt
       if (format_row) format_row(blk.rows, row);
     }
   };
-  return sweep_run_blocks(cfg, o, evaluate, on_block);
+  return sweep_run_blocks(cfg, opt, evaluate, on_block);
 }
 
 // Compiled once in src/lib/sweep/instances.cpp for the compiled reals (core/real.hpp).
