@@ -52,7 +52,7 @@ class signal_scope {
 
 struct sweep_args {
   std::int64_t max_order = 0, min_order = 3;
-  std::string checks = "all", out, format, summary, shard = "0/1", state;
+  std::string checks = "default", out, format, summary, shard = "0/1", state;
   unsigned threads = 0;
   bool resume = false, quiet = false, json = false, certified = false;
   int digits = 15;
@@ -211,23 +211,25 @@ command_runner install_sweep(CLI::App& app) {
   auto sub = options(app).subcommand("sweep", "Check the paper's claims over every resonant pair up to an order");
   sub.add("--max-order", a->max_order, "largest order tau + sigma (required, 3..2^40)", show::required);
   sub.add("--min-order", a->min_order, "smallest order tau + sigma", show::with_default);
-  sub.add("--check", a->checks,
-          "comma-separated checks: degeneracy, paper-node, asy-bound, structure, cross-check, or all", show::with_default);
+  sub.add("--check,--checks", a->checks,
+          "comma-separated checks: degeneracy, paper-node, asy-bound, structure, cross-check (against the global "
+          "search, O(order) per pair: only when asked for); default: the first four; all: the five",
+          show::with_default);
   sub.add("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
   sub.add("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
   sub.add("--summary", a->summary, "summary as JSON to FILE (a shard run also writes FILE.values for merge)");
-  sub.add("--threads", a->threads, "worker threads (0: all cores; mpfr runs use 1)", show::with_default);
+  sub.add("--threads", a->threads, "worker threads (0: all cores)", show::with_default);
   sub.add("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'",
           show::with_default);
   sub.flag("--certified", a->certified,
            "decide degeneracy, paper-node, structure and asy-bound by exact integers and interval arithmetic "
-           "(the lattice theorem): a pass is a proof");
+           "(the lattice theorem): a pass is a proof, and the rows' values are the proved enclosures' midpoints");
   sub.flag("--resume", a->resume, "continue an interrupted run from its resume state");
   sub.add("--digits", a->digits,
           "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits",
           show::with_default);
   sub.add("--cross-check-max-order", a->cross_check_max_order,
-          "cross-check lattice vs global search up to this order (O(order) per pair)", show::with_default);
+          "with the cross-check: only pairs up to this order (at most 100000)", show::with_default);
   sub.add("--examples", a->examples, "violating pairs listed per check", show::with_default);
   sub.add("--state", a->state, "resume state file (default: OUT.resume, else SUMMARY.resume, else ./gyrores-sweep.resume)");
   sub.add("--checkpoint", a->checkpoint, "seconds between resume checkpoints (0: only when stopping)", show::with_default);

@@ -14,10 +14,11 @@ const char* const check_columns[sweep_check_count] = {"check_degeneracy", "check
 // The set named by one element of a check list.
 sweep_check_set parse_one_check(const std::string& name) {
   if (name == "all") return sweep_all_checks;
+  if (name == "default") return sweep_default_checks;
   for (int i = 0; i < sweep_check_count; ++i)
     if (name == check_names[i]) return 1u << i;
   throw usage_error("unknown check '" + name +
-                    "' (expected all, degeneracy, paper-node, asy-bound, structure, cross-check)");
+                    "' (expected default, all, degeneracy, paper-node, asy-bound, structure, cross-check)");
 }
 
 }  // namespace
@@ -26,7 +27,6 @@ const char* sweep_check_name(int i) { return check_names[i]; }
 const char* sweep_check_column(int i) { return check_columns[i]; }
 
 sweep_check_set sweep_parse_checks(const std::string& list) {
-  if (list == "all") return sweep_all_checks;
   sweep_check_set s = 0;
   std::size_t start = 0;
   while (start <= list.size()) {
@@ -56,6 +56,9 @@ void sweep_validate(const sweep_config& c) {
     throw usage_error("shard must be I/N with 0 <= I < N, got " + std::to_string(c.shard_index) + "/" +
                       std::to_string(c.shard_count));
   if (c.cross_check_max_order < 0) throw usage_error("cross_check_max_order must be >= 0");
+  if (c.cross_check_max_order > sweep_cross_check_max_order_limit)
+    throw usage_error("cross_check_max_order must be <= " + std::to_string(sweep_cross_check_max_order_limit) +
+                      " (the global search's limit), got " + std::to_string(c.cross_check_max_order));
 }
 
 }  // namespace gyrores
