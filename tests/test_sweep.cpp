@@ -1,5 +1,7 @@
-// Sweeps (sweep/, io/sweep_*.hpp): counts against independent counting, determinism across
-// thread counts, shards + merge = single run, resume after interruption, atomic files.
+// Sweeps (sweep/, io/sweep_*.hpp): counts against independent counting, rows against known
+// values and the independent high-precision reference (every working type), determinism across
+// thread counts (MPFR rows too, whatever the process-wide precision), shards + merge = single
+// run, resume after interruption (and refusal of states of earlier versions), atomic files.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -26,6 +28,7 @@
 #include <gyrores/sweep/engine.hpp>
 
 #include "testing/cli_run.hpp"
+#include "testing/high_precision_reference.hpp"
 
 using namespace gyrores;
 using gyrores::test::path_exists;
@@ -83,6 +86,11 @@ std::int64_t phi(std::int64_t n) {
 
 TEST_CASE("sweep: check lists parse; unknown names are usage errors", "[sweep]") {
   CHECK(sweep_parse_checks("all") == sweep_all_checks);
+  CHECK(sweep_parse_checks("default") == sweep_default_checks);
+  CHECK(sweep_parse_checks("degeneracy,paper-node,asy-bound,structure") == sweep_default_checks);
+  CHECK(sweep_parse_checks("default,cross-check") == sweep_all_checks);
+  CHECK_FALSE(sweep_has_check(sweep_config{}.checks, sweep_check::cross_check));  // opt-in
+  CHECK(sweep_config{}.checks == sweep_default_checks);
   CHECK(sweep_parse_checks("degeneracy,asy-bound") == ((1u << 0) | (1u << 2)));
   CHECK(sweep_parse_checks("cross-check") == (1u << 4));
   CHECK_THROWS_AS(sweep_parse_checks("degeneracy,bogus"), usage_error);
@@ -101,6 +109,10 @@ TEST_CASE("sweep: check lists parse; unknown names are usage errors", "[sweep]")
   c = config(10);
   c.cross_check_max_order = -1;
   CHECK_THROWS_WITH(sweep_validate(c), "cross_check_max_order must be >= 0");
+  c.cross_check_max_order = 100001;  // beyond the global search's limit: refused, not attempted
+  CHECK_THROWS_WITH(sweep_validate(c), "cross_check_max_order must be <= 100000 (the global search's limit), got 100001");
+  c.cross_check_max_order = 100000;
+  CHECK_NOTHROW(sweep_validate(c));
   CHECK(sweep_parse_format("jsonl") == sweep_format::jsonl);
   CHECK_THROWS_WITH(sweep_parse_format("xml"), "rows format must be csv or jsonl, got 'xml'");
 }
@@ -147,7 +159,9 @@ TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]"
   CHECK(sweep_total_pairs(3, M) == pairs);
   CHECK(sweep_total_pairs(1, M) == pairs);
 
-  auto acc = run_acc(config(M), engine(2));
+  sweep_config all = config(M);
+  all.checks = sweep_all_checks;
+  auto acc = run_acc(all, engine(2));
   CHECK(acc.pairs == pairs);
   CHECK(acc.degenerate == degenerate);
   CHECK(acc.errors.violations == 0);
@@ -156,8 +170,15 @@ TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]"
   CHECK(acc.checks[int(sweep_check::degeneracy)].violations == 0);
   CHECK(acc.checks[int(sweep_check::structure)].checked == pairs);
   CHECK(acc.checks[int(sweep_check::structure)].violations == 0);
-  CHECK(acc.checks[int(sweep_check::cross_check)].checked == nondeg);  // every order <= 300
+  CHECK(acc.checks[int(sweep_check::cross_check)].checked == nondeg);  // asked for: every order <= 300
   CHECK(acc.checks[int(sweep_check::cross_check)].violations == 0);
+  // By default the cross-check does not run; everything else is the same.
+  const auto by_default = run_acc(config(M), engine(2));
+  CHECK(by_default.checks[int(sweep_check::cross_check)].checked == 0);
+  for (auto c : {sweep_check::degeneracy, sweep_check::paper_node, sweep_check::asy_bound, sweep_check::structure}) {
+    CHECK(by_default.checks[int(c)].checked == acc.checks[int(c)].checked);
+    CHECK(by_default.checks[int(c)].violations == acc.checks[int(c)].violations);
+  }
   CHECK(acc.checks[int(sweep_check::asy_bound)].checked == small_x);
   CHECK(acc.checks[int(sweep_check::asy_bound)].violations == 0);
   CHECK(acc.checks[int(sweep_check::paper_node)].checked == nondeg);
@@ -176,16 +197,17 @@ TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]"
   CHECK(acc.sharp_constant.pair == sweep_pair_id{30, 29});
   CHECK(acc.sharp_constant.value == Approx(acc.asy_ratio_max.value * M_PI * M_PI * M_PI).epsilon(1e-12));
 
-  // Quantiles: exact order statistics of theta_first b/pi, recomputed here from the lattice.
+  // Quantiles: exact order statistics of the rows' t_first/proxy, sorted here.
   std::vector<double> ref;
   for (auto p : coprime_pairs(3, M))
-    if (!p.degenerate()) ref.push_back(inscribed_lattice<double>(p, 1.0).theta_first * double(p.delta()) / M_PI);
+    if (!p.degenerate()) ref.push_back(sweep_evaluate<double>(p, config(M)).t_ratio);
   std::sort(ref.begin(), ref.end());
   auto q = acc.quantiles();
   CHECK(q.count == ref.size());
-  CHECK(q.min == Approx(ref.front()).epsilon(1e-14));
-  CHECK(q.max == Approx(ref.back()).epsilon(1e-14));
-  CHECK(q.median == Approx(ref[(ref.size() - 1) / 2]).epsilon(1e-14));
+  CHECK(q.min == ref.front());
+  CHECK(q.max == ref.back());
+  CHECK(q.median == ref[(ref.size() - 1) / 2]);
+  CHECK(q.p10 == ref[(ref.size() - 1) / 10]);
 }
 
 TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
@@ -201,7 +223,11 @@ TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
   auto r65 = sweep_evaluate<double>(resonant_pair<std::int64_t>(6, 5), c);
   CHECK(r65.status[int(sweep_check::paper_node)] == sweep_status::pass);
   CHECK(r65.status[int(sweep_check::asy_bound)] == sweep_status::pass);
-  CHECK(r65.status[int(sweep_check::cross_check)] == sweep_status::pass);
+  CHECK(r65.status[int(sweep_check::cross_check)] == sweep_status::none);  // not asked for
+  sweep_config with_cross = c;
+  with_cross.checks = sweep_all_checks;
+  CHECK(sweep_evaluate<double>(resonant_pair<std::int64_t>(6, 5), with_cross).status[int(sweep_check::cross_check)] ==
+        sweep_status::pass);
   CHECK(r65.asy_error == Approx(1.16e-4).epsilon(0.01));  // printed in the paper (asymptotic.hpp)
   // (7,5): degenerate (delta = 2); R(pi/2) = 0, no paper-node verdict, ratio not collected.
   auto r75 = sweep_evaluate<double>(resonant_pair<std::int64_t>(7, 5), c);
@@ -217,15 +243,149 @@ TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
   CHECK_FALSE(r51.has_asy);  // x = 2/3 >= 1/2
 }
 
+namespace {
+
+// The row of p in T at `digits` (wider types: their own precision, mpfr_real digits + 8).
+template <class T> sweep_row<T> row_of(std::int64_t tau, std::int64_t sigma, unsigned digits = 17, bool certified = false) {
+  sweep_config c = config(3);
+  c.max_order = tau + sigma;
+  c.digits = digits;
+  c.certified = certified;
+  auto r = sweep_evaluate<T>(resonant_pair<std::int64_t>(tau, sigma), c);
+  REQUIRE_FALSE(r.failed);
+  return r;
+}
+
+// |v - ref| <= tol |ref|, in MPFR at the reference's precision.
+template <class T> bool near(const T& v, const mpfr_real& ref, const mpfr_real& tol) {
+  const mpfr_real x = real_to_mpfr(v);
+  return abs(x - ref) <= tol * abs(ref);
+}
+
+}  // namespace
+
+TEST_CASE("sweep: rows agree with the values of earlier versions and with the independent reference", "[sweep]") {
+  // The double rows of earlier versions (lattice method): r_res and theta_first to ~1 ulp.
+  auto r65 = row_of<double>(6, 5);
+  CHECK(r65.r_res == Approx(0.0507458057910334).epsilon(2e-15));
+  CHECK(r65.theta_first == Approx(2.9852847488375807).epsilon(2e-16));
+  CHECK(row_of<double>(9, 4).r_res == Approx(0.00871882504953).epsilon(1e-12));
+  CHECK(row_of<double>(5, 1).r_res == Approx(0.0738392921404633).epsilon(2e-15));
+  CHECK(row_of<double>(5, 1).minimiser_count == 4);
+  // Every working type against the high-precision reference (naive forms, every critical
+  // point), at its own precision: double 1e-15, long double 1e-18, float128 1e-32, mpfr 40
+  // digits 1e-39. Also through the enclosure path (certified rows) in double.
+  const std::vector<std::pair<std::int64_t, std::int64_t>> pairs = {{6, 5}, {9, 4}, {5, 1}, {2, 1}, {13, 7}, {101, 60},
+                                                                     {1000, 999}, {997, 3}, {7, 5}};
+  for (auto [tau, sigma] : pairs) {
+    INFO(tau << "," << sigma);
+    scoped_digits sd(60);
+    const auto ref = test::hp::hp_reference(big_int(tau), big_int(sigma), 50);
+    const bool degenerate = (tau - sigma) % 4 == 2;
+    auto check_row = [&](const auto& r, const char* tol) {
+      INFO(sweep_real_text(r.r_res, 45) << " " << sweep_real_text(r.theta_first, 45));
+      if (degenerate) CHECK(r.r_res == 0);
+      else CHECK(near(r.r_res, ref.r_res, mpfr_real(tol)));
+      CHECK(near(r.theta_first, ref.theta_first, mpfr_real(tol)));
+      CHECK(near(r.t_first, ref.t_first, mpfr_real(tol)));
+    };
+    check_row(row_of<double>(tau, sigma), "4e-15");
+    check_row(row_of<double>(tau, sigma, 17, true), "4e-15");
+    check_row(row_of<long double>(tau, sigma, 20), "1e-18");
+    check_row(row_of<float128>(tau, sigma, 30), "1e-32");
+    check_row(row_of<mpfr_real>(tau, sigma, 40), "1e-39");
+    check_row(row_of<mpfr_real>(tau, sigma, 40, true), "1e-39");
+  }
+  // Rows in MPFR carry the working precision's bits, not the process-wide default's.
+  sweep_config c40 = config(11);
+  c40.digits = 40;
+  REQUIRE(sweep_bits<mpfr_real>(c40) == 161);
+  for (unsigned global : {10u, 300u}) {
+    scoped_digits sd(global);
+    const auto r = row_of<mpfr_real>(6, 5, 40);
+    CHECK(mpfr_get_prec(r.r_res.backend().data()) == 161);
+    CHECK(mpfr_get_prec(r.asy_ratio.backend().data()) == 161);
+  }
+}
+
+TEST_CASE("sweep: rows beyond order 2^31 (int64 lobe products would overflow) are right", "[sweep]") {
+  // Below 2^31 double rows come from theorem_minimum_double, beyond from the enclosures; both
+  // against the reference in local mode (the row's theta_first is only its starting guess).
+  const std::int64_t big = std::int64_t(1) << 39;
+  const std::vector<std::pair<std::int64_t, std::int64_t>> pairs = {
+      {1073741824, 1073741823},                  // a = 2^31 - 1, b = 1
+      {1610612735, 536870912},                    // a = 2^31 - 1, b ~ a/2
+      {3 * (std::int64_t(1) << 32) + 1, (std::int64_t(1) << 32) + 1},  // a ~ 2^34, x ~ 1/2
+      {big + 1, big - 1 - 2 * 1000},              // delta = 2002 = 2 mod 4: degenerate
+      {big + 1, big - 3},                         // a = 2^40 - 2, b = 4 (delta = 0 mod 4)
+      {(std::int64_t(1) << 40) - 5, 4}};          // x -> 1
+  for (auto [tau, sigma] : pairs) {
+    const resonant_pair<std::int64_t> p(tau, sigma);
+    INFO(p.str());
+    sweep_config c = config(std::int64_t(p.order()));
+    const auto r = sweep_evaluate<double>(p, c);
+    REQUIRE_FALSE(r.failed);
+    CHECK(r.status[int(sweep_check::structure)] == sweep_status::pass);
+    CHECK(r.status[int(sweep_check::degeneracy)] == sweep_status::pass);
+    scoped_digits sd(40);
+    const auto ref = test::hp::hp_reference(big_int(tau), big_int(sigma), 25, mpfr_real(r.theta_first), true);
+    if (p.degenerate()) CHECK(r.r_res == 0);
+    else CHECK(near(r.r_res, ref.r_res, mpfr_real("4e-15")));
+    CHECK(near(r.theta_first, ref.theta_first, mpfr_real("4e-15")));
+  }
+}
+
+TEST_CASE("sweep: an MPFR sweep on 2 threads equals the same sweep on 1 thread, row for row", "[sweep]") {
+  temp_dir d("test_sweep");
+  sweep_config c = config(90);
+  c.digits = 40;
+  c.checks = sweep_all_checks;
+  std::vector<std::string> rows, summaries;
+  // The process-wide MPFR precision differs between the runs: the rows must not depend on it.
+  for (auto [threads, global] : {std::pair{1u, 20u}, std::pair{2u, 500u}, std::pair{2u, 20u}}) {
+    scoped_digits sd(global);
+    sweep_files f;
+    const std::string n = std::to_string(threads) + "_" + std::to_string(global);
+    f.rows_path = d / ("rows" + n + ".csv");
+    f.summary_path = d / ("sum" + n + ".json");
+    const auto rep = sweep_to_files<mpfr_real>(c, f, engine(threads, 16));
+    REQUIRE(rep.complete);
+    CHECK(rep.threads == threads);
+    rows.push_back(without_last_line(read_text(f.rows_path)));
+    summaries.push_back(sweep_summary_core(read_json(f.summary_path)).dump());
+    CHECK(mpfr_real::default_precision() == global);  // neither read into the rows nor changed
+  }
+  CHECK(rows[0].find("\"type\":\"mpfr(161 bits)\"") != std::string::npos);
+  CHECK(rows[1] == rows[0]);
+  CHECK(rows[2] == rows[0]);
+  CHECK(summaries[1] == summaries[0]);
+  CHECK(summaries[2] == summaries[0]);
+  // 40 significant digits printed for each real.
+  const auto ex = rows[0].find("\n6,5,");
+  REQUIRE(ex != std::string::npos);
+  CHECK(rows[0].find("5.074580579103337", ex) != std::string::npos);
+}
+
 TEST_CASE("sweep: paper-node verdicts agree with the minimiser thetas", "[sweep]") {
-  // Independent of the lobe-frame integers: the lobe of theta is round(a theta/(2 pi)) mod a,
-  // the paper's is round(a/(2b)) (both neighbours when a/(2b) is a half-integer).
+  // Independent of the lobe-frame integers and of the theorem: the minimisers of the
+  // high-precision reference (every critical point, naive forms), whose lobe is
+  // round(a theta/(2 pi)) mod a; the paper's is round(a/(2b)) (both neighbours when a/(2b) is a
+  // half-integer).
   sweep_config c = config(80);
   int checked = 0;
   for (auto p : coprime_pairs(3, 80)) {
     if (p.degenerate()) continue;
     const std::int64_t a = p.order(), b = p.delta();
-    auto lr = inscribed_lattice<double>(p, 1.0);
+    struct {
+      std::vector<double> minimisers;
+      double theta_first;
+    } lr;
+    {
+      scoped_digits sd(30);
+      const auto ref = test::hp::hp_reference(big_int(p.tau()), big_int(p.sigma()), 20);
+      for (const auto& t : ref.minimisers) lr.minimisers.push_back(double(t));
+      lr.theta_first = double(ref.theta_first);
+    }
     auto lobe = [&](double th) {
       std::int64_t k = std::llround(double(a) * th / (2 * M_PI));
       return ((k % a) + a) % a;
@@ -240,6 +400,7 @@ TEST_CASE("sweep: paper-node verdicts agree with the minimiser thetas", "[sweep]
     INFO(p.str());
     CHECK(row.first_at_paper_node == (in_paper(lr.theta_first) ? 1 : 0));
     CHECK(row.paper_lobe_min == (any ? 1 : 0));
+    CHECK(row.minimiser_count == int(lr.minimisers.size()));
     ++checked;
   }
   CHECK(checked == 809);  // non-degenerate pairs of order <= 80
@@ -265,7 +426,7 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
   // The summary file carries the documented keys.
   for (const char* k : {"pairs", "degenerate", "checks", "asy_ratio_max", "sharp_constant", "t_first_over_proxy", "seconds"})
     CHECK(s1.contains(k));
-  CHECK(s1["checks"].size() == 5);
+  CHECK(s1["checks"].size() == 4);  // the default checks: cross-check is opt-in
   for (auto& [name, t] : s1["checks"].items()) {
     CHECK(t.contains("violations"));
     CHECK(t.contains("examples"));
@@ -426,6 +587,49 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after a crash drops the rows wri
   // Same pairs as the CSV reference, in the same order.
   auto in = sweep_read_rows(f.rows_path);
   CHECK(in.acc.pairs == ref_summary["pairs"].get<std::uint64_t>());
+}
+
+TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or of other checks", "[sweep]") {
+  temp_dir d("test_sweep");
+  const sweep_config c = config(80);
+  sweep_files f;
+  f.summary_path = d / "old.json";
+  auto e = engine(1);
+  e.max_pairs = 50;
+  REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+  const std::string state = sweep_default_state_path(f);
+  json st = read_json(state);
+  const json run = st["run"];
+  REQUIRE(run["method"] == "lattice-theorem/1");
+  // A state written before the rows came from the theorem: no "method" in its run.
+  st["run"].erase("method");
+  write_file_atomically(state, st.dump());
+  f.resume = true;
+  auto message = [&](const sweep_config& cfg) {
+    try {
+      sweep_to_files<double>(cfg, f, e);
+    } catch (const usage_error& err) {
+      return std::string(err.what());
+    }
+    return std::string("no error");
+  };
+  const std::string old = message(c);
+  INFO(old);
+  CHECK(old.find("earlier version of gyrores") != std::string::npos);
+  CHECK(old.find('\n') == std::string::npos);
+  // Another set of checks (the default changed: cross-check is opt-in): the keys are named.
+  st["run"] = run;
+  st["run"]["checks"] = sweep_check_names(sweep_all_checks);
+  write_file_atomically(state, st.dump());
+  const std::string other = message(c);
+  INFO(other);
+  CHECK(other.find("it differs in checks") != std::string::npos);
+  CHECK(other.find('\n') == std::string::npos);
+  // The same checks asked for: it resumes.
+  sweep_config all = c;
+  all.checks = sweep_all_checks;
+  e.max_pairs = 0;
+  CHECK(sweep_to_files<double>(all, f, e).complete);
 }
 
 TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[sweep]") {

@@ -1,9 +1,10 @@
 // Certified sweeps (sweep/certified.hpp, `gyrores sweep --certified`): the exact R(pi/2) against
 // the paper's naive forms, the proved enclosures against the independent high-precision
-// references, the certified checks against the floating-point ones, and the checks failing when
-// the lattice values they vouch for are wrong.
+// references, the certified checks against the floating-point ones, the structure check failing
+// on wrong integers, and certified rows taking their values from the enclosures.
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
 #include <numeric>
 
@@ -75,6 +76,15 @@ TEST_CASE("certified sweep: 4 a^2 R(pi/2) is the naive forms' R(pi/2), and 0 exa
   CHECK(sweep_quarter_R_scaled((std::int64_t(1) << 40) + 1, 1) > 0);
 }
 
+namespace {
+
+// lo <= v <= hi for an enclosure X = [lo, hi] and a reference value v.
+bool holds(const fixed_mpfi& X, const mpfr_real& v) {
+  return mpfr_cmp(X.left(), v.backend().data()) <= 0 && mpfr_cmp(v.backend().data(), X.right()) <= 0;
+}
+
+}  // namespace
+
 TEST_CASE("certified sweep: the proved enclosures hold the independent high-precision references",
           "[sweep][certified]") {
   std::vector<resonant_pair<std::int64_t>> pairs;
@@ -82,37 +92,54 @@ TEST_CASE("certified sweep: the proved enclosures hold the independent high-prec
   for (auto [t, s] : std::vector<std::pair<std::int64_t, std::int64_t>>{
            {1000, 1}, {19999, 2}, {30001, 10000}, {1000001, 1000000}, {999999, 4}, {1000003, 1}})
     pairs.emplace_back(t, s);
-  for (const auto& p : pairs) {
-    INFO(p.str());
-    const auto pr = sweep_prove_pair(p, true);
-    REQUIRE(pr.enclosed);
-    REQUIRE(pr.note.empty());
-    scoped_digits sd(40);
-    const auto ref = test::hp::hp_reference(to_big(p.tau()), to_big(p.sigma()), 30);
-    CHECK(mpfr_real(pr.r_lo) <= ref.r_res);
-    CHECK(ref.r_res <= mpfr_real(pr.r_hi));
-    CHECK(mpfr_real(pr.theta_lo) <= ref.theta_first);
-    CHECK(ref.theta_first <= mpfr_real(pr.theta_hi));
-    if (p.delta_mod4() == 2) {
-      CHECK(pr.r_hi == 0);
-    } else {
-      CHECK(pr.r_hi - pr.r_lo <= std::ldexp(pr.r_lo, -40));  // narrow, not merely true
-      CHECK(pr.r_below_R_half_pi);
+  for (unsigned bits : {53u, 161u}) {
+    for (const auto& p : pairs) {
+      INFO(p.str() << " at " << bits << " bits");
+      sweep_proof_options opt;
+      opt.bits = bits;
+      opt.asy = true;
+      const auto pr = sweep_prove_pair(p, opt);
+      REQUIRE(pr.minimum);
+      REQUIRE(pr.note.empty());
+      const auto& M = *pr.minimum;
+      const std::int64_t a = std::int64_t(p.order());
+      const int extra = 2 * p.delta() < a ? 2 * int(std::bit_width(std::uint64_t(a))) + 8 : 0;
+      CHECK(M.prec == mpfr_prec_t(bits) + 32 + extra);  // the first precision suffices
+      scoped_digits sd(80);
+      const auto ref = test::hp::hp_reference(to_big(p.tau()), to_big(p.sigma()), 60);
+      CHECK(holds(M.theta_first, ref.theta_first));
+      CHECK(holds(M.t_first, ref.t_first));
+      const mpfr_real pi = real_pi<mpfr_real>(), proxy = pi * sqrt(mpfr_real(p.tau()) * mpfr_real(p.sigma())) / p.delta();
+      CHECK(holds(M.t_min_paper, proxy));
+      if (p.delta_mod4() == 2) {
+        CHECK(mpfr_zero_p(M.r_res.left()));
+        CHECK(mpfr_zero_p(M.r_res.right()));
+      } else {
+        CHECK(holds(M.r_res, ref.r_res));
+        CHECK(holds(M.t_ratio, ref.t_first / proxy));
+        CHECK(fixed_narrow(M.r_res, int(bits) + 8));  // narrow, not merely true
+        CHECK(pr.r_below_R_half_pi);
+      }
+      CHECK(fixed_narrow(M.theta_first, int(bits) + 8));
     }
-    CHECK(pr.theta_hi - pr.theta_lo <= std::ldexp(pr.theta_lo, -40));
   }
 }
 
 TEST_CASE("certified sweep: the enclosure of the paper's error holds the high-precision error", "[sweep][certified]") {
   // theta_c by the independent reference, theta_asy from u + tan u = s at high precision.
   for (auto [tau, sigma] : std::vector<std::pair<std::int64_t, std::int64_t>>{
-           {6, 5}, {30, 29}, {150, 149}, {9, 4}, {13, 7}, {101, 60}, {1000, 999}, {5001, 4000}, {1000001, 1000000}}) {
+           {6, 5}, {30, 29}, {150, 149}, {9, 4}, {13, 7}, {101, 60}, {1000, 999}, {5001, 4000}, {1000001, 1000000},
+           {5, 3}, {2, 1}, {1001, 500}}) {
     const resonant_pair<std::int64_t> p(tau, sigma);
     INFO(p.str());
     const std::int64_t a = std::int64_t(p.order()), b = p.delta();
     REQUIRE(2 * b < a);
-    const auto pr = sweep_prove_pair(p, true);
-    REQUIRE(pr.asy_enclosed);
+    sweep_proof_options opt;
+    opt.asy = true;
+    const auto pr = sweep_prove_pair(p, opt);
+    REQUIRE(pr.has_asy);
+    REQUIRE(pr.asy);
+    const auto& E = *pr.asy;
     const std::int64_t twob = 2 * b, rem = a % twob;
     const std::int64_t k = rem == b ? (a - b) / twob : (a + b) / twob;
     const auto c = test::hp::hp_lobe_root(to_big(tau), to_big(sigma), to_big(k), 40);
@@ -122,14 +149,37 @@ TEST_CASE("certified sweep: the enclosure of the paper's error holds the high-pr
     const mpfr_real ua = s < 0 ? mpfr_real(-u_plus_tan_root_hp(-s)) : u_plus_tan_root_hp(s);
     const mpfr_real theta_asy = 2 * (pi * mpfr_real(k) + ua) / A;
     const mpfr_real x = mpfr_real(b) / A;
-    const mpfr_real ratio = abs(c.theta - theta_asy) / (pi * pi * pi * x * x / A);
-    CHECK(mpfr_real(pr.asy_ratio_lo) <= ratio);
-    CHECK(ratio <= mpfr_real(pr.asy_ratio_hi));
-    // Narrow, not merely true: the second-order mean-value enclosure is tight to O(D^2),
-    // D = tan u_a - arctan(x tan u_a)/x ~ x^2 tan^3 u_a/3.
-    const double x2 = double(b) * double(b) / (double(a) * double(a));
-    CHECK(pr.asy_ratio_hi - pr.asy_ratio_lo <= (1e-12 + x2 * x2) * pr.asy_ratio_hi);
-    CHECK(pr.asy_ratio_hi < 0.0554);  // Lemma 7.1's sharper constant (docs/mathematics.md, P7)
+    const mpfr_real error = abs(c.theta - theta_asy), bound = pi * pi * pi * x * x / A;
+    CHECK(holds(E.bound, bound));
+    if (a - 2 * k * b == 0) {  // (5, 3): s = 0, u_a = u_c = 0 exactly
+      CHECK(error < mpfr_real("1e-40"));
+      CHECK(E.ratio.hi() == 0);
+    } else {
+      CHECK(holds(E.error, error));
+      CHECK(holds(E.ratio, error / bound));
+      CHECK(holds(E.constant, error * A / (x * x)));
+      CHECK(fixed_narrow(E.ratio, 53 + 8));  // narrow, not merely true
+    }
+    CHECK(E.ratio.hi() < 0.0554);  // Lemma 7.1's sharper constant (docs/mathematics.md, P7)
+    // The double row (Newton's method without cancellation, src/lib/sweep/evaluate.cpp) and the
+    // certified row (upper bounds) agree with it.
+    sweep_config cfg;
+    cfg.max_order = a;
+    const auto row = sweep_evaluate<double>(p, cfg);
+    REQUIRE(row.has_asy);
+    cfg.certified = true;
+    const auto cert = sweep_evaluate<double>(p, cfg);
+    CHECK(mpfr_real(cert.asy_bound) <= bound);
+    if (a - 2 * k * b == 0) {
+      CHECK(row.asy_ratio == 0);
+      CHECK(cert.asy_ratio == 0);
+      continue;
+    }
+    CHECK(abs(mpfr_real(row.asy_ratio) - error / bound) <= mpfr_real("1e-14") * (error / bound));
+    CHECK(abs(mpfr_real(row.asy_error) - error) <= mpfr_real("1e-14") * error);
+    CHECK(mpfr_real(cert.asy_ratio) >= error / bound);
+    CHECK(mpfr_real(cert.asy_error) >= error);
+    CHECK(cert.asy_ratio == Approx(row.asy_ratio).epsilon(1e-14));
   }
 }
 
@@ -169,27 +219,60 @@ TEST_CASE("certified sweep: the checks agree with the floating-point sweep and e
   CHECK_FALSE(sweep_summary_json(acc2, sweep_run_json<double>(plain), 0).contains("proved"));
 }
 
-TEST_CASE("certified sweep: structure fails when the lattice values are not the proved ones", "[sweep][certified]") {
-  const sweep_config cfg = certified_config(100);
-  for (auto [t, s] : std::vector<std::pair<std::int64_t, std::int64_t>>{{6, 5}, {5, 1}, {9, 4}, {7, 5}}) {
+TEST_CASE("certified sweep: structure fails when the theorem's integers are wrong", "[sweep][certified]") {
+  for (auto [t, s] : std::vector<std::pair<std::int64_t, std::int64_t>>{{6, 5}, {5, 1}, {9, 4}, {7, 5}, {13, 1}}) {
     const resonant_pair<std::int64_t> p(t, s);
     INFO(p.str());
-    const auto good = inscribed_lattice<double>(p, 1.0);
-    auto status = [&](const inscribed_result<double>& lr) {
-      auto r = detail::sweep_row_of<double>(p);
-      detail::sweep_check_certified(r, p, lr, cfg);
-      return r.status[int(sweep_check::structure)];
+    const auto pr = sweep_prove_pair(p);
+    const std::vector<lobe_frame<int128>> good = pr.lobes;
+    auto holds_for = [&](const std::vector<lobe_frame<int128>>& lobes, int m_min) {
+      return sweep_lobes_hold<int128>(p, m_min, lobes);
     };
-    CHECK(status(good) == sweep_status::pass);
+    REQUIRE(holds_for(good, pr.m_min));
+    CHECK(good.size() == (pr.m_min == 2 ? 4u : 2u));
+    CHECK_FALSE(holds_for(good, (pr.m_min + 1) % 3));  // another m_min
     auto bad = good;
-    bad.r_res = good.r_res == 0 ? 1e-300 : good.r_res * (1 + 1e-11);
-    CHECK(status(bad) == sweep_status::fail);
+    bad.pop_back();  // a minimiser missing
+    CHECK_FALSE(holds_for(bad, pr.m_min));
     bad = good;
-    bad.theta_first = good.theta_first * (1 - 1e-11);
-    CHECK(status(bad) == sweep_status::fail);
+    bad.push_back(good.front());  // one too many
+    CHECK_FALSE(holds_for(bad, pr.m_min));
     bad = good;
-    bad.minimisers.pop_back();
-    CHECK(status(bad) == sweep_status::fail);
+    bad[0].k += 1;  // a frame that does not satisfy its equation
+    CHECK_FALSE(holds_for(bad, pr.m_min));
+    bad = good;
+    std::swap(bad[0], bad[1]);  // out of theta order: the first minimiser is not first
+    CHECK_FALSE(holds_for(bad, pr.m_min));
+    bad = good;
+    bad[0] = lobe_frame_of(int128(p.order()), int128(p.delta()), bad[0].k, bad[0].j + 1);  // |m| != m_min
+    CHECK_FALSE(holds_for(bad, pr.m_min));
+  }
+}
+
+TEST_CASE("certified sweep: rows take their values from the enclosures, no other solver", "[sweep][certified]") {
+  sweep_config plain;
+  plain.max_order = 200;
+  sweep_config cert = plain;
+  cert.certified = true;
+  for (auto p : coprime_pairs(3, 200)) {
+    INFO(p.str());
+    const auto a = sweep_evaluate<double>(p, plain), b = sweep_evaluate<double>(p, cert);
+    REQUIRE_FALSE(b.failed);
+    CHECK(b.r_res == Approx(a.r_res).epsilon(4e-15));
+    CHECK(b.theta_first == Approx(a.theta_first).epsilon(4e-16));
+    CHECK(b.t_first == Approx(a.t_first).epsilon(4e-16));
+    CHECK(b.t_min_paper == Approx(a.t_min_paper).epsilon(4e-16));
+    CHECK(b.minimiser_count == a.minimiser_count);
+    CHECK(b.status == a.status);
+    // The values are the enclosures' midpoints rounded to double.
+    const auto pr = sweep_prove_pair(p);
+    REQUIRE(pr.minimum);
+    const auto& M = *pr.minimum;
+    fixed_mpfr mid(M.prec);
+    mpfi_mid(mid, M.theta_first);
+    CHECK(mpfr_get_d(mid, MPFR_RNDN) == b.theta_first);
+    mpfi_mid(mid, M.r_res);
+    CHECK(mpfr_get_d(mid, MPFR_RNDN) == b.r_res);
   }
 }
 

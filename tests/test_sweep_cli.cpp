@@ -76,6 +76,11 @@ TEST_CASE("sweep CLI: summary on stdout and as JSON; rows file", "[cli][sweep]")
   CHECK(j["asy_ratio_max"]["pair"] == json::array({30, 29}));
   CHECK(j["t_first_over_proxy"]["median"].is_string());
   CHECK(j["seconds"].is_number());
+  // The default checks: cross-check (the global search) only when asked for.
+  CHECK(j["checks"].size() == 4);
+  CHECK_FALSE(j["checks"].contains("cross-check"));
+  CHECK(r.out.find("cross-check") == std::string::npos);
+  CHECK(j["run"]["method"] == "lattice-theorem/1");
   CHECK(path_exists(d / "rows.csv"));
   CHECK_FALSE(path_exists(d / "rows.csv.part"));
   CHECK_FALSE(path_exists(d / "rows.csv.resume"));
@@ -92,6 +97,21 @@ TEST_CASE("sweep CLI: summary on stdout and as JSON; rows file", "[cli][sweep]")
   CHECK(row["check_degeneracy"] == "pass");
   CHECK(row["check_asy_bound"].is_null());
   CHECK(row["asy_ratio"].is_null());
+  // Asked for, the cross-check runs (orders <= 300 by default).
+  auto r3 = run("sweep --max-order 40 --quiet --check all --json");
+  REQUIRE(r3.status == 0);
+  const auto j3 = json::parse(r3.out);
+  CHECK(j3["checks"]["cross-check"]["checked"] == j3["pairs"].get<int>() - j3["degenerate"].get<int>());
+  CHECK(j3["checks"]["cross-check"]["violations"] == 0);
+  // MPFR rows on every thread asked for, the same summary as on one.
+  auto m1 = run("sweep --max-order 60 --digits 40 --threads 1 --quiet --json");
+  auto m2 = run("sweep --max-order 60 --digits 40 --threads 2 --quiet --json");
+  REQUIRE(m1.status == 0);
+  REQUIRE(m2.status == 0);
+  const auto s1 = json::parse(m1.out), s2 = json::parse(m2.out);
+  CHECK(s2["run"]["threads"] == 2);
+  CHECK(s2["run"]["type"] == "mpfr(161 bits)");
+  CHECK(gyrores::sweep_summary_core(s1) == gyrores::sweep_summary_core(s2));
 }
 
 TEST_CASE("sweep CLI: 4 shards merged by 'gyrores merge' equal the single run", "[cli][sweep]") {
@@ -297,6 +317,7 @@ TEST_CASE("sweep CLI: bad input exits 2 with one line on stderr", "[cli][sweep]"
   const std::vector<std::string> cases = {"sweep --max-order 2", "sweep --max-order 50 --min-order 60", "sweep --max-order 50 --shard 4/4",
         "sweep --max-order 50 --shard x", "sweep --max-order 50 --check bogus", "sweep --max-order 50 --format xml --out x",
         "sweep --max-order 50 --digits 0", "sweep --max-order 50 --resume --summary " + d / "none.json",
+        "sweep --max-order 50 --check all --cross-check-max-order 200000",
         "merge " + d / "nothing.csv"};
   for (const auto& args : cases) {
     auto r = run(args);
