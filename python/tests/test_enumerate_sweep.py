@@ -42,10 +42,28 @@ def test_sweep_rows_and_summary():
 
 
 def test_sweep_summary_matches_cli(cli_json):
-    _, summary = gyrores.sweep(80, rows=False)
+    # The CLI's default checks leave out the cross-check (the global search): "default".
+    _, summary = gyrores.sweep(80, rows=False, checks="default")
     expected = cli_json("sweep", "--max-order", "80", "--quiet")
-    for key in ("pairs", "degenerate", "checks", "errors"):
+    assert "cross-check" not in expected["checks"]
+    for key in ("pairs", "degenerate", "checks", "errors", "asy_ratio_max", "t_first_over_proxy"):
         assert summary[key] == expected[key], key
+    _, everything = gyrores.sweep(80, rows=False, checks="all")
+    assert everything["checks"]["cross-check"]["checked"] == everything["pairs"] - everything["degenerate"]
+    assert everything["checks"]["cross-check"]["violations"] == 0
+
+
+def test_sweep_rows_known_values():
+    np = pytest.importorskip("numpy")
+    rows, _ = gyrores.sweep(13, checks="default")
+    pairs = [(int(t), int(s)) for t, s in zip(rows["tau"], rows["sigma"])]
+    r = {p: i for i, p in enumerate(pairs)}
+    assert rows["r_res"][r[(6, 5)]] == pytest.approx(0.0507458057910334, rel=2e-15)
+    assert rows["theta_first"][r[(6, 5)]] == pytest.approx(2.9852847488375807, rel=2e-16)
+    assert rows["r_res"][r[(9, 4)]] == pytest.approx(0.00871882504953, rel=1e-12)
+    assert rows["r_res"][r[(5, 1)]] == pytest.approx(0.0738392921404633, rel=2e-15)
+    assert rows["minimiser_count"][r[(5, 1)]] == 4
+    assert (rows["check_cross_check"] == -1).all()  # not run
 
 
 def test_sweep_progress_exception_stops_the_sweep():
