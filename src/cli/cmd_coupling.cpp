@@ -59,7 +59,10 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
      << "  inf H_q       " << r.inf_all_time << (r.inf_attained ? "" : " (not attained)") << "\n"
      << "  because       " << r.inf_reason << "\n";
   convergents_text(os, r.convergents);
-  os << "  " << a.digits << " digits, each verified\n";
+  os << "  " << a.digits << " digits, each the correct rounding of a proved enclosure"
+     << (r.horizon_proved ? "" : ", except the minimum over [0, T] and its time: verified (two runs at different "
+                                 "precisions agree), not proved")
+     << "\n";
   return os.str();
 }
 

@@ -134,6 +134,7 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["h_min_horizon"] = r.h_min_horizon;
   j["t_min_horizon"] = r.t_min_horizon;
   j["min_at_horizon_end"] = r.min_at_horizon_end;
+  j["horizon_proved"] = r.horizon_proved;
   j["horizon_source"] = r.horizon_source;
   j["inf_all_time"] = r.inf_all_time;
   j["inf_attained"] = r.inf_attained;

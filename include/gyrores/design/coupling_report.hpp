@@ -54,12 +54,13 @@ struct coupling_convergent {
 struct coupling_report {
   coupling_spec spec;
   bool n_negative = false;       // n was given < 0 (it mirrors the motion; |n| is used)
-  std::string abs_n, t_min_paper;  // |n| and the paper's proxy pi/|n|
+  std::string abs_n, t_min_paper;  // |n| and the paper's proxy pi/|n| (proved)
   std::optional<resonant_pair<big_int>> pair;        // when resonant
   std::optional<pair_report> pair_values;   // its analysis, proved
   // min of H_q over [0, T] and its first time: the pair's H_min and t_first when the horizon
   // contains t_first (decided at 256 bits), else from horizon_minimum.
   std::string h_min_horizon, t_min_horizon;
+  bool horizon_proved = true;    // from the pair analysis (proved); false: verified digits, not proved
   bool min_at_horizon_end = false;
   std::string horizon_source;    // one line saying which of the two, and how
   // inf of H_q over all time: the pair's H_min (attained) or 0 (not attained, dense torus line).

@@ -1,7 +1,9 @@
 // include/gyrores/design/coupling_report.hpp
 #include <gyrores/design/coupling_report.hpp>
 
+#include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/verified_digits.hpp>
 #include <gyrores/model/resonant.hpp>
 
@@ -43,32 +45,47 @@ bool horizon_covers_first(const resonant_pair<big_int>& p, const big_rational& h
                       p.str());
 }
 
-// |n|, pi/|n| and, unless the pair analysis answers it, the minimum over [0, T]: one verified run.
-void verify_coupling_numbers(coupling_report& r, const coupling_report_options& opt, bool covers_first) {
-  bool at_end = false;
-  std::size_t crit = 0;
-  const exact_horizon horizon{opt.horizon, false};
-  const verified_run run = compute_verified_per_type(opt.digits, false, [&](auto tag) {
-    using T = decltype(tag);
-    const T n = r.spec.abs_n<T>();
-    real_fields f;
-    put_field(f, "n", n);
-    put_field(f, "t_min_paper", T(real_pi<T>() / n));
-    if (!covers_first) {
-      auto h = put_horizon_fields<T>(f, r.spec, horizon, "_horizon", false);
-      at_end = h.at_horizon_end;
-      crit = h.critical_points;
-    }
-    return f;
-  });
-  r.abs_n = run.fields.at("n")[0];
-  r.t_min_paper = run.fields.at("t_min_paper")[0];
+// |n| = sqrt(n^2) and pi/|n|, proved: the correct roundings of enclosures (the precision doubles
+// until both ends round alike; sqrt(n^2) is rounded once from the rational when n^2 is a square).
+void prove_coupling_numbers(coupling_report& r, unsigned digits) {
+  const big_rational& n2 = r.spec.n2;
+  big_int rp, rq;
+  const bool rational = int_is_square(big_int(numerator(n2)), rp) && int_is_square(big_int(denominator(n2)), rq);
+  for (unsigned bits = digits10_to_bits(digits) + 32; bits <= (1u << 20); bits *= 2) {
+    fixed_mpfi n(bits), t(bits);
+    mpfi_set_q(n, n2.backend().data());
+    mpfi_sqrt(n, n);
+    mpfi_const_pi(t);
+    mpfi_div(t, t, n);
+    if (rational) r.abs_n = format_rational_scientific(big_rational(rp, rq), digits);
+    else if (!enclosure_rounding(n.left(), n.right(), digits, r.abs_n)) continue;
+    if (enclosure_rounding(t.left(), t.right(), digits, r.t_min_paper)) return;
+  }
+  throw compute_error("coupling: |n| or pi/|n| was not decided to " + std::to_string(digits) + " digits");
+}
+
+// |n| and pi/|n| (proved) and, unless the pair analysis answers it, the minimum over [0, T]:
+// verified (two runs, core/verified_digits.hpp), not proved.
+void coupling_numbers(coupling_report& r, const coupling_report_options& opt, bool covers_first) {
+  prove_coupling_numbers(r, opt.digits);
   if (covers_first) {
     r.h_min_horizon = r.pair_values->h_min.value;
     r.t_min_horizon = r.pair_values->t_first.value;
     r.horizon_source = "the pair analysis: the horizon contains t_first, where the global minimum H_min is first attained";
     return;
   }
+  bool at_end = false;
+  std::size_t crit = 0;
+  const exact_horizon horizon{opt.horizon, false};
+  const verified_run run = compute_verified_per_type(opt.digits, false, [&](auto tag) {
+    using T = decltype(tag);
+    real_fields f;
+    auto h = put_horizon_fields<T>(f, r.spec, horizon, "_horizon", false);
+    at_end = h.at_horizon_end;
+    crit = h.critical_points;
+    return f;
+  });
+  r.horizon_proved = false;
   r.h_min_horizon = run.fields.at("h_min_horizon")[0];
   r.t_min_horizon = run.fields.at("t_min_horizon")[0];
   r.min_at_horizon_end = at_end;
@@ -136,7 +153,7 @@ coupling_report analyse_coupling(const coupling_spec& spec, const coupling_repor
     r.pair_values = prove_pair_values(*r.pair, opt.digits);
     covers_first = horizon_covers_first(*r.pair, opt.horizon);
   }
-  verify_coupling_numbers(r, opt, covers_first);
+  coupling_numbers(r, opt, covers_first);
   set_infimum(r);
   r.convergents = verified_convergents(spec, opt.convergents, opt.digits);
   return r;
