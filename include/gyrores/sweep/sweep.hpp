@@ -3,6 +3,9 @@
 // This header gathers the folder, one job per header:
 //   checks.hpp     the checks, their names and the sweep's configuration;
 //   real_text.hpp  reals as rows and summaries print them;
+//   certified.hpp  one pair's proved enclosures and integer facts (the theorem, MPFI at an
+//                  explicit precision): the values of every row wider than double, the proofs
+//                  of --certified;
 //   evaluate.hpp   one pair: its row (the exact quantities and each check's verdict);
 //   summary.hpp    what the summary keeps of a row, the mergeable accumulator, exact quantiles;
 //   count.hpp      the number of pairs of a sweep and of a shard, without enumerating them;
