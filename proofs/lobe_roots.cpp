@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include <gyrores/core/interval_newton.hpp>
+#include "reference/interval_newton.hpp"
 #include "reference/asymptotic.hpp"
 
 namespace gyrores::proofs {

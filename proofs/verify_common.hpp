@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/core/interval.hpp>
+#include "reference/interval.hpp"
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/model/pair.hpp>
 

@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <gyrores/core/decimal.hpp>
-#include <gyrores/core/interval.hpp>
+#include "reference/interval.hpp"
 #include "reference/lattice.hpp"
 #include <gyrores/model/enumerate.hpp>
 

@@ -1,12 +1,12 @@
-// The interval Newton of core/interval_newton.hpp: it encloses simple roots (also tiny ones and
+// The interval Newton of tests/reference/interval_newton.hpp: it encloses simple roots (also tiny ones and
 // from a poor guess), returns nothing for a double root, for no root and for a spent budget, and
 // its enclosures contain the root computed independently in MPFR. (Comparisons of MPFR values
 // are checked as bool: Catch would print the operands through Boost's str(), which GCC 12 warns
 // about with -Wrestrict.)
 #include <catch2/catch.hpp>
 
-#include <gyrores/core/interval.hpp>
-#include <gyrores/core/interval_newton.hpp>
+#include "reference/interval.hpp"
+#include "reference/interval_newton.hpp"
 
 using namespace gyrores;
 

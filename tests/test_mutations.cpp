@@ -4,7 +4,7 @@
 // notices would be a proof step that the tests run without really testing.
 #include <catch2/catch.hpp>
 
-#include <gyrores/core/interval.hpp>
+#include "reference/interval.hpp"
 
 #include <string>
 #include <vector>

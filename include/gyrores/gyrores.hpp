@@ -3,13 +3,11 @@
 // The skeptic's cross-validation (search/: the global search over every critical point) is on
 // no default path and not included here: include <gyrores/search/...> for it.
 #pragma once
-// core: errors, integers, reals, decimal text, intervals, roots, precision and verified digits
+// core: errors, integers, reals, decimal text, fixed-precision MPFR/MPFI, roots, precision and verified digits
 #include <gyrores/core/error.hpp>            // usage_error (bad input), compute_error (could not compute honestly)
 #include <gyrores/core/integer.hpp>          // int64/int128/big_int helpers: gcd, v2, inverse mod
 #include <gyrores/core/real.hpp>             // real types (double ... mpfr_real, mpfi_real), conversions
 #include <gyrores/core/decimal.hpp>          // exact decimal output, Ziv rounding test, decimal input
-#include <gyrores/core/interval.hpp>         // MPFI helpers with tri-state decisions
-#include <gyrores/core/interval_newton.hpp>  // the interval Newton that proves a unique root
 #include <gyrores/core/rational.hpp>         // exact rationals: parsing, printing
 #include <gyrores/core/roots.hpp>            // the TOMS 748 wrapper, safeguarded Newton
 #include <gyrores/core/precision.hpp>        // the working type chosen from the digits asked

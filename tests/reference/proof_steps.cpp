@@ -4,7 +4,7 @@
 #include <atomic>
 
 #include <gyrores/core/error.hpp>
-#include <gyrores/core/interval_newton.hpp>
+#include "reference/interval_newton.hpp"
 
 #include "reference/lattice.hpp"
 #include "reference/mutation.hpp"

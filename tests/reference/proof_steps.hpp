@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include <gyrores/core/interval.hpp>
+#include "reference/interval.hpp"
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
 
@@ -52,7 +52,7 @@ I rayleigh_lower(const constants& k, const I& c2_lower);
 // certifies `digits` digits.
 bool meets_digits(const I& x, unsigned digits);
 
-// Step "local-root": interval Newton (core/interval_newton.hpp, 40 steps) on f in frame mu
+// Step "local-root": interval Newton (tests/reference/interval_newton.hpp, 40 steps) on f in frame mu
 // from a point guess; scale > 0 sets the first radius (typically |guess|). Returns X with a
 // unique root of q' in X, or nullopt if not proved.
 std::optional<I> certify_root(const constants& k, const I& mu, const P& guess, const P& scale);

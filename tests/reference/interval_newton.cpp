@@ -1,7 +1,7 @@
-// The interval Newton of core/interval_newton.hpp.
-#include <gyrores/core/interval_newton.hpp>
+// The interval Newton of tests/reference/interval_newton.hpp.
+#include "reference/interval_newton.hpp"
 
-#include <gyrores/core/interval.hpp>
+#include "reference/interval.hpp"
 
 namespace gyrores {
 
