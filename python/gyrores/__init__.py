@@ -213,7 +213,7 @@ def enumerate_pairs(max_order, min_order=3):
     return _gyrores._enumerate_pairs(max_order, min_order)
 
 
-def sweep(max_order, min_order=3, rows=True, progress=None, checks="all", threads=0, cross_check_max_order=300,
+def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", threads=0, cross_check_max_order=300,
           examples=5):
     """Check the paper's claims on every pair with min_order <= tau + sigma <= max_order (in double).
 
@@ -223,8 +223,9 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="all", thread
     rows=False; summary the dict of ``gyrores sweep --json``. The work runs on `threads` workers
     (0: every core) with the GIL released; progress, if given, is called as progress(done, total)
     after every block of pairs, and an exception it raises (or Ctrl-C) stops the sweep.
-    checks: "all" or a comma-separated list (degeneracy, paper-node, asy-bound, structure,
-    cross-check).
+    checks: "default" (the paper's four claims), "all" (with the opt-in cross-check against the
+    global search, order <= cross_check_max_order) or a comma-separated list (degeneracy,
+    paper-node, asy-bound, structure, cross-check).
     """
     columns, summary = _gyrores._sweep(max_order, min_order, rows, progress, checks, threads,
                                        cross_check_max_order, examples)

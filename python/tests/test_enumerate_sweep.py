@@ -78,7 +78,7 @@ def test_sweep_progress_exception_stops_the_sweep():
 
 
 def test_calls_from_several_threads_agree():
-    # The GIL is released during library calls and a library mutex serialises them.
+    # The GIL is released during library calls, which run in parallel (no shared precision).
     results = {}
 
     def work(key, fn):

@@ -17,7 +17,7 @@
 //     H(u) < mu iff x tan u < tan w. Paper: g(u) = u + tan u increases on (-pi/2, pi/2). Both
 //     sides are enclosed in MPFI from Arb's enclosures of the centre's tangents, the addition
 //     formula and the remainder |r| <= |d|^5/7 for |d| <= 1/4 (tan's Taylor coefficients are
-//     positive, so 0 <= r <= d^5 (tan(1/4) - 1/4 - 1/192) 4^4 < 0.137 d^5 for d >= 0; r is odd).
+//     positive, so 0 <= r <= d^5 (tan(1/4) - 1/4 - 1/192) 4^5 < 0.137 d^5 for d >= 0; r is odd).
 //  3. From the bracket: T = tan([lo, hi]) (tan increases), and for the theorem
 //     sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u, increasing in t:
 //     r_res = v sqrt(G(u*)) over T (theorem_radius).

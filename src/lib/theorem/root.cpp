@@ -307,7 +307,10 @@ unsigned theorem_scout(root_enclosure& r, const theorem_constants& K) {
     mpfi_mid(x, K.x);
     mpfi_mid(mu, r.mu);
     mpfr_set_d(r.u, theorem_root_double(mpfr_get_d(x, MPFR_RNDN), mpfr_get_d(mu, MPFR_RNDN)), MPFR_RNDN);
-    return 50;
+    // Claimed accuracy: 32 bits, not double's 53: near pi/2 tan's conditioning leaves the scout
+    // about 2^-39 (6/5, m = 5), and a ladder that assumes more bits than it has takes too few
+    // Newton steps and fails its proof (safe, but at every other precision).
+    return 32;
   }
   fr x(64), mu(64), lo(64), hi(64), t(64), xt(64);
   mpfi_mid(x, K.x);
@@ -333,7 +336,7 @@ unsigned theorem_scout(root_enclosure& r, const theorem_constants& K) {
     mpfr_mul(df, df, x, MPFR_RNDN);
   });
   mpfr_set(r.u, u, MPFR_RNDN);
-  return 56;
+  return 40;
 }
 
 // The paper's root of u + tan u = s in r.u, likewise.
@@ -342,7 +345,7 @@ unsigned paper_scout(root_enclosure& r) {
     fr s(53);
     mpfi_mid(s, r.mu);
     mpfr_set_d(r.u, paper_root_double(mpfr_get_d(s, MPFR_RNDN)), MPFR_RNDN);
-    return 50;
+    return 32;  // as theorem_scout
   }
   fr s(64), lo(64), hi(64), t(64), u(64);
   mpfi_mid(s, r.mu);
@@ -358,7 +361,7 @@ unsigned paper_scout(root_enclosure& r) {
     mpfr_add_ui(df, df, 2, MPFR_RNDN);
   });
   mpfr_set(r.u, u, MPFR_RNDN);
-  return 56;
+  return 40;
 }
 
 // ---- brackets ----
