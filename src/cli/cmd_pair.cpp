@@ -3,6 +3,7 @@
 // rounding of a proved enclosure.
 #include <sstream>
 
+#include <gyrores/core/rational.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/theorem/lobes.hpp>
@@ -79,6 +80,7 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const pair_report&
 std::string run_pair(const pair_args& args) {
   check_digits_flag(args.digits, 1, int(report_digits_max));
   const resonant_pair<big_int> p = parse_pair_arguments(args.tau, args.sigma);
+  if (!(parse_rational(args.qdot0, "--qdot0") > 0)) throw usage_error("--qdot0 must be > 0, got " + args.qdot0);
   pair_report_options opt;
   opt.digits = unsigned(args.digits);
   opt.qdot0 = args.qdot0;
