@@ -26,7 +26,7 @@
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
-#include <gyrores/design/coupling_report.hpp>  // the coupling analysis with verified digits
+#include <gyrores/design/coupling_report.hpp>  // the coupling analysis (proved but for the horizon minimum)
 #include <gyrores/design/design.hpp>         // design problems (absorb/contain) and the Pareto front
 #include <gyrores/design/figures.hpp>        // data behind the figures (trajectory, envelope, circles, energies)
 #include <gyrores/sweep/sweep.hpp>           // sweeps over all pairs up to an order: checks, mergeable summary

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include <gyrores/design/design.hpp>
+#include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/pair_report.hpp>
 #include <gyrores/io/json.hpp>
 
@@ -22,7 +23,7 @@ struct design_args {
   bool proxy = false, json = false;
 };
 
-// The ranked pairs with their verified values (verified for the reported pairs only).
+// The ranked pairs with their proved values (proved for the reported pairs only).
 using design_rows = std::vector<std::pair<resonant_pair<big_int>, pair_report>>;
 
 std::string constraint_text(const design_args& a, const design_options& o) {
@@ -111,7 +112,7 @@ std::string design_text(const design_args& a, const design_options& o, const des
        << ": the proxy chose a pair that does not meet the time constraint\n";
   runners_up_text(os, rows);
   os << "  ranking: objective, then smaller time, then smaller order; " << a.digits
-     << " digits, each verified (lattice method, cross-checked against the global search)\n";
+     << " digits, each the correct rounding of a proved enclosure (" << lattice_theorem_id << ")\n";
   return os.str();
 }
 

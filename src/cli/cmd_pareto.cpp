@@ -24,7 +24,7 @@ struct pareto_args {
   int digits = 10;
 };
 
-// The front with its verified values, and the files written.
+// The front with its proved values, and the files written.
 struct pareto_run {
   pareto_orientation orientation;
   std::vector<design_point> pairs, front;

@@ -1,5 +1,5 @@
 // gyrores report [--out DIR] [--pareto-order M] [--sweep-order S] [--digits D]
-// The newcomer's main job: DIR/REPORT.md with the paper's examples recomputed (verified digits),
+// The newcomer's main job: DIR/REPORT.md with the paper's examples recomputed (proved digits),
 // the two design cases, the Pareto front, a validation sweep and the figures (PNG + SVG, with
 // data and gnuplot scripts). Every file is written atomically (temporary name, then rename);
 // REPORT.md is written last and links only files that exist. Prints the report's path.

@@ -131,7 +131,7 @@ template <class T> T real_pi() {
   }
 }
 
-// sin x and cos x of one argument, together: the lattice method's evaluations need both of two
+// sin x and cos x of one argument, together: the model's lobe-frame evaluations need both of two
 // angles. Generic types: std/Boost sin and cos (GCC fuses them into one sincos for double).
 // mpfr_real: one fused evaluation by Arb (src/lib/core/real_sin_cos.cpp), results at the current
 // default precision and correctly rounded (Ziv's test on Arb's ball, MPFR when undecided), so

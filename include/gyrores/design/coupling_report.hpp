@@ -1,4 +1,4 @@
-// What gyrores reports about any coupling n (`gyrores coupling`), with verified digits: the exact
+// What gyrores reports about any coupling n (`gyrores coupling`): the exact
 // resonance test, the pair analysis when resonant, the minimum of H_q over a horizon [0, T] and
 // its first time, the infimum over all time, and the continued-fraction convergents of W1/W2 as
 // resonant pairs (coupling.hpp has the mathematics).

@@ -3,7 +3,8 @@
 // scatter. Only data: drawing (gnuplot) lives in the CLI (src/cli/gnuplot.hpp, src/cli/plots.hpp).
 //
 // Everything here is for plotting, in double. The marked values (r_res, t_first) come from the
-// exact solvers (lattice method / degenerate formula for pairs, horizon_minimum for any n); the
+// exact solvers (the lattice theorem in double for pairs, theorem/minimum.hpp; horizon_minimum
+// for any n); the
 // curves are plain samples, accurate to plotting resolution. The maximal circle has radius
 // qdot0: H_q(0) = qdot0^2/2 = H, the whole energy, so max sqrt(q^2 + q'^2) = qdot0, attained at
 // t = 0 where the trajectory touches the envelope at (0, qdot0).

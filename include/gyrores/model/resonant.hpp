@@ -39,14 +39,14 @@ template <class T> struct resonant_constants {
 };
 
 // Which members resonant_constants_from computes: all, or only those the lobe-frame functions
-// of this header and the lattice method use (v, x, s1mx2, sqrt_ts, pi; n, omega1, omega2 and
+// of this header use (v, x, s1mx2, sqrt_ts, pi; n, omega1, omega2 and
 // rho0 are then left at 0). At 10000 digits the four divisions and square roots saved cost
 // about a third of one sine-cosine pair.
 enum class constants_scope { all, lobe };
 
 // From the pair's integers in any integer type J (int64, int128, big_int): a = tau + sigma,
-// b = tau - sigma. The lattice method passes them as int128 when they fit, so that a pair held
-// as big_int (e.g. (10^30+1, 10^30)) costs no GMP arithmetic here.
+// b = tau - sigma. Callers pass them as int128 when they fit, so that a pair held as big_int
+// (e.g. (10^30+1, 10^30)) costs no GMP arithmetic here.
 template <class T, class J>
 resonant_constants<T> resonant_constants_from(const J& a_i, const J& b_i, const J& tau_i, const J& sigma_i, const T& v,
                                               constants_scope scope = constants_scope::all) {

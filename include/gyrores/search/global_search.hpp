@@ -23,8 +23,8 @@
 namespace gyrores {
 
 struct global_search_options {
-  // Documented limit: 4 tau root solves; 10^5 takes ~0.5 s in double. Larger orders belong
-  // to the lattice method.
+  // Documented limit: 4 tau root solves; 10^5 takes ~0.5 s in double. Larger orders are the
+  // theorem's alone (theorem/).
   std::int64_t max_order = 100000;
 };
 
@@ -69,7 +69,7 @@ inscribed_result<T> inscribed_global(const resonant_pair<I>& p, const T& v, cons
   if (p.degenerate()) return inscribed_degenerate<T>(p, v);
   if (to_big(p.order()) > big_int(opt.max_order))
     throw compute_error("global search is limited to order tau + sigma <= " + std::to_string(opt.max_order) +
-                        "; pair " + p.str() + " needs the lattice method");
+                        "; pair " + p.str() + " is beyond the cross-validation (gyrores pair proves it)");
   using L = int128;
   const L tau = L(std::int64_t(p.tau())), a = L(std::int64_t(p.order())), b = L(std::int64_t(p.delta()));
   const L den = 2 * tau;

@@ -16,12 +16,14 @@ std::string intro_section(unsigned digits) {
      << "Recomputes the examples of *Shaping Energy Exchange with Gyroscopic Interconnections* (Juchem and "
         "Loccufier), Sections IV-V and Figures 1-4, with gyrores. All values are for the impulse qdot0 = 1 "
         "(r_res is proportional to qdot0; times do not depend on it). Every real number printed here has "
-     << digits << " significant digits, each verified by recomputation at higher precision (the `gyrores pair` "
-        "contract); `r_res = 0` for delta = 2 mod 4 is exact (integer arithmetic). Certified enclosures: not in "
-        "this report (interval proofs of single pairs: `gyrores certify TAU SIGMA`).\n\n"
+     << digits << " significant digits, each the correct rounding of an enclosure proved by interval arithmetic "
+        "on the lattice theorem (the `gyrores pair` contract, proofs/lattice-theorem.md), except the minimum of "
+        "H_q over a horizon of a non-resonant coupling (verified by two runs at different precisions, marked as "
+        "such); `r_res = 0` for delta = 2 mod 4 is exact (integer arithmetic). Certificates that an independent "
+        "checker re-proves: `gyrores certify TAU SIGMA`, `gyrores check FILE`.\n\n"
      << "Conventions: `t_first` is the exact first time H_q reaches its minimum; `pi/n` is the paper's proxy "
-        "T_min ~ pi/|n| (a heuristic). The inscribed radius comes from the lattice method, cross-checked against "
-        "the global search (all critical points) for every pair printed.\n\n";
+        "T_min ~ pi/|n| (a heuristic). The inscribed radius comes from the lattice theorem: the minimisers' lobes "
+        "by integers and one root u* enclosed by interval arithmetic, for every pair printed.\n\n";
   return md.str();
 }
 
@@ -43,7 +45,8 @@ std::string figure1_section(context& c) {
   md << "For n = 2 the infimum of H_q over all time is 0 (the torus line is dense and passes arbitrarily close to "
         "the zero of (q, q')), never attained. Over the paper's span t in [0, 200 pi/n] the minimum is H_q = "
      << h.h_min << " (radius " << h.r_min << "), first at t = " << h.t_min
-     << " (exact critical points of H_q: roots of q' and z'; `gyrores coupling 2 --horizon " << span << "`).\n\n";
+     << " (critical points of H_q: roots of q' and z' bracketed exactly; verified digits, not proved; `gyrores "
+        "coupling 2 --horizon " << span << "`).\n\n";
   const auto v43 = c.values(4, 3);
   md << "For (4, 3): n = " << v43.n << ", r_res = " << v43.r_res << ", H_q min = " << v43.h_min << ", t_first = " << v43.t_first
      << ", proxy pi/n = " << v43.t_min_paper << " (`gyrores coupling --n2 1/12`).\n\n";

@@ -9,7 +9,7 @@
 namespace gyrores::cli::report {
 namespace {
 
-// One markdown table row for a pair with verified values.
+// One markdown table row for a pair with proved values.
 std::string pair_row(const design_point& p, const pair_report& v) {
   std::ostringstream os;
   os << "| " << pair_name(p.tau, p.sigma) << " | " << p.delta() << " | " << v.n << " | "

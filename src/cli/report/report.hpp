@@ -46,7 +46,7 @@ struct context {
   std::vector<design_point> smallest(std::int64_t delta, std::size_t k) const;
   // The catalogue's entry for (t, s) (computed if the catalogue does not reach it).
   design_point find(std::int64_t t, std::int64_t s) const;
-  // verify_pair_values(t, s, digits).
+  // prove_pair_values(t, s, digits): every real proved.
   pair_report values(std::int64_t t, std::int64_t s) const;
 };
 
