@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include <gyrores/core/thread_caches.hpp>
 #include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/io/certificate_json.hpp>
@@ -171,6 +172,7 @@ std::vector<std::vector<std::string>> run_concurrently(const std::vector<job>& j
         out[round][k] = std::string("exception: ") + e.what();
       }
     }
+    gyrores::release_thread_caches();  // MPFR's and Arb's per-thread caches (core/thread_caches.hpp)
   };
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
