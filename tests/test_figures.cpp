@@ -371,7 +371,9 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   // The paper's findings appear, with exact values.
   CHECK(md.find("(35, 29)") != std::string::npos);
   CHECK(md.find("1.635107798e+01") != std::string::npos);  // (6, 5) exact t_first, 10 digits
-  CHECK(md.find("Certified enclosures: not in this report") != std::string::npos);
+  // Every number proved, the one verified quantity named as such.
+  CHECK(md.find("each the correct rounding of an enclosure proved by interval arithmetic") != std::string::npos);
+  CHECK(md.find("verified digits, not proved") != std::string::npos);
   for (auto& e : fs::recursive_directory_iterator(fs::path(dir) / "out"))
     CHECK(e.path().string().find(".tmp") == std::string::npos);
 }
