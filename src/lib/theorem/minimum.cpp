@@ -20,12 +20,17 @@ minimum_double theorem_minimum_double(const resonant_pair<std::int64_t>& p) {
     const double t = std::tan(out.u_star), t2 = t * t;
     out.r_res = x * (2 * sqrt_ts / ad) * t2 / std::sqrt((1 + t2) * (1 + x * x * t2));
   }
-  // The lobes in int128: (2j+1) a reaches 2 a b, beyond int64 from order 2^31 on.
-  for (const auto& f : minimiser_lobes(int128(a), int128(b))) {
-    const double u = f.m < 0 ? -out.u_star : out.u_star;
-    out.minimisers[out.count] = 2 * (double(lobe_order_key(f, int128(a))) * pi + u) / ad;
-    out.lobes[out.count++] = {L(f.k), L(f.j), L(f.m)};  // k < a, j < b, |m| <= 2
-  }
+  // (2j+1) a in the lobes' arithmetic reaches 2 a b: int64 below order 2^31 (the sweeps' hot
+  // path, where int128's modular inverse costs more), int128 above.
+  auto put_lobes = [&](auto A, auto B) {
+    for (const auto& f : minimiser_lobes(A, B)) {
+      const double u = f.m < 0 ? -out.u_star : out.u_star;
+      out.minimisers[out.count] = 2 * (double(lobe_order_key(f, A)) * pi + u) / ad;
+      out.lobes[out.count++] = {L(f.k), L(f.j), L(f.m)};  // k < a, j < b, |m| <= 2
+    }
+  };
+  if (a < (L(1) << 31)) put_lobes(a, b);
+  else put_lobes(int128(a), int128(b));
   out.theta_first = out.minimisers[0];
   out.t_first = sqrt_ts * out.theta_first;
   return out;

@@ -66,8 +66,6 @@ void refine(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, u
                       " digits within " + std::to_string(max_report_bits) + " bits");
 }
 
-big_int bit_length(const big_int& v) { return big_int(boost::multiprecision::msb(v) + 1); }
-
 // The exact rationals of a pair (pair_report.hpp): squares decide which fields are rational.
 struct exact_values {
   big_rational v;
@@ -150,7 +148,7 @@ void minimum_fields(pair_report& r, const theorem_constants& K, const minimum_en
 // the fast node often share them).
 class root_cache {
  public:
-  root_cache(const theorem_constants& K, const resonant_pair<big_int>& p) : K_(K), p_(p) {}
+  explicit root_cache(const theorem_constants& K) : K_(K) {}
   // H^{-1}(pi |m|/(2a)) (theorem) or the root of u + tan u = pi |m|/(2b) (paper); nullptr if
   // the proof failed at this precision.
   const root_enclosure* get(const big_int& m, bool theorem) {
@@ -172,7 +170,6 @@ class root_cache {
 
  private:
   const theorem_constants& K_;
-  const resonant_pair<big_int>& p_;
   std::map<big_int, std::unique_ptr<root_enclosure>> theorem_, paper_;
   std::map<std::pair<big_int, bool>, bool> ok_;
 };
@@ -318,7 +315,7 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
     model_fields(r, K, p, e, v, round);
     minimum_fields(r, K, M, e, round);
     if (!r.asymptotic_applicable) return true;
-    root_cache cache(K, p);
+    root_cache cache(K);
     if (r.m_min > 0) cache.put_theorem(big_int(r.m_min), M.u_star);
     return asymptotic_fields(r, K, p, cache, M, v, round);
   });
@@ -344,7 +341,7 @@ paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_in
   refine(p, digits, true, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
     theorem_constants K(bits);
     set_theorem_constants(K, p);
-    root_cache cache(K, p);
+    root_cache cache(K);
     lobe_enclosures L(bits);
     if (!prove_lobe(L, K, cache, k, m)) return false;
     iv w(bits), q(bits), c(bits), t(bits);
