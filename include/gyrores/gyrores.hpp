@@ -5,6 +5,7 @@
 #pragma once
 // core: errors, integers, reals, decimal text, fixed-precision MPFR/MPFI, roots, precision and verified digits
 #include <gyrores/core/error.hpp>            // usage_error (bad input), compute_error (could not compute honestly)
+#include <gyrores/core/stop.hpp>             // stop_token, interrupted: Ctrl-C and the Python module stop long work
 #include <gyrores/core/integer.hpp>          // int64/int128/big_int helpers: gcd, v2, inverse mod
 #include <gyrores/core/real.hpp>             // real types (double ... mpfr_real, mpfi_real), conversions
 #include <gyrores/core/decimal.hpp>          // exact decimal output, Ziv rounding test, decimal input

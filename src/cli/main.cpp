@@ -9,6 +9,7 @@
 #include <map>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/stop.hpp>
 
 #include "cli_options.hpp"
 #include "cli_output.hpp"
@@ -92,6 +93,9 @@ int run(int argc, char** argv, bool execute) {
   } catch (const command_exit& e) {
     std::cerr << e.message << "\n";
     return e.status;
+  } catch (const gyrores::interrupted&) {
+    std::cerr << "gyrores: interrupted\n";
+    return 130;
   } catch (const gyrores::usage_error& e) {
     std::cerr << "gyrores: error: " << e.what() << "\n";
     return exit_usage;
