@@ -12,12 +12,15 @@
 #include <gyrores/core/rational.hpp>         // exact rationals: parsing, printing
 #include <gyrores/core/roots.hpp>            // the TOMS 748 wrapper, safeguarded Newton
 #include <gyrores/core/precision.hpp>        // the working type chosen from the digits asked
+#include <gyrores/core/quadratic.hpp>        // exact numbers of Q(sqrt d): the rotation number of any coupling
 #include <gyrores/core/verified_digits.hpp>  // the verified-digits contract (two runs, Ziv's test)
 // model: pairs, enumeration, the model for any n, resonant frames
 #include <gyrores/model/pair.hpp>            // resonant_pair<I>: number theory of (tau, sigma)
 #include <gyrores/model/enumerate.hpp>       // coprime_pairs: lazy enumeration by order
 #include <gyrores/model/model.hpp>           // the model for any real n: frequencies, impulse response, envelope
 #include <gyrores/model/resonant.hpp>        // resonant parametrisation and exact local (lobe-frame) coordinates
+#include <gyrores/model/coupling.hpp>        // any coupling n exactly: resonance test, convergents, x = sqrt(D)/(P + 4Q)
+#include <gyrores/model/rotation.hpp>        // the rotation by x, exactly: min ||k x - 1/2|| and first hits in O(log K)
 // theorem: the lattice theorem at the centre (lobes, the roots, the minimum, the proved pair report)
 #include <gyrores/theorem/lobes.hpp>          // the minimisers' lobes and the paper's fast node, by integers
 #include <gyrores/theorem/root.hpp>           // u* and the paper's root: points in double, proved enclosures

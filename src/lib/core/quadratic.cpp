@@ -1,0 +1,140 @@
+// include/gyrores/core/quadratic.hpp
+#include <gyrores/core/quadratic.hpp>
+
+#include <boost/multiprecision/integer.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include <gyrores/core/fixed_precision.hpp>
+
+#include <gyrores/core/error.hpp>
+
+namespace gyrores {
+namespace {
+
+// floor(q sqrt d) for d > 0 not a square: q sqrt d is irrational when q != 0.
+big_int floor_q_sqrt_d(const big_int& q, const big_int& d) {
+  if (q == 0) return 0;
+  const big_int root = boost::multiprecision::sqrt(big_int(q * q * d));
+  return q > 0 ? root : big_int(-root - 1);
+}
+
+std::size_t msb_or_zero(const big_int& v) { return v == 0 ? 0 : boost::multiprecision::msb(v < 0 ? big_int(-v) : v); }
+
+const big_int& common_d(const quadratic_number& a, const quadratic_number& b) {
+  if (a.is_rational()) return b.d();
+  if (!b.is_rational() && a.d() != b.d()) throw usage_error("quadratic_number: operands from different fields");
+  return a.d();
+}
+
+}  // namespace
+
+quadratic_number::quadratic_number(const big_int& p, const big_int& r) : p_(p), r_(r) {
+  if (r == 0) throw usage_error("quadratic_number: zero denominator");
+  normalise();
+}
+
+quadratic_number::quadratic_number(const big_rational& v)
+    : quadratic_number(big_int(boost::multiprecision::numerator(v)), big_int(boost::multiprecision::denominator(v))) {}
+
+quadratic_number::quadratic_number(const big_int& p, const big_int& q, const big_int& r, const big_int& d)
+    : p_(p), q_(q), r_(r), d_(d) {
+  if (r == 0) throw usage_error("quadratic_number: zero denominator");
+  if (q != 0) {
+    big_int root;
+    if (d <= 0 || int_is_square(d, root)) throw usage_error("quadratic_number: d = " + d.str() + " is not a positive non-square");
+    // Move small square factors of d into q, so that equal fields usually get equal d
+    // (sqrt 32 = 4 sqrt 2); operands must still share d exactly.
+    for (long f = 2; f <= 97; ++f)
+      while (d_ % (f * f) == 0) {
+        d_ /= f * f;
+        q_ *= f;
+      }
+  }
+  normalise();
+}
+
+void quadratic_number::normalise() {
+  if (r_ < 0) {
+    p_ = -p_;
+    q_ = -q_;
+    r_ = -r_;
+  }
+  if (q_ == 0) d_ = 0;
+  big_int g = int_gcd(int_gcd(p_ < 0 ? big_int(-p_) : p_, q_ < 0 ? big_int(-q_) : q_), r_);
+  if (g > 1) {
+    p_ /= g;
+    q_ /= g;
+    r_ /= g;
+  }
+}
+
+int quadratic_number::sign() const {
+  const int sp = p_ > 0 ? 1 : (p_ < 0 ? -1 : 0), sq = q_ > 0 ? 1 : (q_ < 0 ? -1 : 0);
+  if (sq == 0) return sp;
+  if (sp == 0 || sp == sq) return sq;
+  // Opposite signs: the larger of p^2 and q^2 d wins (they differ: d is not a square).
+  return p_ * p_ > q_ * q_ * d_ ? sp : sq;
+}
+
+big_int quadratic_number::floor() const { return int_floor_div(big_int(p_ + floor_q_sqrt_d(q_, d_)), r_); }
+
+big_int quadratic_number::ceil() const {
+  const big_int f = floor();
+  return (*this - quadratic_number(f)).sign() == 0 ? f : big_int(f + 1);
+}
+
+quadratic_number quadratic_number::frac() const { return *this - quadratic_number(floor()); }
+
+quadratic_number operator+(const quadratic_number& a, const quadratic_number& b) {
+  const big_int& d = common_d(a, b);
+  return quadratic_number(a.p_ * b.r_ + b.p_ * a.r_, a.q_ * b.r_ + b.q_ * a.r_, a.r_ * b.r_, d);
+}
+
+quadratic_number quadratic_number::operator-() const {
+  quadratic_number v = *this;
+  v.p_ = -v.p_;
+  v.q_ = -v.q_;
+  return v;
+}
+
+quadratic_number operator-(const quadratic_number& a, const quadratic_number& b) { return a + (-b); }
+
+quadratic_number operator*(const quadratic_number& a, const quadratic_number& b) {
+  const big_int& d = common_d(a, b);
+  return quadratic_number(a.p_ * b.p_ + a.q_ * b.q_ * d, a.p_ * b.q_ + a.q_ * b.p_, a.r_ * b.r_, d);
+}
+
+quadratic_number operator/(const quadratic_number& a, const quadratic_number& b) {
+  if (b.sign() == 0) throw usage_error("quadratic_number: division by zero");
+  // 1/b = r (p - q sqrt d)/(p^2 - q^2 d); the norm is non-zero since d is not a square.
+  const big_int norm = b.p_ * b.p_ - b.q_ * b.q_ * b.d_;
+  const quadratic_number inv(b.r_ * b.p_, -b.r_ * b.q_, norm, b.is_rational() ? big_int(0) : b.d_);
+  return a * inv;
+}
+
+std::string quadratic_number::str() const {
+  if (q_ == 0) return r_ == 1 ? p_.str() : p_.str() + "/" + r_.str();
+  return "(" + p_.str() + (q_ < 0 ? " - " : " + ") + (q_ < 0 ? big_int(-q_) : q_).str() + "*sqrt(" + d_.str() + "))/" +
+         r_.str();
+}
+
+double quadratic_number::approx() const {
+  if (sign() == 0) return 0;
+  // p and q sqrt d may nearly cancel: the absolute error of p + q sqrt d at `bits` bits is below
+  // 2^(top - bits + 2); widen until the sum stands 60 bits above it.
+  const std::size_t top = std::max(msb_or_zero(p_), msb_or_zero(q_) + msb_or_zero(d_) / 2 + 1) + 1;
+  for (std::size_t bits = top + 64;; bits *= 2) {
+    fixed_mpfr num(static_cast<mpfr_prec_t>(bits)), t(static_cast<mpfr_prec_t>(bits));
+    mpfr_set_z(num, p_.backend().data(), MPFR_RNDN);
+    mpfr_set_z(t, d_.backend().data(), MPFR_RNDN);
+    mpfr_sqrt(t, t, MPFR_RNDN);
+    mpfr_mul_z(t, t, q_.backend().data(), MPFR_RNDN);
+    mpfr_add(num, num, t, MPFR_RNDN);
+    if (mpfr_zero_p(num) || mpfr_get_exp(num) < static_cast<long>(top) - static_cast<long>(bits) + 62) continue;
+    mpfr_div_z(num, num, r_.backend().data(), MPFR_RNDN);
+    return mpfr_get_d(num, MPFR_RNDN);
+  }
+}
+
+}  // namespace gyrores
