@@ -26,6 +26,7 @@
 #include <gyrores/theorem/root.hpp>           // u* and the paper's root: points in double, proved enclosures
 #include <gyrores/theorem/minimum.hpp>        // r_res, minimisers, theta_first, t_first
 #include <gyrores/theorem/pair_report.hpp>    // everything about one pair, every real proved
+#include <gyrores/theorem/horizon.hpp>        // any coupling: min of H_q over [0, T], first time below a level
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 // design, figures data, sweeps
