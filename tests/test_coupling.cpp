@@ -267,7 +267,27 @@ TEST_CASE("cli coupling: resonance detection and JSON keys", "[coupling][cli]") 
 TEST_CASE("cli coupling: bad input exits 2 with one line and no stdout", "[coupling][cli]") {
   if (!cli_available()) return;
   for (const char* bad : {"coupling", "coupling 1 --n2 1/12", "coupling abc", "coupling 0", "coupling --n2 0",
-                          "coupling 1/0", "coupling 2 --horizon -1", "coupling 2 --horizon 1e9", "coupling 2 --digits 0"})
+                          "coupling 1/0", "coupling 2 --horizon -1", "coupling 2 --digits 0", "coupling 2 --below -1",
+                          "coupling 2 --below x%", "coupling 2 --horizon 1e9e", "coupling 2 --horizon pi"})
     check_rejected(bad);
-  check_rejected("coupling 1e308", 2, "more than 1.8e+308 critical points");
+}
+
+TEST_CASE("cli coupling: any horizon and any coupling size answer (the horizon theorem)", "[coupling][cli]") {
+  if (!cli_available()) return;
+  // Horizons that the critical-point scan could never reach, and a huge coupling.
+  for (const char* args : {"coupling 2 --horizon 1e9 --json", "coupling 0.1832 --horizon 1e100 --json",
+                           "coupling 2 --horizon 100pi --below 1% --json"}) {
+    const auto j = cli_json(args);
+    INFO(args);
+    CHECK(j["theorem"] == "horizon-theorem/1");
+    CHECK(j["h_min_horizon"].is_string());
+    CHECK(j["enclosures"]["t_min_horizon"].size() == 2);
+  }
+  // n = 1e308: exact integers of 600 digits in the JSON (beyond nlohmann's doubles: read as text).
+  const auto huge = cli_run("coupling 1e308 --json --convergents 1");
+  CHECK(huge.status == 0);
+  CHECK(huge.out.find("\"theorem\": \"horizon-theorem/1\"") != std::string::npos);
+  const auto b = cli_json("coupling 2 --horizon 100pi --below 1% --json");
+  CHECK(b["below"]["level"] == "1/200");
+  CHECK(b["t_below"].is_string());
 }

@@ -115,9 +115,9 @@ std::vector<job> all_jobs() {
                     return coupling_text(coupling_spec::from_n2(big_rational(1, 12)), "100", 20, json{{"n2", "1/12"}});
                   }});
   jobs.push_back({"horizon minimum n = 3/7, 25 digits", [] {
-                    const auto h = verify_horizon_minimum(coupling_spec::from_n(big_rational(3, 7)),
-                                                          exact_horizon{big_rational(20), true}, 25);
-                    return h.h_min + " " + h.t_min + " " + h.r_min + " " + std::to_string(h.critical_points);
+                    const auto h = prove_horizon_minimum(coupling_spec::from_n(big_rational(3, 7)),
+                                                         horizon_time(big_rational(20), true), 25);
+                    return h.h_min.value + " " + h.t_min.value + " " + h.r_min.value + " " + h.cut_lobe.str();
                   }});
   return jobs;
 }

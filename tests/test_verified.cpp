@@ -141,18 +141,8 @@ TEST_CASE("verified digits: MPFR plans run on the precision ladder, whatever the
   CHECK(calls == 0);
 }
 
-TEST_CASE("coupling report: verified horizon minimum and the resonant case", "[verified][coupling]") {
-  // n = 2 over [0, 100 pi] (the paper's Fig. 1a span), against horizon_minimum at 60 digits.
+TEST_CASE("coupling report: the resonant case over a horizon that holds t_first", "[verified][coupling]") {
   const auto spec = coupling_spec::from_n(big_rational(2));
-  const auto h = verify_horizon_minimum(spec, exact_horizon{big_rational(100), true}, 12);
-  {
-    scoped_digits d(60);
-    const auto ref = horizon_minimum<mpfr_real>(mpfr_real(2), mpfr_real(1), mpfr_real(100 * real_pi<mpfr_real>()));
-    CHECK(h.h_min == format_scientific(ref.h_min, 12));
-    CHECK(h.t_min == format_scientific(ref.t_min, 12));
-    CHECK(h.r_min == format_scientific(mpfr_real(sqrt(2 * ref.h_min)), 12));
-    CHECK(h.critical_points == ref.critical_points);
-  }
   // n^2 = 1/12 is the pair (4, 3); the default horizon 100 contains its t_first.
   coupling_report_options opt;
   opt.convergents = 3;
@@ -161,8 +151,8 @@ TEST_CASE("coupling report: verified horizon minimum and the resonant case", "[v
   CHECK(r.pair->tau() == 4);
   CHECK(r.pair->sigma() == 3);
   REQUIRE(r.pair_values);
-  CHECK(r.h_min_horizon == r.pair_values->h_min.value);
-  CHECK(r.t_min_horizon == r.pair_values->t_first.value);
+  CHECK(r.horizon.h_min.value == r.pair_values->h_min.value);
+  CHECK(r.horizon.t_min.value == r.pair_values->t_first.value);
   CHECK(r.inf_attained);
   CHECK(r.inf_all_time == r.pair_values->h_min.value);
   CHECK(r.pair_values->r_res.value == prove_pair_values(resonant_pair<big_int>(big_int(4), big_int(3)), 12).r_res.value);

@@ -134,8 +134,8 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const py::ob
   if (convergents < 0 || convergents > 60) throw usage_error("convergents must be in [0, 60]");
   opt.convergents = std::size_t(convergents);
   const std::string horizon_text = rational_text(horizon);
-  opt.horizon = parse_rational(horizon_text, "horizon");
-  if (opt.horizon < 0) throw usage_error("horizon must be >= 0, got " + horizon_text);
+  opt.horizon = horizon_time(parse_rational(horizon_text, "horizon"));
+  if (opt.horizon.value < 0) throw usage_error("horizon must be >= 0, got " + horizon_text);
   const coupling_spec spec = n.is_none() ? coupling_spec::from_n2(parse_rational(rational_text(n2), "n2"))
                                          : coupling_spec::from_n(parse_rational(rational_text(n), "n"));
   const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};

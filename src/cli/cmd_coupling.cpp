@@ -1,7 +1,9 @@
-// gyrores coupling N | --n2 P/Q [--horizon T] [--convergents K] [--digits D] [--json]
+// gyrores coupling N | --n2 P/Q [--horizon T] [--below E] [--convergents K] [--digits D] [--json]
 // Any coupling n (design/coupling_report.hpp): exact resonance test on n^2; the pair analysis
-// when resonant; the minimum of H_q over [0, T] with its first time; the infimum over all time;
-// the continued-fraction convergents of W1/W2 as resonant pairs.
+// when resonant; the minimum of H_q over [0, T] with its first time and the first time H_q <= E
+// (the horizon theorem, proved); the infimum over all time; the continued-fraction convergents
+// of W1/W2 as resonant pairs.
+#include <cstdio>
 #include <sstream>
 
 #include <gyrores/design/coupling_report.hpp>
@@ -16,7 +18,7 @@ namespace gyrores::cli {
 namespace {
 
 struct coupling_args {
-  std::string n, n2, horizon = "100";
+  std::string n, n2, horizon = "100", below;
   int digits = 12;
   std::int64_t convergents = 8;
   bool json = false;
@@ -37,11 +39,21 @@ void convergents_text(std::ostringstream& os, const std::vector<coupling_converg
   }
 }
 
+std::string lobe_text(const std::optional<horizon_lobe>& lobe) {
+  if (!lobe) return "";
+  char nu[32];
+  std::snprintf(nu, sizeof nu, "%.6g", lobe->nu.approx());
+  return "lobe k = " + lobe->k.str() + ", ||k x - 1/2|| ~ " + nu + " (exact: --json)";
+}
+
 std::string coupling_text(const coupling_args& a, const coupling_report& r) {
   std::ostringstream os;
   const auto& spec = r.spec;
+  const horizon_minimum_report& h = r.horizon;
   os << "coupling n^2 = " << rational_str(spec.n2) << (spec.n ? "  (n = " + rational_str(*spec.n) + ", exact)" : "") << "\n"
      << "  |n|           " << r.abs_n << (r.n_negative ? "  (n < 0 mirrors the motion; |n| is used)" : "") << "\n"
+     << "  x = n/sqrt(n^2+4) = " << (h.x.str().size() <= 60 ? h.x.str() : "(exact: --json)")
+     << (h.x.is_rational() ? "" : ", a quadratic irrational") << "\n"
      << "  resonance     D = P (P + 4Q) = " << spec.discriminant().str()
      << (r.pair ? " is a perfect square: RESONANT, pair " + r.pair->str() : " is not a perfect square: not resonant") << "\n";
   if (r.pair) {
@@ -52,18 +64,49 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
   }
   os << "  pi/|n|        " << r.t_min_paper << "  (the paper's proxy)\n"
      << "over [0, " << a.horizon << "]:\n"
-     << "  min H_q       " << r.h_min_horizon << "\n"
-     << "  first at t =  " << r.t_min_horizon << "\n"
-     << "  from          " << r.horizon_source << "\n"
-     << "over all time:\n"
+     << "  min H_q       " << h.h_min.value << "  (radius " << h.r_min.value << ")\n"
+     << "  first at t =  " << h.t_min.value << "\n"
+     << "  from          "
+     << (h.at_horizon_end ? "the end point t = T: H_q still decreases there (lobe " + h.cut_lobe.str() + " is cut before its minimum)"
+                          : lobe_text(h.lobe) + " (the smallest of the lobes inside [0, T])")
+     << "\n";
+  if (r.below) {
+    const first_below_report& b = *r.below;
+    os << "first time H_q <= " << a.below << ":\n";
+    if (b.never) os << "  never         " << b.reason << "\n";
+    else os << "  t =           " << b.t_below.value << "\n  because       " << b.reason << "\n";
+  }
+  os << "over all time:\n"
      << "  inf H_q       " << r.inf_all_time << (r.inf_attained ? "" : " (not attained)") << "\n"
      << "  because       " << r.inf_reason << "\n";
   convergents_text(os, r.convergents);
-  os << "  " << a.digits << " digits, each the correct rounding of a proved enclosure"
-     << (r.horizon_proved ? "" : ", except the minimum over [0, T] and its time: verified (two runs at different "
-                                 "precisions agree), not proved")
-     << "\n";
+  os << "  " << a.digits << " digits, each the correct rounding of a proved enclosure (" << horizon_theorem_id
+     << ", lattice-theorem/1; qdot0 = 1, H_q(0) = 1/2)\n";
   return os.str();
+}
+
+// T: a decimal, scientific or fraction, optionally times pi ("100pi", "1e30").
+horizon_time parse_horizon(std::string text) {
+  bool pi = false;
+  if (text.size() > 2 && text.compare(text.size() - 2, 2, "pi") == 0) {
+    pi = true;
+    text.resize(text.size() - 2);
+    if (!text.empty() && text.back() == '*') text.pop_back();
+  }
+  horizon_time t(parse_rational(text, "--horizon"), pi);
+  if (t.value < 0) throw usage_error("--horizon must be >= 0, got " + text);
+  return t;
+}
+
+// E: an energy (H_q(0) = 1/2), or a percentage of the initial energy ("1%" is 0.005).
+big_rational parse_level(std::string text) {
+  big_rational e;
+  if (!text.empty() && text.back() == '%') {
+    text.pop_back();
+    e = parse_rational(text, "--below") / 200;
+  } else e = parse_rational(text, "--below");
+  if (e < 0) throw usage_error("--below must be >= 0, got " + text);
+  return e;
 }
 
 std::string run_coupling(const coupling_args& a) {
@@ -73,8 +116,8 @@ std::string run_coupling(const coupling_args& a) {
   coupling_spec spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2"))
                                    : coupling_spec::from_n(parse_rational(a.n, "N"));
   coupling_report_options opt;
-  opt.horizon = parse_rational(a.horizon, "--horizon");
-  if (opt.horizon < 0) throw usage_error("--horizon must be >= 0, got " + a.horizon);
+  opt.horizon = parse_horizon(a.horizon);
+  if (!a.below.empty()) opt.below = parse_level(a.below);
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   const coupling_report r = analyse_coupling(spec, opt);
@@ -88,7 +131,8 @@ command_runner install_coupling(CLI::App& app) {
   auto sub = options(app).subcommand("coupling", "Any coupling n: resonance test, min of H_q over a horizon, resonant approximations");
   sub.add("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
   sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
-  sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T]", show::with_default);
+  sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
+  sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%)");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);

@@ -24,6 +24,15 @@ namespace gyrores {
 
 inline constexpr const char* horizon_theorem_id = "horizon-theorem/1";
 
+// A horizon T >= 0 given exactly: T = value, or T = value * pi (the paper's spans, e.g. 100 pi).
+struct horizon_time {
+  big_rational value = 0;
+  bool times_pi = false;
+  horizon_time() = default;
+  horizon_time(const big_rational& v, bool pi = false) : value(v), times_pi(pi) {}
+  std::string str() const { return rational_str(value) + (times_pi ? " pi" : ""); }
+};
+
 // Which lobe the minimum over [0, T] comes from (the integers a certificate carries).
 struct horizon_lobe {
   big_int k;                 // the lobe
@@ -33,18 +42,19 @@ struct horizon_lobe {
 
 struct horizon_minimum_report {
   unsigned digits = 0;
-  big_rational horizon;          // T
+  horizon_time horizon;          // T
   quadratic_number x;            // n/sqrt(n^2 + 4), exactly
   big_int cut_lobe;              // k_c = floor(sqrt(n^2 + 4) T/(2 pi) + 1/2): the lobe holding t = T
   bool cut_lobe_reached = false; // k_c's minimiser lies in [0, T]
   bool at_horizon_end = false;   // the minimum is R(T), at t = T (H_q still decreasing there)
   std::optional<horizon_lobe> lobe;  // the lobe of the minimum (none when at the horizon's end)
   proved_real h_min, t_min;      // min of H_q over [0, T] and the first time it is attained
+  proved_real r_min;             // the radius sqrt(2 h_min) = sqrt(q^2 + q'^2) there
 };
 
 // Throws usage_error for T < 0 or digits outside [1, report_digits_max]; compute_error when the
 // end point ties a lobe value within 2^20 bits; interrupted when `stop` is set.
-horizon_minimum_report prove_horizon_minimum(const coupling_spec& c, const big_rational& horizon, unsigned digits,
+horizon_minimum_report prove_horizon_minimum(const coupling_spec& c, const horizon_time& horizon, unsigned digits,
                                              stop_token stop = {});
 
 struct first_below_report {

@@ -34,8 +34,8 @@ std::string figure1_section(context& c) {
   const auto p2 = coupling_resonant_pair(s2);
   const auto p12 = coupling_resonant_pair(coupling_spec::from_n2(big_rational(1, 12)));
   const double span = 200 * real_pi<double>() / 2;
-  // min of H_q over the paper's span [0, 200 pi/n] = [0, 100 pi], verified
-  const auto h = verify_horizon_minimum(s2, exact_horizon{big_rational(100), true}, c.digits);
+  // min of H_q over the paper's span [0, 200 pi/n] = [0, 100 pi], proved (the horizon theorem)
+  const auto h = prove_horizon_minimum(s2, horizon_time(big_rational(100), true), c.digits);
   md << claims_table_head
      << "| n = 2 is not resonant (dense trajectory, Fig. 1a) | n^2 (n^2 + 4) = 32 is not a rational square: "
      << (p2 ? "resonant" : "not resonant") << " | " << verdict(!p2) << " |\n"
@@ -44,9 +44,10 @@ std::string figure1_section(context& c) {
      << verdict(p12 && p12->tau() == 4 && p12->sigma() == 3) << " |\n\n";
   md << "For n = 2 the infimum of H_q over all time is 0 (the torus line is dense and passes arbitrarily close to "
         "the zero of (q, q')), never attained. Over the paper's span t in [0, 200 pi/n] the minimum is H_q = "
-     << h.h_min << " (radius " << h.r_min << "), first at t = " << h.t_min
-     << " (critical points of H_q: roots of q' and z' bracketed exactly; verified digits, not proved; `gyrores "
-        "coupling 2 --horizon " << span << "`).\n\n";
+     << h.h_min.value << " (radius " << h.r_min.value << "), first at t = " << h.t_min.value << ", in lobe "
+     << (h.lobe ? h.lobe->k.str() : std::string("(the end point)"))
+     << " (the horizon theorem: the lobe with the smallest ||k x - 1/2|| inside the span, proved; `gyrores "
+        "coupling 2 --horizon 100pi`).\n\n";
   const auto v43 = c.values(4, 3);
   md << "For (4, 3): n = " << v43.n << ", r_res = " << v43.r_res << ", H_q min = " << v43.h_min << ", t_first = " << v43.t_first
      << ", proxy pi/n = " << v43.t_min_paper << " (`gyrores coupling --n2 1/12`).\n\n";

@@ -115,8 +115,11 @@ quadratic_number operator/(const quadratic_number& a, const quadratic_number& b)
 
 std::string quadratic_number::str() const {
   if (q_ == 0) return r_ == 1 ? p_.str() : p_.str() + "/" + r_.str();
-  return "(" + p_.str() + (q_ < 0 ? " - " : " + ") + (q_ < 0 ? big_int(-q_) : q_).str() + "*sqrt(" + d_.str() + "))/" +
-         r_.str();
+  const big_int aq = q_ < 0 ? big_int(-q_) : q_;
+  const std::string root = (aq == 1 ? "" : aq.str() + "*") + "sqrt(" + d_.str() + ")";
+  std::string num = p_ == 0 ? (q_ < 0 ? "-" : "") + root : p_.str() + (q_ < 0 ? " - " : " + ") + root;
+  if (r_ == 1) return num;
+  return (p_ == 0 ? num : "(" + num + ")") + "/" + r_.str();
 }
 
 double quadratic_number::approx() const {

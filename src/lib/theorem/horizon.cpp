@@ -376,19 +376,32 @@ slong start_bits(unsigned digits, const big_rational& scale) {
   return slong(digits * 3.33) + 64 + slong(std::log2(mag + 1) * 2);
 }
 
-// k_c = floor(s T/(2 pi) + 1/2), exactly (never a tie for T > 0: pi is transcendental).
-big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const big_rational& T, slong prec,
+// alpha_T = s T/2 as a ball.
+void set_alpha_T(arb_t out, const coupling_balls& cb, const horizon_time& T) {
+  set_rational(out, T.value, cb.prec);
+  arb_mul(out, out, cb.s, cb.prec);
+  arb_mul_2exp_si(out, out, -1);
+  if (T.times_pi) arb_mul(out, out, cb.pi, cb.prec);
+}
+
+// k_c = floor(alpha_T/pi + 1/2), exactly. For T = value pi it is floor(s value/2 + 1/2) with
+// s = sqrt(Q (P + 4Q))/Q in Q(sqrt d); for a rational T > 0 the argument is transcendental (pi), so
+// it is never an integer and a fine enough ball decides the floor.
+big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const horizon_time& T, slong prec,
                     const stop_token& stop) {
-  if (T == 0) return 0;
+  if (T.value == 0) return 0;
+  if (T.times_pi) {
+    const big_int P = spec.P(), Q = spec.Q(), d = Q * (P + 4 * Q);
+    big_int root;
+    const quadratic_number s = int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
+    return (s * quadratic_number(T.value / 2) + quadratic_number(1, 2)).floor();
+  }
   for (; prec <= max_bits; prec *= 2) {
     stop.throw_if_requested();
     coupling_balls cb(spec, x, prec);
-    ball a, f;
-    set_rational(a, T, prec);
-    arb_mul(a, a, cb.s, prec);
+    ball a, f, half;
+    set_alpha_T(a, cb, T);
     arb_div(a, a, cb.pi, prec);
-    arb_mul_2exp_si(a, a, -1);
-    ball half;
     arb_set_d(half, 0.5);
     arb_add(a, a, half, prec);
     arb_floor(f, a, prec);
@@ -400,15 +413,15 @@ big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const 
 
 }  // namespace
 
-horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const big_rational& T, unsigned digits,
+horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const horizon_time& T, unsigned digits,
                                              stop_token stop) {
   check_report_digits(digits);
-  if (T < 0) throw usage_error("the horizon must be >= 0, got " + rational_str(T));
+  if (T.value < 0) throw usage_error("the horizon must be >= 0, got " + T.str());
   horizon_minimum_report r;
   r.digits = digits;
   r.horizon = T;
   r.x = coupling_rotation_number(spec);
-  const slong prec0 = start_bits(digits, T);
+  const slong prec0 = start_bits(digits, T.times_pi ? big_rational(T.value * 4) : T.value);
   r.cut_lobe = cut_lobe_of(spec, r.x, T, prec0, stop);
   // The best full lobe (exact), and the cut lobe.
   std::optional<horizon_lobe> full;
@@ -418,9 +431,7 @@ horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const bi
     stop.throw_if_requested();
     coupling_balls cb(spec, r.x, prec);
     ball alpha_T;
-    set_rational(alpha_T, T, prec);
-    arb_mul(alpha_T, alpha_T, cb.s, prec);
-    arb_mul_2exp_si(alpha_T, alpha_T, -1);
+    set_alpha_T(alpha_T, cb, T);
     lobe_point cut_point;
     if (!prove_lobe_point(cb, cut, cut_point)) continue;
     if (arb_le(cut_point.alpha, alpha_T)) r.cut_lobe_reached = true;
@@ -438,9 +449,17 @@ horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const bi
       if (!best || arb_lt(end, bp.value)) {
         r.at_horizon_end = true;
         r.lobe.reset();
+        ball radius;
+        arb_sqrtpos(radius, end, prec);
         arb_mul_2exp_si(end, end, -1);
-        if (!round_ball(end, digits, prec, r.h_min)) continue;
-        r.t_min = exact_rational_value(T, digits);
+        if (!round_ball(end, digits, prec, r.h_min) || !round_ball(radius, digits, prec, r.r_min)) continue;
+        if (!T.times_pi) r.t_min = exact_rational_value(T.value, digits);
+        else {
+          ball t;
+          set_rational(t, T.value, prec);
+          arb_mul(t, t, cb.pi, prec);
+          if (!round_ball(t, digits, prec, r.t_min)) continue;
+        }
         return r;
       }
       if (!arb_gt(end, bp.value)) continue;
@@ -449,12 +468,20 @@ horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const bi
     r.lobe = best;
     lobe_point p;
     if (!prove_lobe_point(cb, *best, p)) continue;
+    ball radius;
+    arb_sqrtpos(radius, p.value, prec);
     arb_mul_2exp_si(p.value, p.value, -1);
-    if (!round_ball(p.value, digits, prec, r.h_min) || !round_ball(p.t, digits, prec, r.t_min)) continue;
-    if (best->nu.sign() == 0) r.h_min = exact_rational_value(0, digits);
+    if (best->nu.sign() == 0) {
+      r.h_min = r.r_min = exact_rational_value(0, digits);
+      if (!round_ball(p.t, digits, prec, r.t_min)) continue;
+      return r;
+    }
+    if (!round_ball(p.value, digits, prec, r.h_min) || !round_ball(p.t, digits, prec, r.t_min) ||
+        !round_ball(radius, digits, prec, r.r_min))
+      continue;
     return r;
   }
-  throw compute_error("horizon: the minimum over [0, " + rational_str(T) +
+  throw compute_error("horizon: the minimum over [0, " + T.str() +
                       "] was not decided within 2^20 bits (the end point ties a lobe's minimum)");
 }
 
