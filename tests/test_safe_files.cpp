@@ -183,6 +183,26 @@ TEST_CASE("safe files: two concurrent sweeps on one summary, the second refused 
   CHECK_FALSE(path_exists(d / "same.json.lock"));
 }
 
+TEST_CASE("safe files: two sweeps without files in one directory take turns on its default state", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  const std::string here = "cd '" + d.path() + "' &&";
+  const std::string args = "sweep --max-order 1500 --quiet --threads 1 --json";
+  cli_result first;
+  std::thread a([&] { first = gyrores::test::cli_run(args, here); });
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!path_exists(d / "gyrores-sweep.resume.lock") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  const cli_result second = gyrores::test::cli_run(args, here);
+  a.join();
+  REQUIRE(first.status == 0);
+  REQUIRE(second.status == 0);
+  if (!has(second.err, "waiting for it to end")) WARN("the first sweep ended before the second started");
+  CHECK(gyrores::sweep_summary_core(json::parse(first.out)) == gyrores::sweep_summary_core(json::parse(second.out)));
+  CHECK_FALSE(path_exists(d / "gyrores-sweep.resume"));
+  CHECK_FALSE(path_exists(d / "gyrores-sweep.resume.lock"));
+}
+
 TEST_CASE("safe files: merge checks each shard's values file by content", "[cli][files]") {
   if (!cli_available()) return;
   temp_dir d("test_safe_files");

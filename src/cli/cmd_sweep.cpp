@@ -213,6 +213,12 @@ sweep_files files_of(const sweep_args& a) {
   files.state_path = a.state;
   files.resume = a.resume;
   files.fresh = a.fresh;
+  // No file named: the default state ./gyrores-sweep.resume is shared by every such sweep run in
+  // this directory; they take turns on it (docs/formats.md, "File safety and locks").
+  if (a.out.empty() && a.summary.empty() && a.state.empty())
+    files.on_lock_wait = [](const std::string& why) {
+      std::fprintf(stderr, "gyrores sweep: %s: waiting for it to end (give --state FILE to run beside it)\n", why.c_str());
+    };
   files.checkpoint_seconds = a.checkpoint;
   return files;
 }

@@ -234,24 +234,37 @@ std::string lock_owner(int fd) {
   return s.empty() || s.find_first_not_of("0123456789") != std::string::npos ? std::string() : " (pid " + s + ")";
 }
 
+std::string in_use_message(const std::string& path, int fd) {
+  return "'" + path + "' is in use by another gyrores run" + lock_owner(fd);
+}
+
 [[noreturn]] void in_use(const std::string& path, int fd) {
-  const std::string owner = lock_owner(fd);
+  const std::string msg = in_use_message(path, fd);
   ::close(fd);
-  throw usage_error("'" + path + "' is in use by another gyrores run" + owner + "; wait for it to end or choose other files");
+  throw usage_error(msg + "; wait for it to end or choose other files");
 }
 
 }  // namespace
 
-path_lock path_lock::acquire(const std::string& path) {
+path_lock path_lock::acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy) {
   const std::string lp = path + ".lock";
+  bool told = false;
   for (int attempt = 0; attempt < 100; ++attempt) {
     const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd < 0) fail("cannot create the lock file", lp, errno);
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      if (errno == EWOULDBLOCK) in_use(path, fd);
-      const int err = errno;
-      ::close(fd);
-      fail("cannot lock", lp, err);
+      int err = errno;
+      if (err == EWOULDBLOCK) {
+        if (!on_busy) in_use(path, fd);
+        if (!told) on_busy(in_use_message(path, fd));
+        told = true;
+        while ((err = ::flock(fd, LOCK_EX) == 0 ? 0 : errno) == EINTR) {
+        }
+      }
+      if (err != 0) {
+        ::close(fd);
+        fail("cannot lock", lp, err);
+      }
     }
     // The holder before us may have removed the file after we opened it (it unlinks, then
     // unlocks): our lock is then on a name nobody else sees. Retry on the current file.

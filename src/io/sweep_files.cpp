@@ -98,7 +98,8 @@ void sweep_file_session::check_paths_and_lock() {
     if (!p.path.empty()) check_output_path(p.path);
   // One lock per output the user named, so that two runs sharing any of them collide; the
   // state's lock also keeps merge and a resume away while this run holds it.
-  for (const std::string& p : {state_, files_.summary_path, files_.rows_path})
+  locks_.push_back(path_lock::acquire(state_, files_.on_lock_wait));
+  for (const std::string& p : {files_.summary_path, files_.rows_path})
     if (!p.empty()) locks_.push_back(path_lock::acquire(p));
   if (!files_.resume && file_exists(state_) && !files_.fresh)
     throw usage_error("a saved run exists at '" + state_ + "': use --resume to continue it, or --fresh to discard it");

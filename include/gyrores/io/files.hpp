@@ -89,13 +89,15 @@ struct named_path {
 void check_distinct_paths(const std::vector<named_path>& paths);
 
 // An exclusive advisory lock (flock) on PATH.lock, held until destruction, when the lock file
-// is removed. acquire() never waits: if another process holds it, usage_error
-// "'PATH' is in use by another gyrores run (pid N)". Locks taken by one process on distinct
+// is removed. acquire() does not wait: if another process holds it, usage_error
+// "'PATH' is in use by another gyrores run (pid N)" -- unless `on_busy` is given, which is then
+// called once with that message and the lock waited for (a path the user did not name, shared
+// by default: see sweep_files::on_lock_wait). Locks taken by one process on distinct
 // paths nest. The lock file holds the owner's pid, for that message only.
 class path_lock {
  public:
   path_lock() = default;
-  static path_lock acquire(const std::string& path);
+  static path_lock acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy = {});
   // For an input: fails as acquire() does if a writer holds PATH.lock, else takes nothing (no
   // lock file is created beside inputs).
   static void check_not_written(const std::string& path);

@@ -27,6 +27,10 @@ struct sweep_files {
   bool resume = false;
   // Without resume, a saved state is refused ("a saved run exists") unless fresh discards it.
   bool fresh = false;
+  // Set: the state's lock, when another run holds it, is waited for (this is called once with
+  // the reason) instead of refused. For a state path nobody named (./gyrores-sweep.resume of two
+  // sweeps without files in one directory): the runs then take turns instead of failing.
+  std::function<void(const std::string&)> on_lock_wait;
   double checkpoint_seconds = 300;  // periodic checkpoints (0: only when stopping early)
   // t_first/proxy values held in memory before they go to the state's values file (8 MB; the
   // file is read back for the quantiles). Tests make it small.
