@@ -3,6 +3,7 @@
 
 #include <regex>
 #include <unordered_set>
+#include <vector>
 
 namespace gyrores {
 

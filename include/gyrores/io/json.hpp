@@ -10,7 +10,6 @@
 #include <limits>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/integer.hpp>
