@@ -71,7 +71,8 @@ Z integer_field(const json& j, const std::string& name, bool allow_sign) {
   if (!j.is_string()) throw malformed(name + " must be a decimal string");
   std::string s = j.get<std::string>();
   std::size_t from = allow_sign && !s.empty() && s[0] == '-' ? 1 : 0;
-  if (s.size() > 20000 || !all_digits(s, from) || (s[from] == '0' && s.size() > from + 1) || s == "-0")
+  if (s.size() > max_pair_digits + 100) throw malformed(name + " has more than " + std::to_string(max_pair_digits + 100) + " characters");
+  if (!all_digits(s, from) || (s[from] == '0' && s.size() > from + 1) || s == "-0")
     throw malformed(name + " is not an integer: '" + s.substr(0, 40) + "'");
   Z z;
   fmpz_set_str(z.v, s.c_str(), 10);
@@ -129,10 +130,26 @@ struct certificate {
 const std::set<std::string> top_keys{"format", "theorem", "tau", "sigma", "digits", "degenerate", "m_min",
                                      "minimiser_count", "minimiser_lobes", "u_star", "claims"};
 
+// json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate
+// could otherwise show a reader one value and the checker another).
+json parse_without_duplicate_keys(const std::string& text) {
+  std::vector<std::set<std::string>> open;
+  const json::parser_callback_t on_event = [&](int, json::parse_event_t ev, json& parsed) {
+    if (ev == json::parse_event_t::object_start) open.emplace_back();
+    if (ev == json::parse_event_t::object_end && !open.empty()) open.pop_back();
+    if (ev == json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
+      throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
+    return true;
+  };
+  return json::parse(text, on_event);
+}
+
 certificate read(const std::string& text) {
   json j;
   try {
-    j = json::parse(text);
+    j = parse_without_duplicate_keys(text);
+  } catch (const malformed&) {
+    throw;
   } catch (const std::exception& e) {
     throw malformed(std::string("not JSON: ") + e.what());
   }

@@ -25,6 +25,11 @@ struct certify_args {
 std::string run_certify(const certify_args& a) {
   check_digits_flag(a.digits, 1, 10000);
   auto p = parse_pair_arguments(a.tau, a.sigma);
+  // What certify writes, check must read (src/checker/certificate_checker.hpp).
+  if (p.tau().str().size() > gyrores_checker::max_pair_digits)
+    throw usage_error("TAU has " + std::to_string(p.tau().str().size()) + " digits; certificates are limited to " +
+                      std::to_string(gyrores_checker::max_pair_digits) + " (what gyrores check reads)");
+  if (!a.out.empty()) check_output_path(a.out);  // before the work
   std::string text = json_dump(certificate_to_json(certify_by_theorem(p, unsigned(a.digits)))) + "\n";
   if (a.out.empty()) return text;
   write_file_atomically(a.out, text);
@@ -48,7 +53,7 @@ struct check_outcome {
 };
 
 check_outcome check_file(const std::string& file) {
-  const std::string text = read_file(file);
+  const std::string text = read_file(file, certificate_read_limit, "a certificate");
   if (certificate_format_of(text) == retired_certificate_format)
     return {2, "gyrores check: " + retired_certificate_message()};
   auto v = gyrores_checker::check_theorem_certificate(text);

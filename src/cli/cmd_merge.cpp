@@ -22,6 +22,19 @@ struct merge_args {
 };
 
 std::string run_merge(const merge_args& a) {
+  // Before reading anything: the output is writable, is none of the inputs (nor their values
+  // files), and no other run writes it; the inputs are checked by sweep_merge.
+  path_lock lock;
+  if (!a.summary.empty()) {
+    std::vector<named_path> paths{{"--summary", a.summary}};
+    for (const auto& f : a.files) {
+      paths.push_back({"input", f});
+      paths.push_back({"the values file of input", f + ".values"});
+    }
+    check_distinct_paths(paths);
+    check_output_path(a.summary);
+    lock = path_lock::acquire(a.summary);
+  }
   json s = sweep_merge(a.files);
   if (!a.summary.empty()) write_file_atomically(a.summary, s.dump(2) + "\n");
   if (a.json) return s.dump(2) + "\n";

@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <memory>
@@ -54,7 +55,7 @@ struct sweep_args {
   std::int64_t max_order = 0, min_order = 3;
   std::string checks = "default", out, format, summary, shard = "0/1", state;
   unsigned threads = 0;
-  bool resume = false, quiet = false, json = false, certified = false;
+  bool resume = false, fresh = false, quiet = false, json = false, certified = false, allow_large = false;
   int digits = 15;
   std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t examples = 5;
@@ -153,7 +154,41 @@ template <class T> sweep_report run_typed(const sweep_config& cfg, const sweep_f
   return rep;
 }
 
+// Refused without --allow-large (docs/formats.md, "Size caps"): more pairs than this, or more
+// scratch bytes (the values file, 8 bytes a pair, plus the rows).
+constexpr double large_sweep_pairs = 1e10;
+constexpr double large_sweep_bytes = 100e9;
+// Bytes of one row as written (measured at order 2000: ~190 in csv, ~390 in jsonl, at 17 digits).
+constexpr double row_bytes_csv = 200, row_bytes_jsonl = 400;
+
+std::string gigabytes(double b) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g GB", b / 1e9);
+  return buf;
+}
+
+// The sweep's cost before it starts: pairs (counted, or 3 M^2 / (2 pi^2) coprime pairs beyond the
+// counting limit) and scratch bytes; refused beyond the limits unless allowed.
+void check_sweep_size(const sweep_args& a, const sweep_config& cfg, const sweep_files& files) {
+  const double m = double(cfg.max_order), lo = double(std::max<std::int64_t>(cfg.min_order, 3));
+  const double all = cfg.max_order <= sweep_count_limit ? double(sweep_total_pairs(std::max<std::int64_t>(cfg.min_order, 3), cfg.max_order))
+                                                       : 3.0 / (2 * 9.869604401089358) * (m * m - lo * lo);
+  const double pairs = all / double(cfg.shard_count);
+  const double per_row = files.rows_path.empty() ? 0 : files.rows_format == sweep_format::jsonl ? row_bytes_jsonl : row_bytes_csv;
+  const double bytes = pairs * (8 + per_row * std::max(1.0, double(cfg.digits) / 17));
+  if (a.allow_large || (pairs <= large_sweep_pairs && bytes <= large_sweep_bytes)) return;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", pairs);
+  throw usage_error("this sweep has about " + std::string(buf) + " pairs and needs about " + gigabytes(bytes) +
+                    " of scratch and output (limits: 1e10 pairs, 100 GB): add --allow-large to run it anyway, or shard it");
+}
+
 sweep_config config_of(const sweep_args& a) {
+  if (a.max_order > (std::int64_t(1) << 40)) throw usage_error("--max-order must be <= 2^40 = 1099511627776");
+  if (a.min_order < 3 || a.min_order > a.max_order)
+    throw usage_error("--min-order must be in [3, --max-order], got " + std::to_string(a.min_order));
+  if (a.examples > 1000) throw usage_error("--examples must be <= 1000");
+  if (a.resume && a.fresh) throw usage_error("--resume and --fresh exclude each other");
   sweep_config cfg;
   cfg.max_order = a.max_order;
   cfg.min_order = a.min_order;
@@ -169,7 +204,7 @@ sweep_config config_of(const sweep_args& a) {
 }
 
 sweep_files files_of(const sweep_args& a) {
-  if (a.checkpoint < 0) throw usage_error("--checkpoint must be >= 0 seconds");
+  if (!(a.checkpoint >= 0) || a.checkpoint > 1e9) throw usage_error("--checkpoint must be in [0, 1e9] seconds");
   sweep_files files;
   files.rows_path = a.out;
   const bool jsonl_name = a.out.size() >= 6 && a.out.substr(a.out.size() - 6) == ".jsonl";
@@ -177,6 +212,13 @@ sweep_files files_of(const sweep_args& a) {
   files.summary_path = a.summary;
   files.state_path = a.state;
   files.resume = a.resume;
+  files.fresh = a.fresh;
+  // No file named: the default state ./gyrores-sweep.resume is shared by every such sweep run in
+  // this directory; they take turns on it (docs/formats.md, "File safety and locks").
+  if (a.out.empty() && a.summary.empty() && a.state.empty())
+    files.on_lock_wait = [](const std::string& why) {
+      std::fprintf(stderr, "gyrores sweep: %s: waiting for it to end (give --state FILE to run beside it)\n", why.c_str());
+    };
   files.checkpoint_seconds = a.checkpoint;
   return files;
 }
@@ -195,13 +237,17 @@ sweep_report run_at_precision(const sweep_args& a, const sweep_config& cfg, cons
 std::string run_sweep(const sweep_args& a) {
   const sweep_config cfg = config_of(a);
   const sweep_files files = files_of(a);
+  check_sweep_size(a, cfg, files);
   signal_scope signals;
   const sweep_report rep = run_at_precision(a, cfg, files);
   if (!rep.complete) {
-    std::string why = g_stop.load() ? "interrupted" : "stopped (--max-pairs)";
-    throw compute_error(why + " after " + with_commas(rep.done) + (rep.total ? " of " + with_commas(rep.total) : "") +
-                        " pairs; every finished pair is kept in the resume state '" + rep.state_path +
-                        "': run the same command with --resume to continue");
+    // Not "could not compute": a stop the user asked for, with its own status (cli_output.hpp).
+    const bool interrupted = g_stop.load();
+    throw command_exit{interrupted ? exit_interrupted : exit_stopped,
+                       std::string("gyrores sweep: ") + (interrupted ? "interrupted" : "stopped by --max-pairs") + " after " +
+                           with_commas(rep.done) + (rep.total ? " of " + with_commas(rep.total) : "") +
+                           " pairs; every finished pair is kept in the resume state '" + rep.state_path +
+                           "': run the same command with --resume to continue"};
   }
   return a.json ? rep.summary.dump(2) + "\n" : sweep_summary_text(rep.summary);
 }
@@ -225,6 +271,8 @@ command_runner install_sweep(CLI::App& app) {
            "decide degeneracy, paper-node, structure and asy-bound by exact integers and interval arithmetic "
            "(the lattice theorem): a pass is a proof, and the rows' values are the proved enclosures' midpoints");
   sub.flag("--resume", a->resume, "continue an interrupted run from its resume state");
+  sub.flag("--fresh", a->fresh, "discard a saved resume state and start again (without it, a saved state is refused)");
+  sub.flag("--allow-large", a->allow_large, "run a sweep beyond 1e10 pairs or 100 GB of scratch and output");
   sub.add("--digits", a->digits,
           "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits",
           show::with_default);
@@ -233,7 +281,8 @@ command_runner install_sweep(CLI::App& app) {
   sub.add("--examples", a->examples, "violating pairs listed per check", show::with_default);
   sub.add("--state", a->state, "resume state file (default: OUT.resume, else SUMMARY.resume, else ./gyrores-sweep.resume)");
   sub.add("--checkpoint", a->checkpoint, "seconds between resume checkpoints (0: only when stopping)", show::with_default);
-  sub.add("--max-pairs", a->max_pairs, "stop after this many pairs, leaving a resume state (0: no limit)", show::with_default);
+  sub.add("--max-pairs", a->max_pairs, "stop after this many pairs, leaving a resume state (exit 4; 0: no limit)",
+          show::with_default);
   sub.flag("--quiet", a->quiet, "no progress on stderr");
   sub.flag("--json", a->json, "print the summary as JSON (the --summary schema) instead of text");
   return [a] { return run_sweep(*a); };

@@ -1,10 +1,17 @@
 // gyrores: the command-line front end. It only parses, calls the library and prints; the
-// mathematics lives in include/gyrores/. Errors: one line on stderr, nothing on stdout,
-// exit 2 for bad input, 3 when a result could not be computed honestly.
+// mathematics lives in include/gyrores/. Errors: one line on stderr, nothing on stdout; the
+// exit statuses are the table of cli_output.hpp. Every write to stdout, and its final flush and
+// close, is checked: a full disk or a closed stdout is exit 2, "cannot write to stdout".
 // This is the one file that compiles CLI11 (header-only, ~8 s per file): main() and the
 // implementation of cli::options (cli_options.hpp), through which the subcommands declare
 // their options.
 #include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <map>
 
@@ -56,7 +63,34 @@ bool options::parsed() const { return app_->parsed(); }
 
 }  // namespace gyrores::cli
 
+#ifndef GYRORES_VERSION
+#define GYRORES_VERSION "unknown"
+#endif
+
 namespace gyrores::cli {
+
+// fd 1 was closed when the process started (it then holds /dev/null, see main()).
+bool g_stdout_was_closed = false;
+
+namespace {
+
+// Writes all of `text` to stdout and flushes it; false (errno set) if any byte could not be written.
+bool print_stdout(const std::string& text) {
+  if (text.empty()) return true;
+  if (g_stdout_was_closed) {
+    errno = EBADF;
+    return false;
+  }
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) return false;
+  return std::fflush(stdout) == 0;
+}
+
+}  // namespace
+
+int cannot_write_stdout(int err) {
+  std::cerr << "gyrores: error: cannot write to stdout: " << std::strerror(err) << "\n";
+  return exit_usage;
+}
 
 // The whole command line: parses argv and, when `execute`, runs the subcommand; returns the exit
 // status. main() is this with execute = true; the fuzz target tests/fuzz/fuzz_cli_args.cpp
@@ -64,17 +98,29 @@ namespace gyrores::cli {
 int run(int argc, char** argv, bool execute) {
   CLI::App app{"gyrores: certified analysis of energy exchange in gyroscopically coupled oscillators"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("gyrores ") + GYRORES_VERSION);
+  app.footer(
+      "Exit status: 0 ok (check: holds); 1 check: the certificate fails; 2 bad input or a file that cannot be read "
+      "or written; 3 could not compute honestly; 4 sweep stopped by --max-pairs (resume state kept); 130 interrupted.");
   std::map<std::string, command_runner> runners;
   for (auto& entry : command_registry()) runners[entry.name] = entry.install(app);
 
+  // A bare `gyrores`: the usage on stderr (it answers no question), exit 2.
+  if (argc <= 1) {
+    if (execute) std::cerr << app.help();
+    return exit_usage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
+    if (!execute) return 0;
+    return print_stdout(app.help()) ? 0 : cannot_write_stdout(errno);
   } catch (const CLI::CallForAllHelp&) {
-    std::cout << app.help("", CLI::AppFormatMode::All);
-    return 0;
+    if (!execute) return 0;
+    return print_stdout(app.help("", CLI::AppFormatMode::All)) ? 0 : cannot_write_stdout(errno);
+  } catch (const CLI::CallForVersion&) {
+    if (!execute) return 0;
+    return print_stdout(std::string("gyrores ") + GYRORES_VERSION + "\n") ? 0 : cannot_write_stdout(errno);
   } catch (const CLI::ParseError& e) {
     std::string msg = e.what();
     for (auto& ch : msg)
@@ -87,7 +133,7 @@ int run(int argc, char** argv, bool execute) {
   try {
     for (auto* sub : app.get_subcommands()) {
       std::string out = runners.at(sub->get_name())();
-      std::cout << out << std::flush;
+      if (!print_stdout(out)) return cannot_write_stdout(errno);
     }
     return 0;
   } catch (const command_exit& e) {
@@ -95,7 +141,7 @@ int run(int argc, char** argv, bool execute) {
     return e.status;
   } catch (const gyrores::interrupted&) {
     std::cerr << "gyrores: interrupted\n";
-    return 130;
+    return exit_interrupted;
   } catch (const gyrores::usage_error& e) {
     std::cerr << "gyrores: error: " << e.what() << "\n";
     return exit_usage;
@@ -112,5 +158,31 @@ int run(int argc, char** argv, bool execute) {
 
 // GYRORES_CLI_NO_MAIN: the CLI's sources linked into another program (tests/fuzz/).
 #ifndef GYRORES_CLI_NO_MAIN
-int main(int argc, char** argv) { return gyrores::cli::run(argc, argv, true); }
+namespace {
+
+// A standard descriptor closed at start would be taken by the first file the command opens, and
+// what is printed would go into that file: /dev/null holds its place, and stdout's writes fail
+// as if it were still closed (print_stdout).
+void reserve_standard_fds() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    const int n = ::open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+    if (n >= 0 && n != fd) {
+      ::dup2(n, fd);
+      ::close(n);
+    }
+    if (fd == 1) gyrores::cli::g_stdout_was_closed = true;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  reserve_standard_fds();
+  int status = gyrores::cli::run(argc, argv, true);
+  // The final flush and close: a full disk may only show here.
+  if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && status == 0) status = gyrores::cli::cannot_write_stdout(errno);
+  if (std::fclose(stdout) != 0 && status == 0) status = gyrores::cli::cannot_write_stdout(errno);
+  return status;
+}
 #endif

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,8 +12,6 @@
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 
 #include <gyrores/core/error.hpp>
@@ -26,45 +25,158 @@ namespace {
 
 }  // namespace
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail("cannot read", path, errno);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+namespace {
+
+// 16 hex digits from the kernel's random source: a temporary's name nobody can predict.
+std::string random_hex() {
+  unsigned char b[8] = {};
+  std::size_t got = 0;
+  if (int fd = ::open("/dev/urandom", O_RDONLY | O_CLOEXEC); fd >= 0) {
+    while (got < sizeof b) {
+      const ssize_t n = ::read(fd, b + got, sizeof b - got);
+      if (n <= 0) break;
+      got += std::size_t(n);
+    }
+    ::close(fd);
+  }
+  if (got < sizeof b) throw usage_error("cannot read /dev/urandom for a temporary file's name");
+  static const char hex[] = "0123456789abcdef";
+  std::string s;
+  for (unsigned char c : b) {
+    s.push_back(hex[c >> 4]);
+    s.push_back(hex[c & 15]);
+  }
+  return s;
+}
+
+std::string directory_of(const std::string& path) {
+  const auto slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+// write(2) until done; false with errno set on failure.
+bool write_all(int fd, const char* p, std::size_t n) {
+  while (n > 0) {
+    const ssize_t k = ::write(fd, p, n);
+    if (k < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    p += k;
+    n -= std::size_t(k);
+  }
+  return true;
+}
+
+const char* kind_of(mode_t m) {
+  if (S_ISDIR(m)) return "a directory";
+  if (S_ISLNK(m)) return "a symbolic link";
+  if (S_ISCHR(m) || S_ISBLK(m)) return "a device";
+  if (S_ISFIFO(m)) return "a FIFO";
+  if (S_ISSOCK(m)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
+
+std::string read_file(const std::string& path, std::uint64_t max_bytes, const char* what) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail("cannot read", path, errno);
+  struct closer {
+    int fd;
+    ~closer() { ::close(fd); }
+  } close_at_end{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) fail("cannot read", path, errno);
+  if (S_ISDIR(st.st_mode)) throw usage_error("cannot read '" + path + "': it is a directory");
+  if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > max_bytes)
+    throw usage_error("'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (the limit for " + what + ")");
+  std::string s;
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("cannot read", path, errno);
+    }
+    if (n == 0) return s;
+    // A device or pipe (or a file growing while read) is held to the same cap.
+    if (s.size() + std::size_t(n) > max_bytes)
+      throw usage_error("'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (the limit for " + what + ")");
+    s.append(buf, std::size_t(n));
+  }
 }
 
 bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
+
+void check_input_path(const std::string& path, bool allow_stream) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) fail("cannot read", path, errno);
+  if (S_ISDIR(st.st_mode)) throw usage_error("cannot read '" + path + "': it is a directory");
+  if (!allow_stream && !S_ISREG(st.st_mode))
+    throw usage_error("cannot read '" + path + "': it is " + kind_of(st.st_mode) + ", not a regular file");
+}
+
+void check_output_path(const std::string& path) {
+  if (path.empty()) throw usage_error("an output path is empty");
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0) {
+    if (!S_ISREG(st.st_mode))
+      throw usage_error("refusing to write '" + path + "': it is " + kind_of(st.st_mode) + ", not a regular file");
+  } else if (errno != ENOENT) {
+    fail("cannot write", path, errno);
+  }
+  const std::string dir = directory_of(path);
+  struct stat ds {};
+  if (::stat(dir.c_str(), &ds) != 0) fail("cannot write", path, errno);
+  if (!S_ISDIR(ds.st_mode)) throw usage_error("cannot write '" + path + "': '" + dir + "' is not a directory");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) fail("cannot write", path, errno);
+}
 
 void write_file_atomically(const std::string& path, std::string_view content) {
   write_file_atomically(path, [&](const byte_writer& w) { w(content); });
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(const byte_writer&)>& fill) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) fail("cannot write", path, errno);
-  int err = 0;
+  check_output_path(path);
+  struct stat old {};
+  const bool replaces = ::stat(path.c_str(), &old) == 0;
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." + random_hex();
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0) fail("cannot write", path, errno);
+  auto give_up = [&](int err) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    fail("cannot write", path, err);
+  };
   try {
     fill([&](std::string_view bytes) {
-      if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) {
-        err = errno;
-        throw usage_error("cannot write '" + path + "': " + std::strerror(err));
-      }
+      if (!write_all(fd, bytes.data(), bytes.size())) fail("cannot write", path, errno);
     });
   } catch (...) {
-    std::fclose(f);
-    std::remove(tmp.c_str());
+    ::close(fd);
+    ::unlink(tmp.c_str());
     throw;
   }
-  bool ok = std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
-  err = errno;
-  ok = (std::fclose(f) == 0) && ok;
-  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ok = false;
-    err = errno;
-  }
-  if (!ok) {
-    std::remove(tmp.c_str());
+  // The replaced file's permission bits (a mode-600 output stays 600); a new file gets 0666
+  // less the umask, as open() gave it.
+  if (replaces && ::fchmod(fd, old.st_mode & 07777) != 0) give_up(errno);
+  if (::fsync(fd) != 0) give_up(errno);
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
     fail("cannot write", path, err);
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    fail("cannot write", path, err);
+  }
+  // The rename itself durable (best effort: some file systems refuse fsync on a directory).
+  if (int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
   }
 }
 
@@ -77,12 +189,130 @@ void remove_stale_temporaries(const std::string& path) noexcept {
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::string rest = name.substr(prefix.size());
+    // PID, or PID.RANDOM (io/files.hpp)
+    const auto dot = rest.find('.');
+    const std::string digits = rest.substr(0, dot);
+    if (dot != std::string::npos && (rest.size() - dot - 1 != 16 ||
+                                     rest.find_first_not_of("0123456789abcdef", dot + 1) != std::string::npos))
+      continue;
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
     const pid_t pid = pid_t(std::stol(digits));
     // A live process (ours included) may still be writing it; EPERM means alive too.
     if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(it->path(), ec);
   }
+}
+
+std::string file_identity(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return "inode:" + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  std::error_code ec;
+  const auto canon = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  return "path:" + (ec ? path : canon.string());
+}
+
+void check_distinct_paths(const std::vector<named_path>& paths) {
+  std::vector<std::string> ids(paths.size());
+  for (std::size_t i = 0; i < paths.size(); ++i)
+    if (!paths[i].path.empty()) ids[i] = file_identity(paths[i].path);
+  for (std::size_t i = 0; i < paths.size(); ++i)
+    for (std::size_t j = i + 1; j < paths.size(); ++j)
+      if (!ids[i].empty() && ids[i] == ids[j])
+        throw usage_error(paths[i].role + " '" + paths[i].path + "' and " + paths[j].role + " '" + paths[j].path +
+                          "' are the same file");
+}
+
+namespace {
+
+std::string lock_owner(int fd) {
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  std::string s(buf, n > 0 ? std::size_t(n) : 0);
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  return s.empty() || s.find_first_not_of("0123456789") != std::string::npos ? std::string() : " (pid " + s + ")";
+}
+
+std::string in_use_message(const std::string& path, int fd) {
+  return "'" + path + "' is in use by another gyrores run" + lock_owner(fd);
+}
+
+[[noreturn]] void in_use(const std::string& path, int fd) {
+  const std::string msg = in_use_message(path, fd);
+  ::close(fd);
+  throw usage_error(msg + "; wait for it to end or choose other files");
+}
+
+}  // namespace
+
+path_lock path_lock::acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy) {
+  const std::string lp = path + ".lock";
+  bool told = false;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd < 0) fail("cannot create the lock file", lp, errno);
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      int err = errno;
+      if (err == EWOULDBLOCK) {
+        if (!on_busy) in_use(path, fd);
+        if (!told) on_busy(in_use_message(path, fd));
+        told = true;
+        while ((err = ::flock(fd, LOCK_EX) == 0 ? 0 : errno) == EINTR) {
+        }
+      }
+      if (err != 0) {
+        ::close(fd);
+        fail("cannot lock", lp, err);
+      }
+    }
+    // The holder before us may have removed the file after we opened it (it unlinks, then
+    // unlocks): our lock is then on a name nobody else sees. Retry on the current file.
+    struct stat a {}, b {};
+    if (::fstat(fd, &a) != 0 || ::stat(lp.c_str(), &b) != 0 || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
+      ::close(fd);
+      continue;
+    }
+    const std::string pid = std::to_string(::getpid()) + "\n";
+    if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
+      const int err = errno;
+      ::unlink(lp.c_str());
+      ::close(fd);
+      fail("cannot write the lock file", lp, err);
+    }
+    path_lock l;
+    l.fd_ = fd;
+    l.lock_path_ = lp;
+    return l;
+  }
+  throw usage_error("cannot lock '" + path + "': its lock file keeps changing");
+}
+
+void path_lock::check_not_written(const std::string& path) {
+  const std::string lp = path + ".lock";
+  const int fd = ::open(lp.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return;  // no lock file: nobody writes it now
+  if (::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) in_use(path, fd);
+  ::close(fd);  // releases the shared lock
+}
+
+path_lock::~path_lock() {
+  if (fd_ < 0) return;
+  ::unlink(lock_path_.c_str());  // while still holding it (see acquire)
+  ::close(fd_);
+}
+
+path_lock::path_lock(path_lock&& o) noexcept : fd_(o.fd_), lock_path_(std::move(o.lock_path_)) { o.fd_ = -1; }
+
+path_lock& path_lock::operator=(path_lock&& o) noexcept {
+  if (this != &o) {
+    if (fd_ >= 0) {
+      ::unlink(lock_path_.c_str());
+      ::close(fd_);
+    }
+    fd_ = o.fd_;
+    lock_path_ = std::move(o.lock_path_);
+    o.fd_ = -1;
+  }
+  return *this;
 }
 
 std::uint64_t file_size(const std::string& path) {
@@ -122,7 +352,17 @@ void ensure_directory(const std::string& dir) {
 }
 
 void truncate_file(const std::string& path, std::uint64_t size) {
-  if (::truncate(path.c_str(), off_t(size)) != 0) fail("cannot truncate", path, errno);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) fail("cannot truncate", path, errno);
+  struct stat st {};
+  const bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+  const int err = ok ? 0 : errno ? errno : EINVAL;
+  if (!ok || ::ftruncate(fd, off_t(size)) != 0) {
+    const int e = ok ? errno : err;
+    ::close(fd);
+    fail("cannot truncate", path, e);
+  }
+  ::close(fd);
 }
 
 void rename_file(const std::string& from, const std::string& to) {
@@ -132,8 +372,23 @@ void rename_file(const std::string& from, const std::string& to) {
 void remove_file(const std::string& path) noexcept { std::remove(path.c_str()); }
 
 append_file::append_file(const std::string& path, mode m) : path_(path) {
-  f_ = std::fopen(path.c_str(), m == mode::create ? "wb" : "ab");
-  if (!f_) fail(m == mode::create ? "cannot create" : "cannot open", path, errno);
+  // Never through a symbolic link, never onto a device or directory (io/files.hpp).
+  const int flags = O_WRONLY | O_NOFOLLOW | O_CLOEXEC | (m == mode::create ? O_CREAT | O_TRUNC : O_CREAT | O_APPEND);
+  const char* what = m == mode::create ? "cannot create" : "cannot open";
+  // O_NONBLOCK: a FIFO planted there must not block the open; cleared for the regular file.
+  const int fd = ::open(path.c_str(), flags | O_NONBLOCK, 0666);
+  if (fd < 0) fail(what, path, errno);
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || ::fcntl(fd, F_SETFL, flags & O_APPEND) != 0) {
+    ::close(fd);
+    throw usage_error(std::string(what) + " '" + path + "': not a regular file");
+  }
+  f_ = ::fdopen(fd, m == mode::create ? "wb" : "ab");
+  if (!f_) {
+    const int err = errno;
+    ::close(fd);
+    fail(what, path, err);
+  }
 }
 
 append_file::~append_file() {

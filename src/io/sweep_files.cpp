@@ -31,7 +31,7 @@ json read_state(const std::string& state, const json& run_files) {
                       "' (nothing to resume, or a different rows, summary or state path)");
   json st;
   try {
-    st = json::parse(read_file(state));
+    st = json_parse_strict(read_file(state, sweep_json_read_limit, "a resume state"));
   } catch (const json::exception& e) {
     throw usage_error("cannot resume: '" + state + "' is not a resume state: " + e.what());
   }
@@ -60,6 +60,7 @@ sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_file
   if (cfg.max_order <= sweep_count_limit)
     total_ = sweep_shard_pairs(sweep_total_pairs(cfg.min_order, cfg.max_order), cfg.shard_index, cfg.shard_count);
   acc_.max_examples = cfg.max_examples;
+  check_paths_and_lock();
   // A run killed while replacing one of these leaves PATH.tmp.PID behind (never the final name).
   for (const std::string& p : {state_, files.summary_path, files.summary_path + ".values"})
     if (!p.empty() && p != ".values") remove_stale_temporaries(p);
@@ -80,6 +81,28 @@ sweep_file_session::sweep_file_session(const sweep_config& cfg, const sweep_file
   }
   done_ = start_;
   t0_ = std::chrono::steady_clock::now();
+}
+
+// Before the first pair: no two of the run's files are one file, each can be written, and no
+// other gyrores run holds them; a saved state is never discarded silently.
+void sweep_file_session::check_paths_and_lock() {
+  const bool shard_values = !files_.summary_path.empty() && cfg_.shard_count > 1;
+  const std::vector<named_path> paths{{"the rows file", files_.rows_path},
+                                      {"the rows file's scratch", rows_ ? rows_part_ : std::string()},
+                                      {"the summary", files_.summary_path},
+                                      {"the summary's values file", shard_values ? files_.summary_path + ".values" : ""},
+                                      {"the resume state", state_},
+                                      {"the resume state's values", values_}};
+  check_distinct_paths(paths);
+  for (const auto& p : paths)
+    if (!p.path.empty()) check_output_path(p.path);
+  // One lock per output the user named, so that two runs sharing any of them collide; the
+  // state's lock also keeps merge and a resume away while this run holds it.
+  locks_.push_back(path_lock::acquire(state_, files_.on_lock_wait));
+  for (const std::string& p : {files_.summary_path, files_.rows_path})
+    if (!p.empty()) locks_.push_back(path_lock::acquire(p));
+  if (!files_.resume && file_exists(state_) && !files_.fresh)
+    throw usage_error("a saved run exists at '" + state_ + "': use --resume to continue it, or --fresh to discard it");
 }
 
 double sweep_file_session::elapsed() const {
@@ -113,6 +136,15 @@ void sweep_file_session::restore() {
   // A run stopped after renaming its finished rows file but before removing the state (the last
   // two steps of finish_complete): the file is taken back, its end line cut below and rewritten.
   if (!file_exists(rows_part_) && file_exists(files_.rows_path)) rename_file(files_.rows_path, rows_part_);
+  // Longer than recorded is what a kill between checkpoints leaves (cut off and recomputed);
+  // shorter means the file was changed from outside: never padded (truncate would add zeros).
+  if (!file_exists(rows_part_))
+    throw usage_error("cannot resume: the rows file '" + rows_part_ + "' is missing (the state records " +
+                      std::to_string(rows_bytes_) + " bytes)");
+  if (const std::uint64_t have = file_size(rows_part_); have < rows_bytes_)
+    throw usage_error("cannot resume: the rows file '" + rows_part_ + "' has " + std::to_string(have) +
+                      " bytes, fewer than the " + std::to_string(rows_bytes_) +
+                      " its state records (changed from outside?): start again with --fresh");
   truncate_file(rows_part_, rows_bytes_);
   rows_file_ = append_file(rows_part_, append_file::mode::append);
 }
@@ -194,9 +226,10 @@ void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
   if (!files_.summary_path.empty()) {
     if (cfg_.shard_count > 1) {
       const std::string vpath = files_.summary_path + ".values";
-      sweep_write_values_file(vpath, acc_.t_ratios);
+      const json digest = sweep_write_values_file(vpath, acc_.t_ratios);
       auto slash = vpath.rfind('/');
       summary["values_file"] = slash == std::string::npos ? vpath : vpath.substr(slash + 1);
+      summary["values_check"] = digest;
     }
     write_file_atomically(files_.summary_path, summary.dump(2) + "\n");
   }

@@ -5,6 +5,7 @@
 #include <set>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/io/files.hpp>
 #include <gyrores/io/sweep_rows.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 
@@ -85,6 +86,8 @@ json merge_inputs(const std::vector<sweep_input>& in) {
 }  // namespace
 
 sweep_input sweep_read_output(const std::string& path) {
+  check_input_path(path);
+  path_lock::check_not_written(path);
   std::ifstream in(path);
   if (!in) throw usage_error("cannot read '" + path + "'");
   std::string first;

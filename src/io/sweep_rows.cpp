@@ -190,7 +190,7 @@ void read_csv_rows(std::istream& in, const std::string& path, rows_reader& rd) {
   std::vector<std::string> fields;
   const field_getter get = [&](const char* k) -> std::string { return fields.at(index.at(k)); };
   while (std::getline(in, line)) {
-    if (line.rfind(csv_end_tag, 0) == 0) return rd.end(json::parse(line.substr(csv_end_tag.size())));
+    if (line.rfind(csv_end_tag, 0) == 0) return rd.end(json_parse_strict(line.substr(csv_end_tag.size())));
     fields = csv_split_line(line);
     if (fields.size() != header.size()) throw usage_error("'" + path + "': malformed row: " + line);
     rd.r.acc.add(record_from_fields(get, rd.keep_text));
@@ -209,7 +209,7 @@ void read_jsonl_rows(std::istream& in, rows_reader& rd) {
   };
   std::string line;
   while (std::getline(in, line)) {
-    row = json::parse(line);
+    row = json_parse_strict(line);
     if (row.contains("gyrores_sweep_end")) return rd.end(row.at("gyrores_sweep_end"));
     rd.r.acc.add(record_from_fields(get, rd.keep_text));
   }
@@ -227,10 +227,10 @@ sweep_input sweep_read_rows(const std::string& path) {
   if (!std::getline(in, line)) throw usage_error("'" + path + "' is empty");
   try {
     if (line.rfind(csv_tag, 0) == 0) {
-      rd.set_run(json::parse(line.substr(csv_tag.size())));
+      rd.set_run(json_parse_strict(line.substr(csv_tag.size())));
       read_csv_rows(in, path, rd);
     } else {
-      auto head = json::parse(line);
+      auto head = json_parse_strict(line);
       if (!head.contains("gyrores_sweep_rows")) throw usage_error("'" + path + "' is not a gyrores sweep rows file");
       rd.set_run(head.at("gyrores_sweep_rows"));
       read_jsonl_rows(in, rd);

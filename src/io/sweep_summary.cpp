@@ -231,6 +231,7 @@ json sweep_summary_core(json j) {
   j.erase("seconds");
   j.erase("run");
   j.erase("values_file");
+  j.erase("values_check");
   return j;
 }
 
@@ -254,7 +255,7 @@ sweep_input sweep_read_summary(const std::string& path) {
   r.path = path;
   json j;
   try {
-    j = json::parse(read_file(path));
+    j = json_parse_strict(read_file(path, sweep_json_read_limit, "a sweep summary"));
   } catch (const json::exception& e) {
     throw usage_error("'" + path + "' is not JSON: " + e.what());
   }
@@ -271,6 +272,14 @@ sweep_input sweep_read_summary(const std::string& path) {
     if (slash != std::string::npos) vf = path.substr(0, slash + 1) + vf;
   }
   r.acc.t_ratios = sweep_read_values_file(vf);
+  // The values file must be the one this summary was written with (merge would otherwise mix
+  // another shard's values into the quantiles).
+  if (!j.contains("values_check"))
+    throw usage_error("'" + path + "' records no values_check for its values file (written before checksums): run that shard again");
+  const json digest = sweep_values_digest(r.acc.t_ratios);
+  if (digest != j.at("values_check"))
+    throw usage_error("the values file '" + vf + "' does not match '" + path + "' (values_check " +
+                      j.at("values_check").dump() + ", the file gives " + digest.dump() + ")");
   return r;
 }
 

@@ -5,6 +5,12 @@
 // Every failure throws usage_error naming the path and the system's reason: the user named a
 // path that cannot be read or written (a missing directory, no permission, a full disk). A
 // failed write never leaves a half-written file under the final name.
+//
+// Safety rules every output follows (docs/formats.md, "Files"): an output that exists must be a
+// regular file (a directory, device, FIFO or symbolic link is refused up front, never replaced
+// or followed); temporaries are created with O_CREAT | O_EXCL | O_NOFOLLOW under an unpredictable
+// name, so nothing planted beside the output is ever written through; a replaced file keeps its
+// permission bits. Inputs are read with a size cap.
 #pragma once
 #include <cstdint>
 #include <cstddef>
@@ -12,21 +18,42 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace gyrores {
 
-// The whole file as bytes.
-std::string read_file(const std::string& path);
+// The whole file as bytes, at most max_bytes of them: usage_error "'PATH' is larger than N
+// bytes (the limit for WHAT)" beyond, and "'PATH' is a directory" for a directory. The file may
+// be a pipe or device (read until its end or the cap, never trusted for its size).
+// The caps (why these sizes: docs/formats.md, "Size caps"):
+inline constexpr std::uint64_t default_read_limit = std::uint64_t(256) << 20;
+inline constexpr std::uint64_t certificate_read_limit = std::uint64_t(4) << 20;   // 4 MiB
+inline constexpr std::uint64_t sweep_json_read_limit = std::uint64_t(64) << 20;   // 64 MiB: states, summaries
+std::string read_file(const std::string& path, std::uint64_t max_bytes = default_read_limit,
+                      const char* what = "a gyrores input");
 
 bool file_exists(const std::string& path);
 
-// Replaces `path` atomically: the content goes to a temporary file in the same directory
-// (path + ".tmp." + pid), is flushed and fsync'ed, then renamed over `path`. On failure the
-// temporary file is removed and `path` is untouched.
+// Refuses (usage_error, one line) an input that is missing, a directory, or (unless
+// `allow_stream`) not a regular file: merge reads its inputs twice and by offset, which a pipe or
+// device cannot give.
+void check_input_path(const std::string& path, bool allow_stream = false);
+
+// Refuses (usage_error, one line) an output path that cannot be a gyrores output: it exists and
+// is not a regular file (directory, device, FIFO, socket, symbolic link), or its directory is
+// missing or not writable. Commands call it for every output before any work.
+void check_output_path(const std::string& path);
+
+// Replaces `path` atomically: check_output_path, then the content goes to a new temporary file
+// in the same directory (path + ".tmp." + pid + "." + 16 random hex digits, created with
+// O_CREAT | O_EXCL | O_NOFOLLOW), is fsync'ed, given the replaced file's permission bits, and
+// renamed over `path` (the directory is then fsync'ed). On failure the temporary file is
+// removed and `path` is untouched.
 void write_file_atomically(const std::string& path, std::string_view content);
 
 // Removes the temporary files of write_file_atomically(path, ...) that a killed process left
-// behind: `path.tmp.PID` for a PID no longer running (never throws). Run before a sweep starts.
+// behind: `path.tmp.PID[.RANDOM]` for a PID no longer running (never throws). Run before a
+// sweep starts.
 void remove_stale_temporaries(const std::string& path) noexcept;
 
 // The same for content too large to hold: `fill` is given a function that appends bytes to the
@@ -45,6 +72,45 @@ void read_file_range(const std::string& path, std::uint64_t offset, std::uint64_
 
 // Creates a directory and its parents (nothing to do if it exists).
 void ensure_directory(const std::string& dir);
+
+// What names a file for collision checks: "dev:inode" when it exists, else its canonical path
+// (symbolic links of the existing directories resolved), so that two spellings of one file,
+// existing or not, give the same key.
+std::string file_identity(const std::string& path);
+
+// A named path of a command: what it is for (in messages) and the path.
+struct named_path {
+  std::string role;  // "--out", "--summary", "input", ...
+  std::string path;
+};
+// usage_error "ROLE1 'P1' and ROLE2 'P2' are the same file" if two of the non-empty paths name
+// one file (file_identity). Commands call it on all their inputs, outputs and scratch files
+// before any work.
+void check_distinct_paths(const std::vector<named_path>& paths);
+
+// An exclusive advisory lock (flock) on PATH.lock, held until destruction, when the lock file
+// is removed. acquire() does not wait: if another process holds it, usage_error
+// "'PATH' is in use by another gyrores run (pid N)" -- unless `on_busy` is given, which is then
+// called once with that message and the lock waited for (a path the user did not name, shared
+// by default: see sweep_files::on_lock_wait). Locks taken by one process on distinct
+// paths nest. The lock file holds the owner's pid, for that message only.
+class path_lock {
+ public:
+  path_lock() = default;
+  static path_lock acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy = {});
+  // For an input: fails as acquire() does if a writer holds PATH.lock, else takes nothing (no
+  // lock file is created beside inputs).
+  static void check_not_written(const std::string& path);
+  ~path_lock();
+  path_lock(path_lock&& o) noexcept;
+  path_lock& operator=(path_lock&& o) noexcept;
+  path_lock(const path_lock&) = delete;
+  path_lock& operator=(const path_lock&) = delete;
+
+ private:
+  int fd_ = -1;
+  std::string lock_path_;
+};
 
 // Cuts a file to `size` bytes (used to drop what a resume does not trust).
 void truncate_file(const std::string& path, std::uint64_t size);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/integer.hpp>
@@ -20,6 +21,11 @@ using json = nlohmann::ordered_json;
 // A JSON number with the exact decimal digits of v, whatever its size (see json_dump).
 json json_integer(const big_int& v);
 json json_integer(const std::string& decimal);
+
+// Parses a whole JSON text like json::parse, but an object with the same key twice is refused
+// (json_value_error naming the key) instead of keeping the last one: every file gyrores reads
+// goes through it (docs/formats.md). Syntax errors throw json::parse_error as json::parse does.
+json json_parse_strict(std::string_view text);
 
 // j.dump(indent) with every json_integer marker replaced by its digits.
 std::string json_dump(const json& j, int indent = 2);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <gyrores/core/real.hpp>
 #include <gyrores/io/files.hpp>
@@ -24,6 +25,12 @@ struct sweep_files {
   std::string summary_path;  // empty: no summary file
   std::string state_path;    // empty: derived (sweep_default_state_path)
   bool resume = false;
+  // Without resume, a saved state is refused ("a saved run exists") unless fresh discards it.
+  bool fresh = false;
+  // Set: the state's lock, when another run holds it, is waited for (this is called once with
+  // the reason) instead of refused. For a state path nobody named (./gyrores-sweep.resume of two
+  // sweeps without files in one directory): the runs then take turns instead of failing.
+  std::function<void(const std::string&)> on_lock_wait;
   double checkpoint_seconds = 300;  // periodic checkpoints (0: only when stopping early)
   // t_first/proxy values held in memory before they go to the state's values file (8 MB; the
   // file is read back for the quantiles). Tests make it small.
@@ -67,6 +74,7 @@ class sweep_file_session {
   sweep_report finish(const sweep_outcome& out);
 
  private:
+  void check_paths_and_lock();
   void start_fresh();
   void restore();
   void restore_values(std::uint64_t count);
@@ -78,6 +86,7 @@ class sweep_file_session {
   const sweep_files& files_;
   const sweep_progress& progress_;
   json run_, run_files_;
+  std::vector<path_lock> locks_;  // the outputs' locks, held for the whole run (io/files.hpp)
   std::string state_, values_, rows_part_;
   bool rows_;
   append_file rows_file_;

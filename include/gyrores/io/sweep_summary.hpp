@@ -20,7 +20,8 @@ sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_exa
 // The summary JSON of a finished sweep described by `run` (computes the quantiles: a few passes
 // over a.t_ratios). values_file is null; a shard run's driver sets it.
 json sweep_summary_json(const sweep_accumulator& a, const json& run, double seconds);
-// The parts of a summary that a merge must reproduce exactly (drops seconds, run, values_file).
+// The parts of a summary that a merge must reproduce exactly (drops seconds, run, values_file,
+// values_check).
 json sweep_summary_core(json summary);
 // The summary as `gyrores sweep` and `gyrores merge` print it.
 std::string sweep_summary_text(const json& summary);

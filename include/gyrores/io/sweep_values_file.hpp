@@ -7,16 +7,24 @@
 #include <cstdint>
 #include <string>
 
+#include <gyrores/io/json.hpp>
 #include <gyrores/sweep/values.hpp>
 
 namespace gyrores {
+
+// What a shard summary records of its values file ("values_check", docs/formats.md) and merge
+// compares: the count, the smallest and largest value, and the FNV-1a 64-bit hash of the
+// doubles' bytes (host order). A file swapped for another shard's, or edited, differs in one of
+// them (FNV-1a guards against accidents, not against a forger: the summary is not signed).
+json sweep_values_digest(const sweep_values& v);
 
 // Replays `count` doubles of `path` from byte `offset` (a usage_error at replay if the file is
 // shorter or unreadable by then).
 sweep_value_source sweep_values_file_source(const std::string& path, std::uint64_t offset, std::uint64_t count);
 
-// Writes every value of v as a values file (header, count, doubles), atomically.
-void sweep_write_values_file(const std::string& path, const sweep_values& v);
+// Writes every value of v as a values file (header, count, doubles), atomically; returns the
+// digest of what it wrote (sweep_values_digest).
+json sweep_write_values_file(const std::string& path, const sweep_values& v);
 
 // The values of a values file, as a source; usage_error if it is not one or its length
 // disagrees with its count.
