@@ -27,6 +27,7 @@ GIL and stop within a fraction of a second on Ctrl-C (``KeyboardInterrupt``).
 """
 
 import copy as _copy
+import fractions as _fractions
 import json as _json
 import os as _os
 
@@ -42,8 +43,10 @@ __all__ = [
     "certify", "check", "coupling", "design", "enumerate_pairs", "pair", "pairs", "pareto", "sweep",
 ]
 
-# Keys whose strings are the caller's input echoed back, never converted.
-_ECHO_KEYS = frozenset({"input", "tmax", "beat", "horizon", "n2", "format", "theorem", "reason", "note",
+# Keys whose values are exact rationals as text ("1/12", "17"): fractions.Fraction.
+_RATIONAL_KEYS = frozenset({"tmax", "beat", "horizon", "n2"})
+# Keys whose strings are text (or the caller's input echoed back), never converted.
+_ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason", "note",
                         "inf_reason", "horizon_source", "orientation", "orientation_meaning", "time", "problem"})
 _DOUBLE_DIGITS = 15  # up to here reals are floats
 _FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then more if undecided)
@@ -64,9 +67,20 @@ class PairResult(Result):
         return self.__dict__["_raw_source"]()
 
     def __repr__(self):
-        shown = ", ".join(f"{k}={self[k]!r}" for k in ("r_res", "theta_first", "t_first", "n"))
-        return (f"PairResult(tau={self['tau']}, sigma={self['sigma']}, {shown}, minimisers={len(self['minimisers'])}, "
+        shown = ", ".join(f"{k}={_short(self[k])}" for k in ("r_res", "theta_first", "t_first", "n"))
+        return (f"PairResult(tau={_short(self['tau'])}, sigma={_short(self['sigma'])}, {shown}, "
+                f"minimisers={len(self['minimisers'])}, "
                 f"degenerate={self['degenerate']}, digits={self['digits']}, proved by {self['theorem']})")
+
+
+def _short(value):
+    """repr of a number, or its size where Python's int <-> text limit would refuse it."""
+    if isinstance(value, int) and value.bit_length() > 4000 * 3:
+        return f"<int of about {int(value.bit_length() * 0.30103) + 1} digits>"
+    try:
+        return repr(value)
+    except ValueError:
+        return f"<{type(value).__name__} too large to print>"
 
 
 class CheckResult(Result):
@@ -82,12 +96,18 @@ class CheckResult(Result):
 def _convert(value, real, key=None):
     """A JSON-shaped value as Results and tuples, its real texts converted by `real`."""
     if isinstance(value, dict):
-        return Result({k: v if k in _ECHO_KEYS else _convert(v, real, k) for k, v in value.items()})
+        return Result({k: _rational(v) if k in _RATIONAL_KEYS else v if k in _ECHO_KEYS else _convert(v, real, k)
+                       for k, v in value.items()})
     if isinstance(value, list):
         return tuple(_convert(v, real, key) for v in value)
     if isinstance(value, str) and key not in _ECHO_KEYS and _numbers.is_real_text(value):
         return real(value)
     return value
+
+
+def _rational(value):
+    """An exact rational of the library's JSON ("1/12", "17", "0.25") as a Fraction."""
+    return _fractions.Fraction(value) if isinstance(value, str) else value
 
 
 def _real(digits):
