@@ -401,7 +401,7 @@ def _table(columns):
     """The row columns of the library as one NumPy structured array."""
     import numpy as np
     columns["failed"] = columns["failed"].astype(bool)
-    columns["note"] = np.array(columns["note"], dtype=object)
+    columns["note"] = np.array(columns["note"], dtype=str)  # "<U1" when no row has a note
     table = np.empty(len(columns["tau"]), dtype=[(name, col.dtype) for name, col in columns.items()])
     for name, col in columns.items():
         table[name] = col
@@ -414,7 +414,7 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
 
     Returns (rows, summary): rows a NumPy structured array, one record per pair in enumeration
     order, with the columns of ``gyrores sweep --out`` (not applicable: NaN for reals, -1 for
-    flags; check_* columns 1 pass, 0 fail, -1 not run; failed bool; note str), or None when
+    flags; check_* columns 1 pass, 0 fail, -1 not run; failed bool; note text, "" for most), or None when
     rows=False; summary the Result of ``gyrores sweep --json``. The work runs on `threads` workers
     (0: every core) with the GIL released; progress, if given, is called as progress(done, total)
     after every block of pairs (it may call gyrores itself), and an exception it raises (or
@@ -469,6 +469,18 @@ def pairs(taus, sigmas, certified=False, checks="default", threads=0):
         raise UsageError(f"pairs(): taus and sigmas differ in length ({len(t)} and {len(s)})")
     if not isinstance(checks, str):
         raise UsageError(f"pairs(): checks must be text, got {type(checks).__name__}")
-    columns = _gyrores._pairs(t, s, checks, _args.flag(certified, "pairs", "certified"),
-                              _args.bounded(threads, "pairs", "threads", 0, 4096))
-    return _table(columns)
+    import numpy as np
+    certified = _args.flag(certified, "pairs", "certified")
+    threads = _args.bounded(threads, "pairs", "threads", 0, 4096)
+    table = np.empty(len(t), dtype=np.dtype(_gyrores._row_fields()))
+    table["note"] = ""
+    notes = _gyrores._pairs_into(np.ascontiguousarray(t), np.ascontiguousarray(s), checks, certified, threads, table)
+    if notes:  # rare (rows that failed): widen the note field to the longest
+        width = max(len(text) for _, text in notes)
+        wide = np.empty(len(t), dtype=[(n, f if n != "note" else f"<U{width}") for n, f in _gyrores._row_fields()])
+        for name in table.dtype.names:
+            wide[name] = table[name]
+        for i, text in notes:
+            wide["note"][i] = text
+        table = wide
+    return table

@@ -1,6 +1,7 @@
 // gyrores.pairs: the sweep's row (sweep/evaluate.hpp, in double, or from the proofs with
-// certified) of every pair of two int64 arrays, on worker threads without the GIL, as the
-// columns of row_columns.hpp. Ctrl-C stops it between chunks (interruptible.hpp).
+// certified) of every pair of two int64 arrays, written by worker threads without the GIL
+// straight into a NumPy structured array (row_record.hpp). Ctrl-C stops it between chunks
+// (interruptible.hpp).
 #include <pybind11/numpy.h>
 
 #include <algorithm>
@@ -16,7 +17,7 @@
 
 #include "common.hpp"
 #include "interruptible.hpp"
-#include "row_columns.hpp"
+#include "row_record.hpp"
 
 namespace gyrores::python {
 namespace {
@@ -25,16 +26,23 @@ namespace {
 // soon and the workers stay balanced.
 constexpr std::size_t chunk_pairs = 256;
 
-// Every row of (taus[i], sigmas[i]), in input order; usage_error naming the first invalid pair.
-std::vector<sweep_row<double>> evaluate_rows(const std::vector<std::int64_t>& taus, const std::vector<std::int64_t>& sigmas,
-                                             const sweep_config& cfg, unsigned threads, const stop_token& stop) {
-  const std::size_t n = taus.size();
-  std::vector<sweep_row<double>> rows(n);
+// One note of a row that has one (most have none), for the table's object field.
+struct row_note {
+  std::size_t index;
+  std::string text;
+};
+
+// Writes the row of (taus[i], sigmas[i]) into record i of `table` (n records of layout.itemsize
+// bytes) on `threads` workers; returns the notes. usage_error naming the first invalid pair.
+std::vector<row_note> fill_rows(const std::int64_t* taus, const std::int64_t* sigmas, std::size_t n, char* table,
+                                const row_layout& layout, const sweep_config& cfg, unsigned threads,
+                                const stop_token& stop) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
-  std::mutex error_mtx;
+  std::mutex mtx;  // guards error, error_index and notes
   std::exception_ptr error;
   std::size_t error_index = n;
+  std::vector<row_note> notes;
   auto work = [&] {
     try {
       for (;;) {
@@ -45,9 +53,14 @@ std::vector<sweep_row<double>> evaluate_rows(const std::vector<std::int64_t>& ta
             if (taus[i] > sweep_max_order_limit || sigmas[i] > sweep_max_order_limit ||
                 taus[i] + sigmas[i] > sweep_max_order_limit)
               throw usage_error("tau + sigma must be <= 2^40 (use pair() beyond)");
-            rows[i] = sweep_evaluate<double>(resonant_pair<std::int64_t>(taus[i], sigmas[i]), cfg);
+            const auto row = sweep_evaluate<double>(resonant_pair<std::int64_t>(taus[i], sigmas[i]), cfg);
+            layout.write(table + std::ptrdiff_t(i) * layout.itemsize, row);
+            if (!row.note.empty()) {
+              std::lock_guard<std::mutex> lk(mtx);
+              notes.push_back({i, row.note});
+            }
           } catch (const usage_error& e) {
-            std::lock_guard<std::mutex> lk(error_mtx);
+            std::lock_guard<std::mutex> lk(mtx);
             if (i < error_index) {
               error_index = i;
               error = std::make_exception_ptr(usage_error("pairs(): (taus[" + std::to_string(i) + "], sigmas[" +
@@ -60,7 +73,7 @@ std::vector<sweep_row<double>> evaluate_rows(const std::vector<std::int64_t>& ta
         }
       }
     } catch (...) {
-      std::lock_guard<std::mutex> lk(error_mtx);
+      std::lock_guard<std::mutex> lk(mtx);
       if (!error) error = std::current_exception();
       failed = true;
     }
@@ -77,34 +90,39 @@ std::vector<sweep_row<double>> evaluate_rows(const std::vector<std::int64_t>& ta
   for (auto& t : pool) t.join();
   stop.throw_if_requested();
   if (error) std::rethrow_exception(error);
-  return rows;
+  return notes;
 }
 
-py::dict pairs_columns(py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> taus,
-                       py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> sigmas,
-                       const std::string& checks, bool certified, unsigned threads) {
-  if (taus.ndim() != 1 || sigmas.ndim() != 1 || taus.size() != sigmas.size())
-    throw usage_error("pairs(): taus and sigmas must be one-dimensional and of the same length");
-  // Copies: on Ctrl-C the work may outlive this call (interruptible.hpp).
-  std::vector<std::int64_t> t(taus.data(), taus.data() + taus.size()), s(sigmas.data(), sigmas.data() + sigmas.size());
+py::list pairs_into(py::array_t<std::int64_t, py::array::c_style> taus, py::array_t<std::int64_t, py::array::c_style> sigmas,
+                const std::string& checks, bool certified, unsigned threads, py::array table) {
+  if (taus.ndim() != 1 || sigmas.ndim() != 1 || taus.size() != sigmas.size() || table.ndim() != 1 ||
+      table.size() != taus.size() || !(table.flags() & py::array::c_style) || !table.writeable())
+    throw usage_error("pairs(): taus, sigmas and the table must be one-dimensional, contiguous and of the same length");
+  const row_layout layout = row_layout::of(table);
   sweep_config cfg;
   cfg.checks = sweep_parse_checks(checks);
   cfg.certified = certified;
-  auto cols = run_interruptible<std::shared_ptr<row_columns>>(
-      [t = std::move(t), s = std::move(s), cfg, threads](stop_token stop) {
-        const auto rows = evaluate_rows(t, s, cfg, threads, stop);
-        auto c = std::make_shared<row_columns>();
-        for (const auto& r : rows) c->add(r);
-        return c;
-      });
-  return columns_dict(*cols);
+  const std::int64_t* t = taus.data();
+  const std::int64_t* s = sigmas.data();
+  char* out = static_cast<char*>(table.mutable_data());
+  const auto n = std::size_t(taus.size());
+  // The arrays stay alive: this call holds them, and on a stop it waits for the workers, which
+  // look at the flag every chunk_pairs pairs (a millisecond or so).
+  const auto notes = run_interruptible<std::vector<row_note>>(
+      [=](stop_token stop) { return fill_rows(t, s, n, out, layout, cfg, threads, stop); }, on_stop::wait);
+  py::list found;
+  for (const auto& note : notes) found.append(py::make_tuple(note.index, note.text));
+  return found;
 }
 
 }  // namespace
 
 void bind_pairs(py::module_& m) {
-  m.def("_pairs", &pairs_columns, py::arg("taus"), py::arg("sigmas"), py::arg("checks"), py::arg("certified"),
-        py::arg("threads"), "The sweep's row columns of every (taus[i], sigmas[i]). Use gyrores.pairs.");
+  m.def("_row_fields", &row_fields, "[(name, format)] of a row's fields (the sweep's columns).");
+  m.def("_pairs_into", &pairs_into, py::arg("taus"), py::arg("sigmas"), py::arg("checks"), py::arg("certified"),
+        py::arg("threads"), py::arg("table"),
+        "Writes the sweep's row of every (taus[i], sigmas[i]) into table[i] but its note; returns the "
+        "notes [(i, text)] of the rows that have one. Use gyrores.pairs.");
 }
 
 }  // namespace gyrores::python

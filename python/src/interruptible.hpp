@@ -38,9 +38,14 @@ template <class R> struct interruptible_state {
 };
 }  // namespace detail
 
+// What to do when a signal handler raised: leave a work that has not stopped after a short grace
+// period running on its own, or wait for it (for a work that writes into a caller's buffer and
+// looks at the stop flag often).
+enum class on_stop { detach, wait };
+
 // Calls work(stop_token) on a new thread and returns its result (rethrowing its exception);
 // the calling thread must hold the GIL, work must not touch Python objects.
-template <class R, class Work> R run_interruptible(Work work) {
+template <class R, class Work> R run_interruptible(Work work, on_stop after_stop = on_stop::detach) {
   auto state = std::make_shared<detail::interruptible_state<R>>();
   std::thread worker([state, work = std::move(work)]() mutable {
     try {
@@ -73,7 +78,8 @@ template <class R, class Work> R run_interruptible(Work work) {
       if (signalled) {
         state->stop = true;
         // A short grace period so that a work which stops quickly is joined, not detached.
-        state->cv.wait_for(lk, std::chrono::milliseconds(50), [&] { return state->done; });
+        if (after_stop == on_stop::wait) state->cv.wait(lk, [&] { return state->done; });
+        else state->cv.wait_for(lk, std::chrono::milliseconds(50), [&] { return state->done; });
         break;
       }
     }
