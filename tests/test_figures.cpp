@@ -333,7 +333,7 @@ TEST_CASE("cli plot: without gnuplot the data and script are still written", "[f
 
 TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
   if (!cli_available()) return;
-  for (const char* bad : {"plot phase 6 5 --out x.pdf", "plot phase 6 4 --out x.svg", "plot phase --out x.svg",
+  for (const char* bad : {"plot phase 6 5 --out x.jpg", "plot phase 6 4 --out x.svg", "plot phase --out x.svg",
                           "plot phase 6 5 --n 2 --out x.svg", "plot phase 6 5 --size 10x10 --out x.svg",
                           "plot pareto --out x.svg", "plot"})
     check_rejected(bad);
