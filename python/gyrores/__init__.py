@@ -436,6 +436,40 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
     return (None if columns is None else _table(columns)), summary
 
 
+_PROVED_COLUMNS = ("n", "r_res", "h_min", "theta_first", "t_first", "t_min_paper")
+
+
+def _proved_pairs(taus, sigmas, digits, threads):
+    """pairs(..., digits=D): pair() of every pair on a thread pool, as a structured array."""
+    import concurrent.futures
+    import numpy as np
+    t = [_args.integer(v, "pairs", f"taus[{i}]") for i, v in enumerate(taus)]
+    s = [_args.integer(v, "pairs", f"sigmas[{i}]") for i, v in enumerate(sigmas)]
+    if len(t) != len(s):
+        raise UsageError(f"pairs(): taus and sigmas differ in length ({len(t)} and {len(s)})")
+    workers = threads or (_os.cpu_count() or 1)
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=workers)
+    try:
+        futures = [pool.submit(pair, a, b, digits) for a, b in zip(t, s)]
+        results = []
+        for i, f in enumerate(futures):
+            try:
+                results.append(f.result())
+            except UsageError as e:
+                raise UsageError(f"pairs(): (taus[{i}], sigmas[{i}]) = ({t[i]}, {s[i]}): {e}") from None
+    finally:  # on Ctrl-C or an error: drop the pairs not started
+        pool.shutdown(wait=False, cancel_futures=True)
+    small = all(-2**63 <= v < 2**63 for v in t + s)
+    integer = np.int64 if small else object
+    real = np.float64 if digits <= _DOUBLE_DIGITS else object
+    dtype = [("tau", integer), ("sigma", integer)] + [(k, real) for k in _PROVED_COLUMNS] + [
+        ("degenerate", bool), ("minimisers", np.int32)]
+    table = np.empty(len(results), dtype=dtype)
+    for i, r in enumerate(results):
+        table[i] = (r.tau, r.sigma, *(r[k] for k in _PROVED_COLUMNS), r.degenerate, len(r.minimisers))
+    return table
+
+
 def _int64_column(values, name):
     """A one-dimensional int64 array of the pair members `values` (any iterable of integers)."""
     import numpy as np
@@ -453,16 +487,23 @@ def _int64_column(values, name):
     return np.array(items, dtype=np.int64)
 
 
-def pairs(taus, sigmas, certified=False, checks="default", threads=0):
-    """The sweep's row of every pair (taus[i], sigmas[i]): a NumPy structured array.
+def pairs(taus, sigmas, digits=None, certified=False, checks="default", threads=0):
+    """Values of every pair (taus[i], sigmas[i]) as a NumPy structured array.
 
-    taus, sigmas: NumPy integer arrays or any iterables of integers, of the same length, each pair
-    coprime with tau > sigma >= 1 and tau + sigma <= 2^40. The rows are those of sweep() (the
-    same columns and values: r_res, theta_first, t_first... in double, a few ulps from the exact
-    values; certified=True: the midpoints of proved enclosures and the checks decided by proofs,
-    as ``gyrores sweep --certified``). Computed on `threads` workers (0: every core) without the
-    GIL; Ctrl-C stops it. UsageError names the first invalid pair.
+    digits=None: the sweep's row of each pair (the columns and values of sweep(): r_res,
+    theta_first, t_first... in double, a few ulps from the exact values; certified=True: the
+    midpoints of proved enclosures and the checks decided by proofs, as ``gyrores sweep
+    --certified``), pairs with tau + sigma <= 2^40, on `threads` workers (0: every core) writing
+    straight into the table without the GIL. digits=D: the proved values of pair(tau, sigma,
+    digits=D) (tau, sigma, n, r_res, h_min, theta_first, t_first, t_min_paper, degenerate,
+    minimisers), pairs of any size, on `threads` Python threads (each pair() runs without the
+    GIL): float columns for D <= 15, mpmath.mpf objects beyond. taus, sigmas: NumPy integer arrays
+    or any iterables of integers, of the same length. Ctrl-C stops it; UsageError names the first
+    invalid pair.
     """
+    if digits is not None:
+        return _proved_pairs(taus, sigmas, _args.bounded(digits, "pairs", "digits", 1, 10000),
+                             _args.bounded(threads, "pairs", "threads", 0, 4096))
     t = _int64_column(taus, "taus")
     s = _int64_column(sigmas, "sigmas")
     if len(t) != len(s):

@@ -54,3 +54,18 @@ def test_bad_pairs_raise_usage_error(taus, sigmas, message):
         gyrores.pairs(taus, sigmas)
     if "\\" not in message and ".*" not in message:
         assert str(e.value).startswith(message)
+
+
+def test_pairs_with_digits_are_the_proved_values():
+    import mpmath
+    big = 10**30
+    t = gyrores.pairs([6, 9, 11, big + 1], np.array([5, 4, 9, 0], dtype=object) + [0, 0, 0, big], digits=12)
+    assert t.dtype["r_res"] == np.float64 and t.dtype["tau"] == object  # 10^30 is beyond int64
+    for row in t:
+        ref = gyrores.pair(row["tau"], row["sigma"], digits=12)
+        assert row["r_res"] == ref.r_res and row["t_first"] == ref.t_first and row["degenerate"] == ref.degenerate
+    t40 = gyrores.pairs(np.array([6, 9]), [5, 4], digits=40, threads=2)
+    assert isinstance(t40["r_res"][0], mpmath.mpf) and t40["r_res"][0] == gyrores.pair(6, 5, digits=40).r_res
+    assert t40.dtype["tau"] == np.int64 and list(t40["minimisers"]) == [2, 2]
+    with pytest.raises(gyrores.UsageError, match=r"pairs\(\): \(taus\[1\], sigmas\[1\]\) = \(6, 4\)"):
+        gyrores.pairs([6, 6], [5, 4], digits=20)
