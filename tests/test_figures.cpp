@@ -433,6 +433,7 @@ TEST_CASE("cli plot pareto: r_res = 0 on its own strip; large data thinned", "[f
   const std::string gp = read_file(dir + "/p.gp"), dat = read_file(dir + "/p.dat");
   CHECK(gp.find("r_floor") == std::string::npos);                   // no stand-in value on the log axis
   CHECK(gp.find("index 1 using 1:(0)") != std::string::npos);       // the zeros on the strip, at 0
+  CHECK(gp.find("# inset: the front alone") != std::string::npos);  // the front over its own ranges
   CHECK(dat.find("thinned") == std::string::npos);
   // Order 600: 109 000 pairs, thinned to at most one per 2x2 pixels of a 900x640 figure.
   REQUIRE(cli_run("plot pareto --max-order 600 --out " + dir + "/big.svg", "PATH=/nonexistent").status == 0);

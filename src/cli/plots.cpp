@@ -194,10 +194,39 @@ std::string pareto_data(const std::vector<design_point>& all, const std::vector<
   return d.str();
 }
 
+// An inset on the front alone: on the whole time axis the front is a sliver at its left end
+// (the fastest pairs), so it gets its own axes, over its own time and r_res ranges, at the lower
+// right of the upper panel. Empty when the front has fewer than two pairs with r_res > 0.
+std::string pareto_inset(const figure_spec& s, const std::vector<design_point>& front, design_time which) {
+  double t0 = 1e300, t1 = 0, r0 = 1e300, r1 = 0;
+  int n = 0;
+  for (const auto& p : front)
+    if (p.r_res > 0) {
+      const double t = design_time_of(p, which);
+      t0 = std::min(t0, t), t1 = std::max(t1, t), r0 = std::min(r0, p.r_res), r1 = std::max(r1, p.r_res), ++n;
+    }
+  if (n < 2 || !(t1 > t0) || !(r1 > r0)) return "";
+  std::ostringstream g;
+  g << "# inset: the front alone, over its own ranges\n"
+    << "set origin 0.55, 0.31\nset size 0.43, (small ? 0.3 : 0.32)\n"
+    << "set lmargin (small ? 6 : 8)\nset rmargin 0.5\nset tmargin 0.5\nset bmargin 1.5\n"
+    << "set object 9 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb \"white\" fillstyle solid 1.0 border lc rgb \"#444444\"\n"
+    << "set xrange [" << num(t0 / std::pow(t1 / t0, 0.05)) << ":" << num(t1 * std::pow(t1 / t0, 0.05)) << "]\n"
+    << "set yrange [" << num(r0 / std::pow(r1 / r0, 0.05)) << ":" << num(r1 * std::pow(r1 / r0, 0.05)) << "]\n"
+    << "set format x \"%.3g\"\nset xtics " << font_of(s, -3) << "\nset ytics " << font_of(s, -3) << "\n"
+    << "set xtics (" << num(t0) << ", " << num(t1) << ")\n"
+    << "set ytics 100\nset mytics 1\nunset ylabel\nunset key\n"
+    << "set label 9 \"front, zoomed\" at graph 0.97, graph 0.9 right " << font_of(s, -2) << "\n"
+    << "plot datafile index 2 using 1:2 with linespoints pt 7 ps 0.5 lw 1.2 lc rgb \"#d62728\" notitle\n"
+    << "unset label 9\nunset object 9\nset xtics autofreq " << font_of(s, 0) << "\nset ytics autofreq " << font_of(s, 0) << "\nset lmargin (small ? 9 : 11)\nset rmargin (small ? 2 : 3)\n"
+    << "set xrange [tlo:thi]\nset yrange [*:*]\n";
+  return g.str();
+}
+
 // Two panels sharing the time axis: r_res > 0 on a log axis above, and the pairs with r_res = 0
 // on a strip of their own below it (a log axis has no 0: no stand-in floor value is drawn).
-std::string pareto_script(const figure_spec& s, const std::vector<design_point>& all, design_time which,
-                          const std::string& title) {
+std::string pareto_script(const figure_spec& s, const std::vector<design_point>& all,
+                          const std::vector<design_point>& front, design_time which, const std::string& title) {
   double t0 = 1e300, t1 = 0;
   for (const auto& p : all) {
     const double t = design_time_of(p, which);
@@ -210,7 +239,8 @@ std::string pareto_script(const figure_spec& s, const std::vector<design_point>&
   std::ostringstream g;
   g << script_head("Pareto front", title, s)
     << "set multiplot title " << gnuplot_string(title + thinned) << " noenhanced\n"
-    << "set logscale x\nset xrange [" << num(t0 / 1.15) << ":" << num(t1 * 1.15) << "]\n"
+    << "tlo = " << num(t0 / 1.15) << "\nthi = " << num(t1 * 1.15) << "   # the time axis both panels share\n"
+    << "set logscale x\nset xrange [tlo:thi]\n"
     << "set lmargin (small ? 9 : 11)\nset rmargin (small ? 2 : 3)\n"
     << "set grid lc rgb \"#dddddd\"\n"
     << "# upper panel: r_res > 0\n"
@@ -222,6 +252,7 @@ std::string pareto_script(const figure_spec& s, const std::vector<design_point>&
     << "plot datafile index 0 using 1:2 with points pt 7 ps 0.35 lc rgb \"#999999\" title \"resonant pairs\", \\\n"
     << "     '' index 2 using 1:2 with linespoints pt 7 ps 0.8 lw 1.5 lc rgb \"#d62728\" title \"Pareto front\", \\\n"
     << "     '' index 3 using 1:2:3 with labels left offset 0.6,0.6 " << font_of(s, -2) << " notitle\n"
+    << pareto_inset(s, front, which)
     << "# lower panel: the pairs with r_res = 0 exactly (delta = 2 mod 4)\n"
     << "set origin 0, 0\nset size 1, 0.27\n"
     << "set tmargin 0.3\nset bmargin 3\nunset logscale y\nset yrange [-1:1]\nunset ytics\n"
@@ -315,7 +346,8 @@ figure_output write_energy_figure(const figure_spec& s, const energy_series& e, 
 figure_output write_pareto_figure(const figure_spec& s, const std::vector<design_point>& all,
                                   const std::vector<design_point>& front, design_time which,
                                   const std::string& title) {
-  return figure_finish(s, pareto_data(all, front, which, title, s.width, s.height), pareto_script(s, all, which, title));
+  return figure_finish(s, pareto_data(all, front, which, title, s.width, s.height),
+                       pareto_script(s, all, front, which, title));
 }
 
 std::string pareto_orientation_caption(pareto_orientation o) {

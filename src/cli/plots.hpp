@@ -45,7 +45,8 @@ figure_output write_energy_figure(const figure_spec& s, const energy_series& e, 
                                   const std::string& first_label);
 
 // Pareto: every pair with r_res > 0 (grey) and the front (red, some pairs labelled) on log axes,
-// and the degenerate pairs (r_res = 0) on a strip of their own below, sharing the time axis.
+// an inset with the front alone over its own ranges (on the whole time axis it is a sliver), and
+// the degenerate pairs (r_res = 0) on a strip of their own below, sharing the time axis.
 // Above 50000 pairs the grey and the strip are thinned to one pair per 2x2 pixels (said in the
 // title and the data file), so that a vector image stays a few MB.
 figure_output write_pareto_figure(const figure_spec& s, const std::vector<design_point>& all,
