@@ -319,6 +319,132 @@ TEST_CASE("cli plot: PNG of the requested size, not blank; SVG well-formed; data
   CHECK(fs::exists(fs::path(dir) / "again.png"));
 }
 
+// The texts of an SVG written by gnuplot: each <g transform="translate(x,y)[ rotate(..)]" ...
+// font-size="F" ... text-anchor="A"> <text>...</text> (tspans joined, tags dropped).
+struct svg_text {
+  double x = 0, y = 0, size = 0;
+  std::string anchor, text;
+  bool rotated = false;
+  // Horizontal extent, estimated at 0.55 em per character (DejaVu Sans averages about that).
+  double width() const { return 0.55 * size * double(text.size()); }
+  double left() const { return anchor == "middle" ? x - width() / 2 : anchor == "end" ? x - width() : x; }
+};
+
+std::vector<svg_text> svg_texts(const std::string& svg) {
+  std::vector<svg_text> out;
+  const std::string open = "<g transform=\"translate(";
+  for (std::size_t at = svg.find(open); at != std::string::npos; at = svg.find(open, at + 1)) {
+    const std::size_t head_end = svg.find('>', at);
+    const std::string head = svg.substr(at, head_end - at);
+    const std::size_t text_at = svg.find("<text>", head_end), text_end = svg.find("</text>", head_end);
+    const std::size_t next_g = svg.find("<g", head_end);
+    if (text_at == std::string::npos || text_end == std::string::npos || (next_g != std::string::npos && next_g < text_at))
+      continue;
+    svg_text t;
+    t.x = std::stod(head.substr(open.size()));
+    t.y = std::stod(head.substr(head.find(',') + 1));
+    t.rotated = head.find("rotate(") != std::string::npos;
+    const std::size_t fs = head.find("font-size=\"");
+    t.size = fs == std::string::npos ? 12 : std::stod(head.substr(fs + 11));
+    const std::size_t an = head.find("text-anchor=\"");
+    t.anchor = an == std::string::npos ? "start" : head.substr(an + 13, head.find('"', an + 13) - an - 13);
+    bool in_tag = false;
+    for (char c : svg.substr(text_at + 6, text_end - text_at - 6)) {
+      if (c == '<') in_tag = true;
+      else if (c == '>') in_tag = false;
+      else if (!in_tag) t.text += c;
+    }
+    while (!t.text.empty() && t.text.front() == ' ') t.text.erase(0, 1);
+    if (!t.text.empty()) out.push_back(t);
+  }
+  return out;
+}
+
+TEST_CASE("cli plot: readable at single-column sizes (600x400, 500x350)", "[figures][cli]") {
+  if (!cli_available() || std::system("command -v gnuplot >/dev/null 2>&1") != 0) return;
+  gyrores::test::temp_dir tmp("plotsmall");
+  const std::string dir = tmp.path();
+  struct figure {
+    std::string args;
+    std::vector<std::string> legend;  // entries every key must show
+  };
+  const std::vector<figure> figures = {
+      {"plot phase 6 5", {"trajectory", "envelope", "maximal circle", "first minimum", "inscribed"}},
+      {"plot phase --n 2", {"trajectory", "envelope", "min radius on the span"}},
+      {"plot energy 6 5", {"min H", "proxy", "near its minimum"}},
+      {"plot pareto --max-order 200", {"resonant pairs", "Pareto front"}},
+  };
+  for (const auto& [w, h] : {std::pair{600, 400}, std::pair{500, 350}}) {
+    for (const auto& f : figures) {
+      INFO(f.args << " at " << w << "x" << h);
+      const std::string out = dir + "/f.svg";
+      auto r = cli_run(f.args + " --size " + std::to_string(w) + "x" + std::to_string(h) + " --out " + out);
+      REQUIRE(r.status == 0);
+      REQUIRE(r.out.find("note:") == std::string::npos);
+      const auto texts = svg_texts(read_file(out));
+      REQUIRE(texts.size() > 10);
+      std::string all;
+      for (const auto& t : texts) all += t.text + "\n";
+      INFO(all);
+      for (const auto& entry : f.legend) CHECK(all.find(entry) != std::string::npos);  // legends not emptied
+      for (std::size_t i = 0; i < texts.size(); ++i) {
+        const auto& a = texts[i];
+        if (a.rotated) continue;
+        INFO("text '" << a.text << "' at " << a.x << "," << a.y);
+        CHECK(a.left() >= -1);           // not cut on the left
+        CHECK(a.left() + a.width() <= w + 1);  // nor on the right (titles included)
+        CHECK(a.y >= 0);
+        CHECK(a.y <= h + 1);
+        for (std::size_t j = i + 1; j < texts.size(); ++j) {
+          const auto& b = texts[j];
+          if (b.rotated || std::fabs(a.y - b.y) >= 0.8 * std::max(a.size, b.size)) continue;
+          INFO("overlaps '" << b.text << "' at " << b.x << "," << b.y);
+          CHECK((a.left() + a.width() <= b.left() + 1 || b.left() + b.width() <= a.left() + 1));  // tick labels apart
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("cli plot: PDF and EPS for journals", "[figures][cli]") {
+  if (!cli_available() || std::system("command -v gnuplot >/dev/null 2>&1") != 0) return;
+  gyrores::test::temp_dir tmp("plotpdf");
+  const std::string dir = tmp.path();
+  for (const std::string args : {"plot phase 6 5", "plot energy 11 9", "plot pareto --max-order 60"}) {
+    INFO(args);
+    REQUIRE(cli_run(args + " --size 500x350 --out " + dir + "/f.pdf").status == 0);
+    const std::string pdf = read_file(dir + "/f.pdf");
+    CHECK(pdf.rfind("%PDF-", 0) == 0);
+    CHECK(pdf.find("%%EOF") != std::string::npos);
+    // 500x350 pixels at 100 per inch: a 5 x 3.5 inch page (360 x 252 points).
+    CHECK(pdf.find("/MediaBox [ 0 0 360 252 ]") != std::string::npos);
+    REQUIRE(cli_run(args + " --out " + dir + "/f.eps").status == 0);
+    const std::string eps = read_file(dir + "/f.eps");
+    CHECK(eps.rfind("%!PS-Adobe-3.0 EPSF-3.0", 0) == 0);
+    CHECK(eps.find("%%BoundingBox:") != std::string::npos);
+  }
+}
+
+TEST_CASE("cli plot pareto: r_res = 0 on its own strip; large data thinned", "[figures][cli]") {
+  if (!cli_available()) return;
+  gyrores::test::temp_dir tmp("plotpareto");
+  const std::string dir = tmp.path();
+  REQUIRE(cli_run("plot pareto --max-order 80 --out " + dir + "/p.svg", "PATH=/nonexistent").status == 0);
+  const std::string gp = read_file(dir + "/p.gp"), dat = read_file(dir + "/p.dat");
+  CHECK(gp.find("r_floor") == std::string::npos);                   // no stand-in value on the log axis
+  CHECK(gp.find("index 1 using 1:(0)") != std::string::npos);       // the zeros on the strip, at 0
+  CHECK(gp.find("# inset: the front alone") != std::string::npos);  // the front over its own ranges
+  CHECK(dat.find("thinned") == std::string::npos);
+  // Order 600: 109 000 pairs, thinned to at most one per 2x2 pixels of a 900x640 figure.
+  REQUIRE(cli_run("plot pareto --max-order 600 --out " + dir + "/big.svg", "PATH=/nonexistent").status == 0);
+  const std::string big = read_file(dir + "/big.dat");
+  CHECK(big.find("# thinned: ") != std::string::npos);
+  std::size_t rows = 0;
+  for (std::size_t at = 0; (at = big.find('\n', at)) != std::string::npos; ++at) ++rows;
+  CHECK(rows < 450 * 320 + 450 + 2000);
+  CHECK(big.size() < 8u << 20);
+}
+
 TEST_CASE("cli plot: without gnuplot the data and script are still written", "[figures][cli]") {
   if (!cli_available()) return;
   gyrores::test::temp_dir tmp("nognuplot");
@@ -333,7 +459,7 @@ TEST_CASE("cli plot: without gnuplot the data and script are still written", "[f
 
 TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
   if (!cli_available()) return;
-  for (const char* bad : {"plot phase 6 5 --out x.pdf", "plot phase 6 4 --out x.svg", "plot phase --out x.svg",
+  for (const char* bad : {"plot phase 6 5 --out x.jpg", "plot phase 6 4 --out x.svg", "plot phase --out x.svg",
                           "plot phase 6 5 --n 2 --out x.svg", "plot phase 6 5 --size 10x10 --out x.svg",
                           "plot pareto --out x.svg", "plot"})
     check_rejected(bad);

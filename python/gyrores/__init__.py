@@ -2,153 +2,312 @@
 
 Python bindings of the gyrores C++ library (the compiled part is ``gyrores._gyrores``). For a
 resonant pair ``(tau, sigma)`` (coprime integers ``tau > sigma >= 1``, any size) ``pair`` gives
-the inscribed radius ``r_res``, its minimisers and the first-hit time with every digit verified,
-as ``gyrores pair --json`` does; ``certify`` and ``check`` produce and re-prove interval
-certificates; ``asymptotics``, ``design``, ``pareto`` and ``coupling`` mirror the commands of the
-same names; ``enumerate_pairs`` and ``sweep`` visit every pair up to an order. Reals come back as
-Python floats for ``digits <= 15``, as ``mpmath.mpf`` beyond when mpmath is installed, and as
-decimal strings otherwise (an ``mpf`` holds every verified digit, but mpmath prints and computes at
-its own ``mpmath.mp.dps``: raise it to see or keep them all); certificates keep the exact strings
-of their JSON form. Bad input
-raises ``UsageError`` (a ``ValueError``), a result that cannot be computed honestly
-``ComputeError`` (an ``ArithmeticError``), with the library's one-line messages. Every function
-may be called from several threads at once, and the library takes no lock: ``pair``,
-``asymptotics``, ``certify``, ``design``, ``pareto``, ``coupling`` and ``sweep`` release the GIL
-while they compute, so threads (e.g. a ``concurrent.futures.ThreadPoolExecutor``) run them in
-parallel.
+the inscribed radius ``r_res``, its minimisers and the first-hit time with every digit proved, as
+``gyrores pair --json`` does; ``pairs`` gives the sweep's values for arrays of pairs;
+``certify`` and ``check`` produce and re-prove interval certificates; ``asymptotics``,
+``design``, ``pareto`` and ``coupling`` mirror the commands of the same names;
+``enumerate_pairs`` and ``sweep`` visit every pair up to an order. docs/python.md is the guide.
+
+Numbers: one type per call. With ``digits <= 15`` every real is a ``float``; for ``pair`` and
+``asymptotics`` it is the correctly rounded double of the exact value (decided from a proved
+enclosure), for ``design``, ``pareto`` and ``coupling`` the double nearest to the value's correct
+17-digit rounding. With ``digits > 15`` every real is an ``mpmath.mpf`` holding all the digits
+asked (whatever ``mpmath.mp.dps`` is). Enclosures are ``Interval`` objects (``lo``, ``hi``
+rounded outward, ``contains``, ``mid``). Integers come back as ints of any size. Results are
+``Result`` objects: dicts whose keys are also attributes. An enclosure holds the exact value and
+the returned number (widened to it where a correct rounding falls just outside).
+
+Arguments: integers are anything with ``__index__`` (NumPy integers included; ``bool`` is
+refused); rationals are ints, floats (their repr), ``Fraction``, ``Decimal``, ``mpf`` or text as
+the CLI takes it. Bad input raises ``UsageError`` (a ``ValueError``) naming the function and the
+argument; a result that cannot be computed honestly ``ComputeError`` (an ``ArithmeticError``).
+
+Every call may run on several threads at once and takes no lock; the long ones run without the
+GIL and stop within a fraction of a second on Ctrl-C (``KeyboardInterrupt``).
 """
 
+import copy as _copy
+import fractions as _fractions
 import json as _json
 import os as _os
 
+from . import _args, _numbers
 from . import _gyrores
 from ._gyrores import ComputeError, UsageError
+from ._types import Interval, Result
 
-try:
-    import mpmath as _mpmath
-except ImportError:  # optional: reals beyond 15 digits are then decimal strings
-    _mpmath = None
+__version__ = _gyrores.__version__
 
 __all__ = [
-    "ComputeError", "PairResult", "UsageError", "asymptotics", "certify", "check", "coupling", "design",
-    "enumerate_pairs", "pair", "pareto", "sweep",
+    "CheckResult", "ComputeError", "Interval", "PairResult", "Result", "UsageError", "__version__", "asymptotics",
+    "certify", "check", "coupling", "design", "enumerate_pairs", "pair", "pairs", "pareto", "sweep",
 ]
 
-# The keys whose values are verified reals (decimal strings in the library's JSON).
-_REAL_KEYS = frozenset({
-    "beat_ratio", "n", "omega1", "omega2", "rho0", "qdot0", "r_res", "h_min", "h_z_max", "theta_first",
-    "t_first", "minimisers", "t_min_paper", "s", "u_asy", "theta_asy", "theta_c", "error", "bound", "ratio",
-    "r_res_asy", "r_res_asy_rel_error", "h_min_horizon", "t_min_horizon", "inf_all_time",
-})
-# Keys whose values are never converted: the caller's input echoed back,
-_INPUT_KEYS = frozenset({"input", "enclosures"})  # and the enclosures: outward decimal text, kept as it is
+# Keys whose values are exact rationals as text ("1/12", "17"): fractions.Fraction.
+_RATIONAL_KEYS = frozenset({"tmax", "beat", "horizon", "n2"})
+# Keys whose strings are text (or the caller's input echoed back), never converted.
+_ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason", "note",
+                        "inf_reason", "horizon_source", "orientation", "orientation_meaning", "time", "problem"})
+_DOUBLE_DIGITS = 15  # up to here reals are floats
+_FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then more if undecided)
 
 
-def _real_converter(digits):
-    """The function turning a verified decimal string of `digits` digits into a Python real."""
-    if digits <= 15:
-        return float  # every digit fits a double
-    if _mpmath is not None:
-        def to_mpf(text):
-            with _mpmath.workdps(digits + 3):  # the mpf keeps this precision after the block
-                return _mpmath.mpf(text)
-        return to_mpf
-    return str
+class PairResult(Result):
+    """What gyrores reports about one resonant pair: the fields of ``gyrores pair --json``.
 
+    A Result (``r.r_res`` or ``r["r_res"]``), in the CLI's order; with ``enclosures=True`` also
+    ``r.enclosures``, the same keys with Intervals (lobes under ``asymptotic_lobes``).
+    """
+
+    def to_dict(self, raw=False):
+        """The fields as a plain dict; ``raw=True``: exactly the JSON of ``gyrores pair --json`` at
+        the call's digits (reals as decimal strings; computed again when digits <= 15)."""
+        if not raw:
+            return dict(self)
+        return self.__dict__["_raw_source"]()
+
+    def __repr__(self):
+        shown = ", ".join(f"{k}={_short(self[k])}" for k in ("r_res", "theta_first", "t_first", "n"))
+        return (f"PairResult(tau={_short(self['tau'])}, sigma={_short(self['sigma'])}, {shown}, "
+                f"minimisers={len(self['minimisers'])}, "
+                f"degenerate={self['degenerate']}, digits={self['digits']}, proved by {self['theorem']})")
+
+
+def _short(value):
+    """repr of a number, or its size where Python's int <-> text limit would refuse it."""
+    if isinstance(value, int) and value.bit_length() > 4000 * 3:
+        return f"<int of about {int(value.bit_length() * 0.30103) + 1} digits>"
+    try:
+        return repr(value)
+    except ValueError:
+        return f"<{type(value).__name__} too large to print>"
+
+
+class CheckResult(Result):
+    """The verdict of check(): ``holds`` (bool) and ``failure`` (the first claim that does not hold,
+    "" when it holds). Its truth value is ``holds``."""
+
+    def __bool__(self):
+        return bool(self["holds"])
+
+
+# Conversions ------------------------------------------------------------------------------------
 
 def _convert(value, real, key=None):
-    """A JSON-shaped value with the reals under _REAL_KEYS converted by `real`; lists become tuples."""
+    """A JSON-shaped value as Results and tuples, its real texts converted by `real`."""
     if isinstance(value, dict):
-        return {k: v if k in _INPUT_KEYS else _convert(v, real, k) for k, v in value.items()}
+        return Result({k: _rational(v) if k in _RATIONAL_KEYS else v if k in _ECHO_KEYS else _convert(v, real, k)
+                       for k, v in value.items()})
     if isinstance(value, list):
         return tuple(_convert(v, real, key) for v in value)
-    if isinstance(value, str) and key in _REAL_KEYS:
+    if isinstance(value, str) and key not in _ECHO_KEYS and _numbers.is_real_text(value):
         return real(value)
     return value
 
 
-def _text(value):
-    """A number given as int, float, str or Decimal, as the decimal text the library parses."""
-    return repr(value) if isinstance(value, float) else str(value)
+def _rational(value):
+    """An exact rational of the library's JSON ("1/12", "17", "0.25") as a Fraction."""
+    return _fractions.Fraction(value) if isinstance(value, str) else value
 
 
-class PairResult:
-    """What gyrores reports about one resonant pair: the fields of ``gyrores pair --json``.
+def _real(digits):
+    """The conversion of a real of `digits` digits: float, or mpf of as many digits."""
+    if digits <= _DOUBLE_DIGITS:
+        return _numbers.float_of_text
+    bits = _numbers.bits_of_digits(digits)
+    return lambda text: _numbers.mpf_of_text(text, bits)
 
-    Fields are attributes (``r.r_res``, ``r.minimisers``, ``r.asymptotic``...) and items
-    (``r["r_res"]``), in the CLI's order; reals are converted as the module docstring says. Every
-    real is the correct rounding of a proved enclosure (``r.theorem``: the theorem the proofs rest
-    on); with ``enclosures=True`` also ``r.enclosures``, the same keys with ``(lo, hi)`` decimal
-    strings rounded outward.
-    """
 
-    def __init__(self, raw):
-        self._raw = raw
-        self._values = _convert(raw, _real_converter(raw["digits"]))
+def _enclosure_path(path):
+    """Where the enclosure of the real at `path` of a pair's JSON is, in its enclosures object."""
+    if path[:2] == ("asymptotic", "lobes"):
+        return ("asymptotic_lobes",) + path[2:]
+    return path
 
-    def __getattr__(self, name):
+
+def _enclosure_of(enclosures, path):
+    """The [lo, hi] texts of the real at `path` of a pair's JSON, or None."""
+    try:
+        node = enclosures
+        for p in _enclosure_path(path):
+            node = node[p]
+    except (KeyError, IndexError, TypeError):
+        return None
+    return node if isinstance(node, list) and len(node) == 2 and all(isinstance(t, str) for t in node) else None
+
+
+def _real_paths(value, path=()):
+    """The paths of the reals (floats, mpf) of a converted JSON value."""
+    if isinstance(value, dict):
+        for k, v in value.items():
+            if k != "enclosures":
+                yield from _real_paths(v, path + (k,))
+    elif isinstance(value, tuple):
+        for i, v in enumerate(value):
+            yield from _real_paths(v, path + (i,))
+    elif isinstance(value, float) or type(value).__name__ == "mpf":
+        yield path, value
+
+
+def _hull_with_values(intervals, out):
+    """Widen each Interval to hold the returned rounding too: it then holds both the exact value
+    and the number the caller got (a correct rounding may lie just outside the enclosure)."""
+    for path, value in _real_paths(out):
+        node = intervals
+        epath = _enclosure_path(path)
         try:
-            return self.__dict__["_values"][name]
-        except KeyError:
-            raise AttributeError(name) from None
-
-    def __getitem__(self, name):
-        return self._values[name]
-
-    def __dir__(self):
-        return list(super().__dir__()) + list(self._values)
-
-    def to_dict(self, raw=False):
-        """The fields as a dict; ``raw=True``: exactly the CLI's JSON (reals as decimal strings)."""
-        return _json.loads(_json.dumps(self._raw)) if raw else dict(self._values)
-
-    def __repr__(self):
-        v = self._raw
-        shown = ", ".join(f"{k}={v[k]}" for k in ("r_res", "theta_first", "t_first", "n"))
-        return (f"PairResult(tau={v['tau']}, sigma={v['sigma']}, {shown}, minimisers={len(v['minimisers'])}, "
-                f"degenerate={v['degenerate']}, digits={v['digits']}, proved by {v['theorem']})")
+            for p in epath[:-1]:
+                node = node[p]
+            iv = node[epath[-1]]
+        except (KeyError, IndexError, TypeError):
+            continue
+        if isinstance(iv, Interval) and not iv.contains(value):
+            widened = Interval(min(iv.lo, value), max(iv.hi, value))
+            if isinstance(node, tuple):
+                continue  # tuples are rebuilt below
+            node[epath[-1]] = widened
+    # Tuples (minimisers) are immutable: rebuild them.
+    for key, seq in list(intervals.items()):
+        if isinstance(seq, tuple) and key in out and isinstance(out[key], tuple):
+            intervals[key] = tuple(iv if not isinstance(iv, Interval) or iv.contains(v)
+                                   else Interval(min(iv.lo, v), max(iv.hi, v)) for iv, v in zip(seq, out[key]))
+    return intervals
 
 
-def pair(tau, sigma, digits=17, qdot0="1", enclosures=False):
+class _Undecided(Exception):
+    """The enclosures at these digits do not decide some double."""
+
+
+def _pair_floats(raw):
+    """A pair's JSON with every real the correctly rounded double of its exact value."""
+    enclosures = raw.get("enclosures", {})
+
+    def walk(value, path):
+        if isinstance(value, dict):
+            return Result({k: v if k in _ECHO_KEYS or k == "enclosures" else walk(v, path + (k,))
+                           for k, v in value.items()})
+        if isinstance(value, list):
+            return tuple(walk(v, path + (i,)) for i, v in enumerate(value))
+        if isinstance(value, str) and path[-1] not in _ECHO_KEYS and _numbers.is_real_text(value):
+            enc = _enclosure_of(enclosures, path)
+            if enc is None:
+                return _numbers.float_of_text(value)
+            lo, hi = (_numbers.float_of_text(t) for t in enc)
+            if lo != hi:  # rounding to nearest is monotone: equal ends decide it
+                raise _Undecided()
+            return lo
+        return value
+
+    return walk(raw, ())
+
+
+def _intervals(enclosures, digits):
+    """The enclosures object as Intervals, rounded outward to floats or mpf of digits + 3 digits."""
+    if digits <= _DOUBLE_DIGITS:
+        def make(lo, hi):
+            return Interval(_numbers.float_of_text(lo, "f"), _numbers.float_of_text(hi, "c"))
+    else:
+        bits = _numbers.bits_of_digits(digits + 3)
+
+        def make(lo, hi):
+            return Interval(_numbers.mpf_of_text(lo, bits, "f"), _numbers.mpf_of_text(hi, bits, "c"))
+
+    def walk(value):
+        if isinstance(value, dict):
+            return Result({k: walk(v) for k, v in value.items()})
+        if isinstance(value, list) and len(value) == 2 and all(isinstance(t, str) for t in value):
+            return make(*value)
+        if isinstance(value, list):
+            return tuple(walk(v) for v in value)
+        return value
+
+    return walk(enclosures)
+
+
+def _proved_pair(tau, sigma, digits, qdot0, enclosures, function):
+    """The JSON of `gyrores pair` converted: floats decided by enclosures, or mpf."""
+    t = _args.integer(tau, function, "tau")
+    s = _args.integer(sigma, function, "sigma")
+    d = _args.bounded(digits, function, "digits", 1, 10000)
+    q = _args.rational(qdot0, function, "qdot0")
+    enclosures = _args.flag(enclosures, function, "enclosures")
+    if d > _DOUBLE_DIGITS:
+        raw = _gyrores._pair(t, s, d, q, enclosures)
+        out = _convert({k: v for k, v in raw.items() if k != "enclosures"}, _real(d))
+        if enclosures:
+            out["enclosures"] = _hull_with_values(_intervals(raw["enclosures"], d), out)
+        return out, lambda: _copy.deepcopy(raw)
+    asked = _FLOAT_SOURCE_DIGITS
+    while True:
+        raw = _gyrores._pair(t, s, asked, q, True)
+        try:
+            out = _pair_floats(raw)
+            break
+        except _Undecided:
+            if asked >= 10000:
+                raise ComputeError(f"{function}(): a double of pair ({t}, {s}) is not decided at 10000 digits") from None
+            asked = min(10000, 2 * asked)
+    out.pop("enclosures", None)
+    out["digits"] = d
+    if enclosures:
+        out["enclosures"] = _hull_with_values(_intervals(raw["enclosures"], d), out)
+    return out, lambda: _gyrores._pair(t, s, d, q, enclosures)
+
+
+# The functions --------------------------------------------------------------------------------
+
+def pair(tau, sigma, digits=17, qdot0=1, enclosures=False):
     """Inscribed radius, minimisers and first-hit time of the resonant pair (tau, sigma).
 
-    tau, sigma: Python ints of any size, coprime, tau > sigma >= 1. digits: significant digits
-    of every real, 1..10000, each the correct rounding of an enclosure proved by interval
-    arithmetic on the lattice theorem. qdot0: impulse amplitude > 0 (an exact decimal or
-    fraction as text, or an int; a float is taken as its repr). enclosures: also the enclosures
-    (``r.enclosures``). Returns a PairResult; raises UsageError / ComputeError.
+    tau, sigma: integers of any size (anything with __index__), coprime, tau > sigma >= 1.
+    digits: 1..10000; every real is proved: for digits <= 15 a float, the correctly rounded
+    double of the exact value; beyond, an mpmath.mpf, the correct rounding to `digits` digits.
+    qdot0: the impulse amplitude > 0 (a rational: int, float, Fraction, Decimal, mpf, "1/4").
+    enclosures: also ``r.enclosures``, an Interval holding each real (outward).
+    Returns a PairResult; raises UsageError / ComputeError; Ctrl-C stops it.
     """
-    return PairResult(_gyrores._pair(tau, sigma, digits, _text(qdot0), enclosures))
+    out, raw = _proved_pair(tau, sigma, digits, qdot0, enclosures, "pair")
+    result = PairResult(out)
+    result.__dict__["_raw_source"] = raw
+    return result
 
 
 def asymptotics(tau, sigma, digits=17):
     """The paper's asymptotics of the pair (the ``asymptotic`` object of ``gyrores pair --json``).
 
-    A dict: applicable, reason, lobes (per lobe k, m, s, u_asy, theta_asy, the exact lobe root
+    A Result: applicable, reason, lobes (per lobe k, m, s, u_asy, theta_asy, the exact lobe root
     theta_c, error, bound pi^3 x^2/a, ratio, holds_global_min), r_res_asy (the x -> 0 limit form)
-    and r_res_asy_rel_error (None when not applicable), digits; qdot0 = 1. Every real proved.
+    and r_res_asy_rel_error (None when not applicable), digits; qdot0 = 1. Reals as in pair().
     """
-    return _convert(_gyrores._asymptotics(tau, sigma, digits), _real_converter(digits))
+    out, _ = _proved_pair(tau, sigma, digits, 1, False, "asymptotics")
+    d = out["digits"]
+    result = Result(out["asymptotic"])
+    for key in ("r_res_asy", "r_res_asy_rel_error"):
+        result[key] = out.get(key)
+    result["digits"] = d
+    return result
 
 
 def certify(tau, sigma, digits=30):
     """An interval certificate of r_res, theta_first and t_first of (tau, sigma), qdot0 = 1.
 
-    Returns the dict of ``gyrores certify``, "gyrores-certificate/2" (the lattice theorem, any
-    pair: the minimisers' lobes, a bracket of u*, enclosures as [lo, hi] decimal strings with at
-    least `digits` correct digits). Pass it to check(), or json.dump it for ``gyrores check``.
-    Raises UsageError / ComputeError.
+    Returns the dict of ``gyrores certify`` ("gyrores-certificate/2", docs/formats.md): a data
+    format, so its reals stay the exact decimal strings the checker reads (json.dump it for
+    ``gyrores check``, or pass it to check()). Raises UsageError / ComputeError.
     """
-    return _gyrores._certify(tau, sigma, digits)
+    t = _args.integer(tau, "certify", "tau")
+    s = _args.integer(sigma, "certify", "sigma")
+    d = _args.bounded(digits, "certify", "digits", 1, 10000)
+    return _gyrores._certify(t, s, d)
 
 
 def check(cert):
-    """Re-prove a certificate independently; returns (holds, failure).
+    """Re-prove a certificate independently; returns a CheckResult {holds, failure}.
 
-    cert: the dict of certify(), its JSON text, or the path of a certificate file. failure
-    names the first claim or fact that does not hold ("" when it holds). Malformed content, and
-    a certificate of the retired format "gyrores-certificate/1" (the interval cover; re-certify
-    with certify()), raise UsageError at once (``gyrores check`` exits 2 there).
+    cert: the dict of certify(), its JSON text, or the path of a certificate file. ``failure``
+    names the first claim or fact that does not hold ("" when it holds); ``bool(result)`` is
+    ``holds``. Malformed content, and a certificate of the retired format
+    "gyrores-certificate/1", raise UsageError at once (``gyrores check`` exits 2 there).
     """
     if isinstance(cert, dict):
         text = _json.dumps(cert)
@@ -159,25 +318,38 @@ def check(cert):
             with open(cert, encoding="utf-8") as f:
                 text = f.read()
         except OSError as e:
-            raise UsageError(f"cannot read certificate '{_os.fspath(cert)}': {e.strerror}") from None
+            raise UsageError(f"check(): cannot read certificate '{_os.fspath(cert)}': {e.strerror}") from None
     else:
-        raise UsageError(f"cert must be a dict, JSON text or a path, got {type(cert).__name__}")
+        raise UsageError(f"check(): cert must be a dict, JSON text or a path, got {type(cert).__name__}")
     holds, failure = _gyrores._check_text(text)
-    return bool(holds), failure
+    return CheckResult(holds=bool(holds), failure=failure)
+
+
+def _library_digits(d):
+    """The digits asked of the library: 17 when floats are wanted (then rounded to the double)."""
+    return max(d, _FLOAT_SOURCE_DIGITS) if d <= _DOUBLE_DIGITS else d
 
 
 def design(problem, tmax, beat=None, max_order=200, exclude_low=0, delta=None, proxy=False, candidates=5,
            digits=10):
     """Choose a resonant pair: "absorb" (min r_res) or "contain" (max r_res) with time <= tmax.
 
-    tmax, beat: rationals (int, float, Decimal, "17", "1/4"); beat: (tau+sigma)/(tau-sigma) >=
-    beat; max_order 3..5000; exclude_low: drop tau + sigma <= exclude_low; delta: only tau -
-    sigma = delta; proxy: use the paper's proxy pi/|n| instead of the exact first-hit time.
-    Returns the dict of ``gyrores design --json``; ComputeError when no pair is feasible.
+    tmax, beat: rationals; beat: (tau+sigma)/(tau-sigma) >= beat; max_order 3..5000;
+    exclude_low: drop tau + sigma <= exclude_low; delta: only tau - sigma = delta; proxy: use the
+    paper's proxy pi/|n| instead of the exact first-hit time; digits 1..1000.
+    Returns the Result of ``gyrores design --json``; ComputeError when no pair is feasible.
     """
-    raw = _gyrores._design(problem, _text(tmax), None if beat is None else _text(beat), max_order, exclude_low,
-                           delta, proxy, candidates, digits)
-    return _convert(raw, _real_converter(digits))
+    f = "design"
+    d = _args.bounded(digits, f, "digits", 1, 1000)
+    raw = _gyrores._design(_args.choice(problem, f, "problem", ("absorb", "contain")), _args.rational(tmax, f, "tmax"),
+                           None if beat is None else _args.rational(beat, f, "beat"),
+                           _args.bounded(max_order, f, "max_order", 3, 5000),
+                           _args.bounded(exclude_low, f, "exclude_low", 0, 2**62),
+                           None if delta is None else _args.bounded(delta, f, "delta", 1, 2**62),
+                           _args.flag(proxy, f, "proxy"), _args.bounded(candidates, f, "candidates", 0, 1000),
+                           _library_digits(d))
+    raw["digits"] = d
+    return _convert(raw, _real(d))
 
 
 def pareto(max_order, orientation="absorb", proxy=False, exclude_degenerate=False, beat=None, exclude_low=0,
@@ -185,24 +357,34 @@ def pareto(max_order, orientation="absorb", proxy=False, exclude_degenerate=Fals
     """The Pareto front of (r_res, time) over the resonant pairs with tau + sigma <= max_order.
 
     orientation "absorb" (lower r_res and time better) or "contain" (higher r_res, lower time);
-    proxy: time = pi/|n| instead of t_first. Returns the dict of ``gyrores pareto --json``
+    proxy: time = pi/|n| instead of t_first. Returns the Result of ``gyrores pareto --json``
     without its file keys (csv, plot).
     """
-    raw = _gyrores._pareto(max_order, orientation, proxy, exclude_degenerate,
-                           None if beat is None else _text(beat), exclude_low, digits)
-    return _convert(raw, _real_converter(digits))
+    f = "pareto"
+    d = _args.bounded(digits, f, "digits", 1, 1000)
+    raw = _gyrores._pareto(_args.bounded(max_order, f, "max_order", 3, 5000),
+                           _args.choice(orientation, f, "orientation", ("absorb", "contain")),
+                           _args.flag(proxy, f, "proxy"), _args.flag(exclude_degenerate, f, "exclude_degenerate"),
+                           None if beat is None else _args.rational(beat, f, "beat"),
+                           _args.bounded(exclude_low, f, "exclude_low", 0, 2**62), _library_digits(d))
+    raw["digits"] = d
+    return _convert(raw, _real(d))
 
 
-def coupling(n=None, n2=None, horizon="100", convergents=8, digits=12):
+def coupling(n=None, n2=None, horizon=100, convergents=8, digits=12):
     """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q, convergents.
 
-    Exactly one of n, n2 (rationals: int, float, Decimal or text such as "1/4"). horizon: T >= 0
-    for the minimum of H_q over [0, T]; convergents: how many convergents of W1/W2 (0..60).
-    Returns the dict of ``gyrores coupling --json``.
+    Exactly one of n, n2 (rationals). horizon: T >= 0 for the minimum of H_q over [0, T];
+    convergents: how many convergents of W1/W2 (0..60); digits 1..1000. Returns the Result of
+    ``gyrores coupling --json``. Ctrl-C returns at once (the computation then ends on its own).
     """
-    raw = _gyrores._coupling(None if n is None else _text(n), None if n2 is None else _text(n2), _text(horizon),
-                             convergents, digits)
-    return _convert(raw, _real_converter(digits))
+    f = "coupling"
+    d = _args.bounded(digits, f, "digits", 1, 1000)
+    raw = _gyrores._coupling(None if n is None else _args.rational(n, f, "n"),
+                             None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
+                             _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d))
+    raw["digits"] = d
+    return _convert(raw, _real(d))
 
 
 def enumerate_pairs(max_order, min_order=3):
@@ -210,7 +392,20 @@ def enumerate_pairs(max_order, min_order=3):
 
     Coprime tau > sigma >= 1, by order ascending then sigma ascending; nothing is materialised.
     """
-    return _gyrores._enumerate_pairs(max_order, min_order)
+    f = "enumerate_pairs"
+    return _gyrores._enumerate_pairs(_args.bounded(max_order, f, "max_order", 0, 2**40),
+                                     _args.bounded(min_order, f, "min_order", 0, 2**40))
+
+
+def _table(columns):
+    """The row columns of the library as one NumPy structured array."""
+    import numpy as np
+    columns["failed"] = columns["failed"].astype(bool)
+    columns["note"] = np.array(columns["note"], dtype=str)  # "<U1" when no row has a note
+    table = np.empty(len(columns["tau"]), dtype=[(name, col.dtype) for name, col in columns.items()])
+    for name, col in columns.items():
+        table[name] = col
+    return table
 
 
 def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", threads=0, cross_check_max_order=300,
@@ -219,22 +414,114 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
 
     Returns (rows, summary): rows a NumPy structured array, one record per pair in enumeration
     order, with the columns of ``gyrores sweep --out`` (not applicable: NaN for reals, -1 for
-    flags; check_* columns 1 pass, 0 fail, -1 not run; failed bool; note str), or None when
-    rows=False; summary the dict of ``gyrores sweep --json``. The work runs on `threads` workers
+    flags; check_* columns 1 pass, 0 fail, -1 not run; failed bool; note text, "" for most), or None when
+    rows=False; summary the Result of ``gyrores sweep --json``. The work runs on `threads` workers
     (0: every core) with the GIL released; progress, if given, is called as progress(done, total)
-    after every block of pairs, and an exception it raises (or Ctrl-C) stops the sweep.
-    checks: "default" (the paper's four claims), "all" (with the opt-in cross-check against the
-    global search, order <= cross_check_max_order) or a comma-separated list (degeneracy,
-    paper-node, asy-bound, structure, cross-check).
+    after every block of pairs (it may call gyrores itself), and an exception it raises (or
+    Ctrl-C) stops the sweep. checks: "default" (the paper's four claims), "all" (with the opt-in
+    cross-check against the global search, order <= cross_check_max_order) or a comma-separated
+    list (degeneracy, paper-node, asy-bound, structure, cross-check).
     """
-    columns, summary = _gyrores._sweep(max_order, min_order, rows, progress, checks, threads,
-                                       cross_check_max_order, examples)
-    if columns is None:
-        return None, summary
+    f = "sweep"
+    if progress is not None and not callable(progress):
+        raise UsageError(f"sweep(): progress must be callable, got {type(progress).__name__}")
+    if not isinstance(checks, str):
+        raise UsageError(f"sweep(): checks must be text, got {type(checks).__name__}")
+    columns, summary = _gyrores._sweep(_args.bounded(max_order, f, "max_order", 0, 2**40),
+                                       _args.bounded(min_order, f, "min_order", 0, 2**40), _args.flag(rows, f, "rows"),
+                                       progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
+                                       _args.bounded(cross_check_max_order, f, "cross_check_max_order", 0, 2**40),
+                                       _args.bounded(examples, f, "examples", 0, 2**31))
+    summary = _convert(summary, float)
+    return (None if columns is None else _table(columns)), summary
+
+
+_PROVED_COLUMNS = ("n", "r_res", "h_min", "theta_first", "t_first", "t_min_paper")
+
+
+def _proved_pairs(taus, sigmas, digits, threads):
+    """pairs(..., digits=D): pair() of every pair on a thread pool, as a structured array."""
+    import concurrent.futures
     import numpy as np
-    columns["failed"] = columns["failed"].astype(bool)
-    columns["note"] = np.array(columns["note"], dtype=object)
-    table = np.empty(len(columns["tau"]), dtype=[(name, col.dtype) for name, col in columns.items()])
-    for name, col in columns.items():
-        table[name] = col
-    return table, summary
+    t = [_args.integer(v, "pairs", f"taus[{i}]") for i, v in enumerate(taus)]
+    s = [_args.integer(v, "pairs", f"sigmas[{i}]") for i, v in enumerate(sigmas)]
+    if len(t) != len(s):
+        raise UsageError(f"pairs(): taus and sigmas differ in length ({len(t)} and {len(s)})")
+    workers = threads or (_os.cpu_count() or 1)
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=workers)
+    try:
+        futures = [pool.submit(pair, a, b, digits) for a, b in zip(t, s)]
+        results = []
+        for i, f in enumerate(futures):
+            try:
+                results.append(f.result())
+            except UsageError as e:
+                raise UsageError(f"pairs(): (taus[{i}], sigmas[{i}]) = ({t[i]}, {s[i]}): {e}") from None
+    finally:  # on Ctrl-C or an error: drop the pairs not started
+        pool.shutdown(wait=False, cancel_futures=True)
+    small = all(-2**63 <= v < 2**63 for v in t + s)
+    integer = np.int64 if small else object
+    real = np.float64 if digits <= _DOUBLE_DIGITS else object
+    dtype = [("tau", integer), ("sigma", integer)] + [(k, real) for k in _PROVED_COLUMNS] + [
+        ("degenerate", bool), ("minimisers", np.int32)]
+    table = np.empty(len(results), dtype=dtype)
+    for i, r in enumerate(results):
+        table[i] = (r.tau, r.sigma, *(r[k] for k in _PROVED_COLUMNS), r.degenerate, len(r.minimisers))
+    return table
+
+
+def _int64_column(values, name):
+    """A one-dimensional int64 array of the pair members `values` (any iterable of integers)."""
+    import numpy as np
+    if isinstance(values, np.ndarray):
+        if values.dtype.kind not in "iu" or values.ndim != 1:
+            raise UsageError(f"pairs(): {name} must be a one-dimensional array of integers, got dtype {values.dtype} "
+                             f"with {values.ndim} dimensions")
+        if values.dtype.kind == "u" and values.size and values.max() > 2**40:
+            raise UsageError(f"pairs(): {name} holds a value above 2^40 (use pair() beyond)")
+        return values.astype(np.int64, copy=False)
+    items = [_args.integer(v, "pairs", f"{name}[{i}]") for i, v in enumerate(values)]
+    for i, v in enumerate(items):
+        if not -2**62 < v < 2**62:
+            raise UsageError(f"pairs(): {name}[{i}] = {v} is above 2^40 (use pair() beyond)")
+    return np.array(items, dtype=np.int64)
+
+
+def pairs(taus, sigmas, digits=None, certified=False, checks="default", threads=0):
+    """Values of every pair (taus[i], sigmas[i]) as a NumPy structured array.
+
+    digits=None: the sweep's row of each pair (the columns and values of sweep(): r_res,
+    theta_first, t_first... in double, a few ulps from the exact values; certified=True: the
+    midpoints of proved enclosures and the checks decided by proofs, as ``gyrores sweep
+    --certified``), pairs with tau + sigma <= 2^40, on `threads` workers (0: every core) writing
+    straight into the table without the GIL. digits=D: the proved values of pair(tau, sigma,
+    digits=D) (tau, sigma, n, r_res, h_min, theta_first, t_first, t_min_paper, degenerate,
+    minimisers), pairs of any size, on `threads` Python threads (each pair() runs without the
+    GIL): float columns for D <= 15, mpmath.mpf objects beyond. taus, sigmas: NumPy integer arrays
+    or any iterables of integers, of the same length. Ctrl-C stops it; UsageError names the first
+    invalid pair.
+    """
+    if digits is not None:
+        return _proved_pairs(taus, sigmas, _args.bounded(digits, "pairs", "digits", 1, 10000),
+                             _args.bounded(threads, "pairs", "threads", 0, 4096))
+    t = _int64_column(taus, "taus")
+    s = _int64_column(sigmas, "sigmas")
+    if len(t) != len(s):
+        raise UsageError(f"pairs(): taus and sigmas differ in length ({len(t)} and {len(s)})")
+    if not isinstance(checks, str):
+        raise UsageError(f"pairs(): checks must be text, got {type(checks).__name__}")
+    import numpy as np
+    certified = _args.flag(certified, "pairs", "certified")
+    threads = _args.bounded(threads, "pairs", "threads", 0, 4096)
+    table = np.empty(len(t), dtype=np.dtype(_gyrores._row_fields()))
+    table["note"] = ""
+    notes = _gyrores._pairs_into(np.ascontiguousarray(t), np.ascontiguousarray(s), checks, certified, threads, table)
+    if notes:  # rare (rows that failed): widen the note field to the longest
+        width = max(len(text) for _, text in notes)
+        wide = np.empty(len(t), dtype=[(n, f if n != "note" else f"<U{width}") for n, f in _gyrores._row_fields()])
+        for name in table.dtype.names:
+            wide[name] = table[name]
+        for i, text in notes:
+            wide["note"][i] = text
+        table = wide
+    return table

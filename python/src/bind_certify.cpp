@@ -9,6 +9,7 @@
 
 #include "certificate_checker.hpp"
 #include "common.hpp"
+#include "interruptible.hpp"
 
 namespace gyrores::python {
 namespace {
@@ -16,7 +17,7 @@ namespace {
 py::object certify_dict(const py::object& tau, const py::object& sigma, long long digits) {
   const auto p = pair_of(tau, sigma);
   const unsigned d = checked_digits(digits, 1, 10000);
-  return to_python(certificate_to_json(call_library([&] { return certify_by_theorem(p, d); })));
+  return to_python(certificate_to_json(run_interruptible<theorem_certificate>([p, d](stop_token) { return certify_by_theorem(p, d); })));
 }
 
 // As `gyrores check`: a retired or malformed text is a usage_error (ValueError); otherwise the

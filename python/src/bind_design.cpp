@@ -9,6 +9,7 @@
 #include <gyrores/io/report_json.hpp>
 
 #include "common.hpp"
+#include "interruptible.hpp"
 
 namespace gyrores::python {
 namespace {
@@ -67,8 +68,9 @@ py::object design_dict(const std::string& problem, const py::object& tmax, const
   o.max_order = max_order;
   const std::string tmax_text = rational_text(tmax);  // Python objects are read before the GIL is released
   const json beat_json = text_or_null(beat);
-  json j;
-  call_library([&] {
+  // By value: on Ctrl-C the work may outlive this call (interruptible.hpp).
+  const json result = run_interruptible<json>([=](stop_token) {
+    json j;
     const auto res = design_solve(design_catalogue(max_order), o);
     if (!res.feasible_any())
       throw compute_error("no resonant pair meets the constraints (" + std::to_string(res.examined) +
@@ -88,8 +90,9 @@ py::object design_dict(const std::string& problem, const py::object& tmax, const
     for (std::size_t i = 1; i < res.ranked.size(); ++i) c.push_back(values_json(res.ranked[i], d));
     j["candidates"] = c;
     j["digits"] = d;
+    return j;
   });
-  return to_python(j);
+  return to_python(result);
 }
 
 pareto_orientation orientation_of(const std::string& text) {
@@ -106,8 +109,8 @@ py::object pareto_dict(std::int64_t max_order, const std::string& orientation, b
   f.exclude_degenerate = exclude_degenerate;
   check_max_order(max_order);
   const design_time which = proxy ? design_time::proxy : design_time::first_hit;
-  json j;
-  call_library([&] {
+  const json result = run_interruptible<json>([=](stop_token) {
+    json j;
     std::vector<design_point> pairs;
     for (const auto& p : design_catalogue(max_order))
       if (pair_filter_accepts(f, p)) pairs.push_back(p);
@@ -122,8 +125,9 @@ py::object pareto_dict(std::int64_t max_order, const std::string& orientation, b
     for (const auto& p : pareto_front(pairs, o, which)) front.push_back(values_json(p, d));
     j["front"] = front;
     j["digits"] = d;
+    return j;
   });
-  return to_python(j);
+  return to_python(result);
 }
 
 py::object coupling_dict(const py::object& n, const py::object& n2, const py::object& horizon,
@@ -139,7 +143,9 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const py::ob
   const coupling_spec spec = n.is_none() ? coupling_spec::from_n2(parse_rational(rational_text(n2), "n2"))
                                          : coupling_spec::from_n(parse_rational(rational_text(n), "n"));
   const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
-  const coupling_report r = call_library([&] { return analyse_coupling(spec, opt); });
+  // The coupling library takes no stop flag: on Ctrl-C this call returns at once and the work
+  // ends on its own, its result dropped (interruptible.hpp).
+  const coupling_report r = run_interruptible<coupling_report>([spec, opt](stop_token) { return analyse_coupling(spec, opt); });
   return to_python(coupling_report_json(input, horizon_text, opt.digits, r));
 }
 

@@ -6,6 +6,7 @@
 #include <gyrores/theorem/pair_report.hpp>
 
 #include "common.hpp"
+#include "interruptible.hpp"
 
 namespace gyrores::python {
 namespace {
@@ -15,7 +16,10 @@ pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const st
   opt.enclosures = enclosures;
   opt.digits = checked_digits(digits, 1, report_digits_max);
   opt.qdot0 = qdot0;
-  return call_library([&] { return prove_pair(p, opt); });
+  return run_interruptible<pair_report>([p, opt](stop_token stop) mutable {
+    opt.stop = stop;
+    return prove_pair(p, opt);
+  });
 }
 
 py::object pair_dict(const py::object& tau, const py::object& sigma, long long digits, const std::string& qdot0,

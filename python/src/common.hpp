@@ -48,5 +48,7 @@ void bind_pair(py::module_& m);      // pair, asymptotics
 void bind_certify(py::module_& m);   // certify, check
 void bind_design(py::module_& m);    // design, pareto, coupling
 void bind_sweep(py::module_& m);     // enumerate_pairs, sweep
+void bind_pairs(py::module_& m);     // pairs
+void bind_figures(py::module_& m);   // the figures' data (gyrores.plot)
 
 }  // namespace gyrores::python

@@ -15,4 +15,7 @@ PYBIND11_MODULE(_gyrores, m) {
   gp::bind_certify(m);
   gp::bind_design(m);
   gp::bind_sweep(m);
+  gp::bind_pairs(m);
+  gp::bind_figures(m);
+  m.attr("__version__") = GYRORES_VERSION;  // the project version (python/CMakeLists.txt)
 }

@@ -66,15 +66,18 @@ def test_qdot0_scales_r_res():
 
 
 def test_enclosures_hold_the_rounded_values():
+    import mpmath
     r = gyrores.pair(6, 5, digits=20, enclosures=True)
     raw = r.to_dict(raw=True)
     for key in ("r_res", "theta_first", "t_first", "n", "h_z_max", "r_res_asy"):
         lo, hi = r.enclosures[key]
-        assert isinstance(lo, str) and float(lo) <= float(raw[key]) <= float(hi)
+        assert isinstance(lo, mpmath.mpf) and lo <= r[key] <= hi and r[key] in r.enclosures[key]
+        # the value is the CLI's decimal text, to the call's precision
+        assert r[key] == gyrores._numbers.mpf_of_text(raw[key], gyrores._numbers.bits_of_digits(20))
     assert "lattice-theorem/1" in repr(r)
     r3 = gyrores.pair(6, 5, digits=20, enclosures=True, qdot0=3)
-    lo, hi = r3.enclosures["r_res"]
-    assert float(lo) <= 3 * float(raw["r_res"]) <= float(hi)
+    with mpmath.workdps(60):
+        assert 3 * mpmath.mpf(raw["r_res"]) - r3.enclosures["r_res"].mid < mpmath.mpf("1e-20")
 
 
 @pytest.mark.parametrize("args, kwargs, message", [

@@ -49,7 +49,7 @@ def test_eight_threads_give_the_serial_results():
     serial = [fn() for _, fn in calls]
     for (name, _), result in zip(calls, serial):
         if name.startswith("certify"):
-            assert result[1] == (True, ""), name
+            assert result[1] == {"holds": True, "failure": ""}, name
     # Every call four times, interleaved so that each kind overlaps the others.
     order = [k for _ in range(4) for k in range(len(calls))]
     order = order[::3] + order[1::3] + order[2::3]

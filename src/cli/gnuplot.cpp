@@ -3,7 +3,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -37,18 +39,33 @@ image_format image_format_of(const fs::path& p) {
   for (auto& c : e) c = char(std::tolower((unsigned char)c));
   if (e == ".svg") return image_format::svg;
   if (e == ".png") return image_format::png;
-  throw usage_error("--out must end in .svg or .png, got '" + p.string() + "'");
+  if (e == ".pdf") return image_format::pdf;
+  if (e == ".eps") return image_format::eps;
+  throw usage_error("--out must end in .svg, .png, .pdf or .eps, got '" + p.string() + "'");
 }
 
+int figure_font_size(int width) { return std::clamp(8 + (width - 500) / 125, 8, 12); }
+
 std::string gnuplot_preamble(const std::string& default_image, int width, int height) {
+  const int fs = figure_font_size(width);
+  char inches[64];
+  std::snprintf(inches, sizeof inches, "%.2fin,%.2fin", width / 100.0, height / 100.0);
   std::ostringstream os;
   os << "if (!exists(\"outfile\")) outfile = " << gnuplot_string(default_image) << "\n"
-     << "if (strlen(outfile) > 3 && outfile[strlen(outfile)-2:] eq \"svg\") {  # gnuplot substrings are 1-based, inclusive\n"
+     << "fs = " << fs << "   # font size (points)\n"
+     << "small = " << (width < 800 ? 1 : 0) << "   # compact layout below 800 pixels\n"
+     << "ext = strlen(outfile) > 3 ? outfile[strlen(outfile)-2:] : \"\"  # gnuplot substrings are 1-based, inclusive\n"
+     << "if (ext eq \"svg\") {\n"
      << "  set terminal svg size " << width << "," << height
-     << " dynamic enhanced font \"DejaVu Sans,12\" background rgb \"white\"\n"
+     << " dynamic enhanced font \"DejaVu Sans," << fs << "\" background rgb \"white\"\n"
+     << "} else { if (ext eq \"pdf\") {\n"
+     << "  set terminal pdfcairo size " << inches << " enhanced font \"DejaVu Sans," << fs << "\" background rgb \"white\"\n"
+     << "} else { if (ext eq \"eps\") {\n"
+     << "  set terminal epscairo size " << inches << " enhanced font \"DejaVu Sans," << fs << "\" background rgb \"white\"\n"
      << "} else {\n"
-     << "  set terminal pngcairo size " << width << "," << height << " enhanced font \"DejaVu Sans,11\" background rgb \"white\"\n"
-     << "}\n"
+     << "  set terminal pngcairo size " << width << "," << height
+     << " enhanced font \"DejaVu Sans," << fs - 1 << "\" background rgb \"white\"\n"
+     << "}}}\n"
      << "set output outfile\n";
   return os.str();
 }

@@ -3,7 +3,8 @@
 //
 // Every figure is three files in one directory: NAME.dat (the data, gnuplot blocks separated by
 // two blank lines, `index k`), NAME.gp (the script; it picks the terminal from the output
-// name's extension, .svg -> svg, .png -> pngcairo) and the image. To restyle, edit NAME.gp and run
+// name's extension: .svg -> svg, .png -> pngcairo, .pdf -> pdfcairo, .eps -> epscairo, the
+// journal formats, at 100 pixels per inch) and the image. To restyle, edit NAME.gp and run
 //     cd DIR && gnuplot -e "outfile='NAME.svg'" NAME.gp
 // gnuplot is run the same way, writing to a temporary name that is renamed over the image when
 // gnuplot succeeds, so a failed or interrupted run never leaves a half-written image.
@@ -25,12 +26,17 @@ std::string gnuplot_string(const std::string& s);
 
 bool gnuplot_available();
 
-enum class image_format { svg, png };
+enum class image_format { svg, png, pdf, eps };
 
-// The format from the file name's extension (.svg or .png); usage_error otherwise.
+// The format from the file name's extension (.svg, .png, .pdf or .eps); usage_error otherwise.
 image_format image_format_of(const fs::path& p);
 
-// Script preamble: output name (overridable with -e "outfile='...'") and terminal by extension.
+// The font size (points) of a figure `width` pixels wide: 12 from 1000 pixels down to 8 at 500,
+// so that single-column sizes (500x350, 600x400) keep their labels apart.
+int figure_font_size(int width);
+
+// Script preamble: output name (overridable with -e "outfile='...'"), terminal by extension, and
+// the variables fs (font size) and small (1 below 800 pixels wide: compact layouts).
 std::string gnuplot_preamble(const std::string& default_image, int width, int height);
 
 struct render_result {

@@ -1,6 +1,7 @@
 // src/cli/plots.hpp
 #include "plots.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -36,6 +37,11 @@ std::string script_head(const std::string& kind, const std::string& title, const
     << "# Redraw: cd to this directory, then gnuplot -e \"outfile='" << s.stem << ".svg'\" " << s.stem << ".gp\n"
     << gnuplot_preamble(s.default_image(), s.width, s.height) << "datafile = " << gnuplot_string(s.stem + ".dat") << "\n";
   return g.str();
+}
+
+// A gnuplot font option: the figure's font size (gnuplot.hpp) plus `delta` points.
+std::string font_of(const figure_spec& s, int delta) {
+  return "font \"," + std::to_string(figure_font_size(s.width) + delta) + "\"";
 }
 
 void put_points(std::ostringstream& d, const std::vector<plane_point<double>>& pts) {
@@ -82,84 +88,181 @@ std::string phase_script(const figure_spec& s, const phase_portrait& f, const st
     << "zoom = " << num(zoom) << "\n"
     << "set multiplot layout 1,2 title " << gnuplot_string(title) << " noenhanced\n"
     << "set size ratio -1\n"
-    << "set xlabel \"q\"\nset ylabel \"dq/dt\"\nset bmargin 8\n"
+    << "set xlabel \"q\"\nset ylabel \"dq/dt\"\n"
     << "set grid lc rgb \"#dddddd\"\n"
-    << "set key below box opaque maxrows 3 width -2\n"
-    << "set title \"trajectory, envelope, maximal circle\"\n"
+    << "# Keys below the panels, one entry per line (a wide key is dropped when it does not fit)\n"
+    << "set key below box opaque maxcols 1 samplen 2 spacing 1 width -2\n"
+    << "set bmargin (small ? 7 : 8)\n"
+    << "set xtics (small ? 1 : 0.5)\nset ytics (small ? 1 : 0.5)\n"
+    << "set title (small ? \"whole motion\" : \"trajectory, envelope, maximal circle\")\n"
     << "set object 1 rect from -zoom,-zoom to zoom,zoom fs empty border lc rgb \"#444444\" dt 2\n"
     << "plot datafile index 0 with lines lc rgb \"#1f77b4\" lw 0.6 title \"trajectory\", \\\n"
     << "     '' index 1 with lines lc rgb \"#d62728\" lw 2 title \"envelope x_d({/Symbol f})\", \\\n"
-    << "     '' index 3 with lines dt 3 lc rgb \"#555555\" lw 1.6 title \"maximal circle (r = dq/dt(0))\"\n"
+    << "     '' index 3 with lines dt 3 lc rgb \"#555555\" lw 1.6 title (small ? \"maximal circle\" : \"maximal circle (r = dq/dt(0))\")\n"
     << "unset object 1\n"
     << "set title sprintf(\"zoom: |q|, |dq/dt| <= %.3g\", zoom)\n"
     << "set xrange [-zoom:zoom]\nset yrange [-zoom:zoom]\n"
-    << "set xtics zoom/2\nset ytics zoom/2\nset format xy \"%.2g\"\n"
+    << "set xtics zoom/(small ? 1 : 2)\nset ytics zoom/(small ? 1 : 2)\nset format xy \"%.2g\"\n"
     << "plot datafile index 0 with lines lc rgb \"#1f77b4\" lw 0.6 notitle, \\\n"
     << "     '' index 5 with lines lc rgb \"#1f77b4\" lw 1.2 title \"trajectory near the minimisers\", \\\n";
   if (f.r_inscribed > 0)
     g << "     '' index 2 with lines dt 2 lc rgb \"black\" lw 1.6 title sprintf(\""
-      << (f.inscribed_is_infimum ? "inscribed circle r_{res}" : "min radius on the span") << " = %.4g\", r_in), \\\n";
+      << (f.inscribed_is_infimum ? "inscribed r_{res}" : "min radius on the span") << " = %.4g\", r_in), \\\n";
   else
     g << "     '' index 4 using (0):(0) with points pt 6 ps 2.5 lc rgb \"black\" title \"r_{res} = 0 (degenerate)\", \\\n";
-  g << "     '' index 4 with points pt 7 ps 1.6 lc rgb \"#2ca02c\" title sprintf(\"first minimiser, t = %.5g\", t_first)\n"
+  g << "     '' index 4 with points pt 7 ps 1.6 lc rgb \"#2ca02c\" title sprintf(\"first minimum, t = %.5g\", t_first)\n"
     << "unset multiplot\n";
   return g.str();
 }
 
+// Above this many pairs the scatter is thinned: one pair per cell of 2 x 2 pixels in the plot's
+// log coordinates (a vector image of every pair of order 5000, 7.6 million points, was 395 MB;
+// thinned it stays under a few MB and looks the same). The front is never thinned.
+constexpr std::size_t pareto_thin_above = 50000;
+
+// The pairs of `all` to draw: every one, or one per cell of a (w/2) x (h/2) grid over
+// [log t] x [log r] (r_res > 0) or over [log t] alone (r_res = 0).
+std::vector<const design_point*> pareto_scatter(const std::vector<design_point>& all, design_time which, int w, int h,
+                                                bool zeros) {
+  std::vector<const design_point*> pts;
+  for (const auto& p : all)
+    if ((p.r_res == 0) == zeros) pts.push_back(&p);
+  if (all.size() <= pareto_thin_above || pts.empty()) return pts;
+  double t0 = 1e300, t1 = 0, r0 = 1e300, r1 = 0;
+  for (const auto* p : pts) {
+    const double t = design_time_of(*p, which);
+    t0 = std::min(t0, t), t1 = std::max(t1, t);
+    if (!zeros) r0 = std::min(r0, p->r_res), r1 = std::max(r1, p->r_res);
+  }
+  const int cx = std::max(1, w / 2), cy = zeros ? 1 : std::max(1, h / 2);
+  auto cell = [](double v, double lo, double hi, int n) {
+    if (!(hi > lo)) return 0;
+    return std::clamp(int((std::log(v) - std::log(lo)) / (std::log(hi) - std::log(lo)) * n), 0, n - 1);
+  };
+  std::vector<char> taken(std::size_t(cx) * std::size_t(cy), 0);
+  std::vector<const design_point*> kept;
+  for (const auto* p : pts) {
+    const int i = cell(design_time_of(*p, which), t0, t1, cx), j = zeros ? 0 : cell(p->r_res, r0, r1, cy);
+    char& c = taken[std::size_t(j) * std::size_t(cx) + std::size_t(i)];
+    if (!c) kept.push_back(p), c = 1;
+  }
+  return kept;
+}
+
 // Pareto data: every pair with r_res > 0, the degenerate pairs, the front, labelled front points.
 std::string pareto_data(const std::vector<design_point>& all, const std::vector<design_point>& front, design_time which,
-                        const std::string& title) {
+                        const std::string& title, int w, int h) {
   const std::string tname = which == design_time::first_hit ? "t_first" : "pi/n";
   auto row = [&](std::ostringstream& d, const design_point& p) {
     d << num(design_time_of(p, which)) << " " << num(p.r_res) << " " << p.tau << " " << p.sigma << "\n";
   };
+  const auto positive = pareto_scatter(all, which, w, h, false), zeros = pareto_scatter(all, which, w, h, true);
   std::ostringstream d;
-  d << "# gyrores Pareto front: " << title << "\n# index 0: every pair with r_res > 0: " << tname << " r_res tau sigma\n";
-  for (const auto& p : all)
-    if (p.r_res > 0) row(d, p);
+  d << "# gyrores Pareto front: " << title << "\n";
+  if (all.size() > pareto_thin_above)
+    d << "# thinned: " << positive.size() + zeros.size() << " of " << all.size()
+      << " pairs drawn, one per cell of 2x2 pixels in log coordinates (the front is complete)\n";
+  d << "# index 0: pairs with r_res > 0: " << tname << " r_res tau sigma\n";
+  for (const auto* p : positive) row(d, *p);
+  if (positive.empty()) d << "NaN NaN 0 0\n";
   d << "\n\n# index 1: degenerate pairs (r_res = 0 exactly): " << tname << " r_res tau sigma\n";
-  bool any_deg = false;
-  for (const auto& p : all)
-    if (p.r_res == 0) {
-      d << num(design_time_of(p, which)) << " 0 " << p.tau << " " << p.sigma << "\n";
-      any_deg = true;
-    }
-  if (!any_deg) d << "NaN NaN 0 0\n";
-  d << "\n\n# index 2: the front: " << tname << " r_res tau sigma\n";
-  for (const auto& p : front) row(d, p);
+  for (const auto* p : zeros) d << num(design_time_of(*p, which)) << " 0 " << p->tau << " " << p->sigma << "\n";
+  if (zeros.empty()) d << "NaN NaN 0 0\n";
+  d << "\n\n# index 2: the front (r_res > 0): " << tname << " r_res tau sigma\n";
+  bool any = false;
+  for (const auto& p : front)
+    if (p.r_res > 0) row(d, p), any = true;
+  if (!any) d << "NaN NaN 0 0\n";
   d << "\n\n# index 3: labelled front points (ends, and steps of half a decade in r_res): " << tname << " r_res label\n";
   double last = 0;
+  bool labelled = false;
   for (std::size_t i = 0; i < front.size(); ++i) {
-    double lr = front[i].r_res > 0 ? std::log10(front[i].r_res) : -99;
-    if (i == 0 || i + 1 == front.size() || std::fabs(lr - last) >= 0.5) {
+    if (!(front[i].r_res > 0)) continue;
+    const double lr = std::log10(front[i].r_res);
+    if (!labelled || i + 1 == front.size() || std::fabs(lr - last) >= 0.5) {
       d << num(design_time_of(front[i], which)) << " " << num(front[i].r_res) << " \"(" << front[i].tau << ","
         << front[i].sigma << ")\"\n";
-      last = lr;
+      last = lr, labelled = true;
     }
   }
+  if (!labelled) d << "NaN NaN \"\"\n";
+  d << "\n\n# index 4: front pairs with r_res = 0: " << tname << " r_res tau sigma\n";
+  any = false;
+  for (const auto& p : front)
+    if (p.r_res == 0) row(d, p), any = true;
+  if (!any) d << "NaN NaN 0 0\n";
   return d.str();
 }
 
-std::string pareto_script(const figure_spec& s, const std::vector<design_point>& all, design_time which,
-                          const std::string& title) {
-  double rmin = 0;
-  for (const auto& p : all)
-    if (p.r_res > 0 && (rmin == 0 || p.r_res < rmin)) rmin = p.r_res;
-  const double floor = rmin > 0 ? rmin / 3 : 1e-6;
+// An inset on the front alone: on the whole time axis the front is a sliver at its left end
+// (the fastest pairs), so it gets its own axes, over its own time and r_res ranges, at the lower
+// right of the upper panel. Empty when the front has fewer than two pairs with r_res > 0.
+std::string pareto_inset(const figure_spec& s, const std::vector<design_point>& front, design_time which) {
+  double t0 = 1e300, t1 = 0, r0 = 1e300, r1 = 0;
+  int n = 0;
+  for (const auto& p : front)
+    if (p.r_res > 0) {
+      const double t = design_time_of(p, which);
+      t0 = std::min(t0, t), t1 = std::max(t1, t), r0 = std::min(r0, p.r_res), r1 = std::max(r1, p.r_res), ++n;
+    }
+  if (n < 2 || !(t1 > t0) || !(r1 > r0)) return "";
   std::ostringstream g;
-  g << script_head("Pareto front", title, s) << "r_floor = " << num(floor) << "   # where r_res = 0 is drawn (log axis)\n"
-    << "set title " << gnuplot_string(title) << " noenhanced\n"
-    << "set logscale xy\n"
-    << "set format y \"10^{%L}\"\n"
-    << "set xlabel " << gnuplot_string(which == design_time::first_hit ? "exact first-hit time t_{first}" : "paper proxy {/Symbol p}/n") << "\n"
-    << "set ylabel \"r_{res} (dq/dt(0) = 1)\"\n"
+  g << "# inset: the front alone, over its own ranges\n"
+    << "set origin 0.55, 0.31\nset size 0.43, (small ? 0.3 : 0.32)\n"
+    << "set lmargin (small ? 6 : 8)\nset rmargin 0.5\nset tmargin 0.5\nset bmargin 1.5\n"
+    << "set object 9 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb \"white\" fillstyle solid 1.0 border lc rgb \"#444444\"\n"
+    << "set xrange [" << num(t0 / std::pow(t1 / t0, 0.05)) << ":" << num(t1 * std::pow(t1 / t0, 0.05)) << "]\n"
+    << "set yrange [" << num(r0 / std::pow(r1 / r0, 0.05)) << ":" << num(r1 * std::pow(r1 / r0, 0.05)) << "]\n"
+    << "set format x \"%.3g\"\nset xtics " << font_of(s, -3) << "\nset ytics " << font_of(s, -3) << "\n"
+    << "set xtics (" << num(t0) << ", " << num(t1) << ")\n"
+    << "set ytics 100\nset mytics 1\nunset ylabel\nunset key\n"
+    << "set label 9 \"front, zoomed\" at graph 0.97, graph 0.9 right " << font_of(s, -2) << "\n"
+    << "plot datafile index 2 using 1:2 with linespoints pt 7 ps 0.5 lw 1.2 lc rgb \"#d62728\" notitle\n"
+    << "unset label 9\nunset object 9\nset xtics autofreq " << font_of(s, 0) << "\nset ytics autofreq " << font_of(s, 0) << "\nset lmargin (small ? 9 : 11)\nset rmargin (small ? 2 : 3)\n"
+    << "set xrange [tlo:thi]\nset yrange [*:*]\n";
+  return g.str();
+}
+
+// Two panels sharing the time axis: r_res > 0 on a log axis above, and the pairs with r_res = 0
+// on a strip of their own below it (a log axis has no 0: no stand-in floor value is drawn).
+std::string pareto_script(const figure_spec& s, const std::vector<design_point>& all,
+                          const std::vector<design_point>& front, design_time which, const std::string& title) {
+  double t0 = 1e300, t1 = 0;
+  for (const auto& p : all) {
+    const double t = design_time_of(p, which);
+    t0 = std::min(t0, t), t1 = std::max(t1, t);
+  }
+  if (!(t1 > t0)) t0 = t0 / 2, t1 = t1 * 2 + 1;
+  const std::string thinned = all.size() > pareto_thin_above
+                                  ? " (" + std::to_string(all.size()) + " pairs, thinned to one per 2x2 pixels)"
+                                  : "";
+  std::ostringstream g;
+  g << script_head("Pareto front", title, s)
+    << "set multiplot title " << gnuplot_string(title + thinned) << " noenhanced\n"
+    << "tlo = " << num(t0 / 1.15) << "\nthi = " << num(t1 * 1.15) << "   # the time axis both panels share\n"
+    << "set logscale x\nset xrange [tlo:thi]\n"
+    << "set lmargin (small ? 9 : 11)\nset rmargin (small ? 2 : 3)\n"
     << "set grid lc rgb \"#dddddd\"\n"
-    << "set key below box opaque maxrows 2\n"
-    << "set label 1 \"r_{res} = 0 (delta = 2 mod 4) drawn on this line\" at graph 0.98, first r_floor*1.7 right font \",9\" tc rgb \"#8c564b\"\n"
+    << "# upper panel: r_res > 0\n"
+    << "set origin 0, 0.27\nset size 1, (small ? 0.63 : 0.66)\n"
+    << "set bmargin 0\nset tmargin 0.5\nset format x \"\"\n"
+    << "set logscale y\nset format y \"10^{%L}\"\n"
+    << "set ylabel \"r_{res} (dq/dt(0) = 1)\"\n"
+    << "set key top right maxrows 2 samplen 1 box opaque " << font_of(s, -1) << "\n"
     << "plot datafile index 0 using 1:2 with points pt 7 ps 0.35 lc rgb \"#999999\" title \"resonant pairs\", \\\n"
-    << "     '' index 1 using 1:(r_floor) with points pt 2 ps 0.5 lc rgb \"#8c564b\" title \"degenerate pairs (r_{res} = 0)\", \\\n"
-    << "     '' index 2 using 1:($2 > 0 ? $2 : r_floor) with linespoints pt 7 ps 0.8 lw 1.5 lc rgb \"#d62728\" title \"Pareto front\", \\\n"
-    << "     '' index 3 using 1:($2 > 0 ? $2 : r_floor):3 with labels left offset 0.6,0.6 font \",9\" notitle\n";
+    << "     '' index 2 using 1:2 with linespoints pt 7 ps 0.8 lw 1.5 lc rgb \"#d62728\" title \"Pareto front\", \\\n"
+    << "     '' index 3 using 1:2:3 with labels left offset 0.6,0.6 " << font_of(s, -2) << " notitle\n"
+    << pareto_inset(s, front, which)
+    << "# lower panel: the pairs with r_res = 0 exactly (delta = 2 mod 4)\n"
+    << "set origin 0, 0\nset size 1, 0.27\n"
+    << "set tmargin 0.3\nset bmargin 3\nunset logscale y\nset yrange [-1:1]\nunset ytics\n"
+    << "set format x \"10^{%L}\"\n"
+    << "set ylabel \"r_{res} = 0\"\n"
+    << "set xlabel " << gnuplot_string(which == design_time::first_hit ? "exact first-hit time t_{first}" : "paper proxy {/Symbol p}/n") << "\n"
+    << "unset key\n"
+    << "plot datafile index 1 using 1:(0) with points pt 2 ps 0.5 lc rgb \"#8c564b\" title \"r_{res} = 0\", \\\n"
+    << "     '' index 4 using 1:(0) with points pt 7 ps 1.0 lc rgb \"#d62728\" notitle\n"
+    << "unset multiplot\n";
   return g.str();
 }
 
@@ -203,28 +306,48 @@ figure_output write_energy_figure(const figure_spec& s, const energy_series& e, 
   d << "# gyrores energy exchange: " << title << "\n# index 0: t H_q H_z\n";
   for (const auto& p : e.samples) d << num(p.t) << " " << num(p.h_q) << " " << num(p.h_z) << "\n";
   d << "\n\n# index 1: first minimum of H_q: t H_q\n" << num(e.t_first) << " " << num(e.h_min) << "\n";
+  // The lower panel: H_q on a log axis in a window around its minimum, where a linear axis shows
+  // nothing (min H_q of (6, 5) is 0.26% of H). Zero (a degenerate pair) has no log: the panel
+  // then shows H_q from 1e-6 H.
+  const double window = std::max(e.t_end / 12, 2 * std::fabs(e.t_proxy - e.t_first));
+  const double lo_t = std::max(0.0, e.t_first - window), hi_t = std::min(e.t_end, e.t_first + window);
+  double hq_max = 0;
+  for (const auto& p : e.samples)
+    if (p.t >= lo_t && p.t <= hi_t) hq_max = std::max(hq_max, p.h_q);
+  const double y_lo = e.h_min > 0 ? e.h_min / 4 : 1e-6 * (e.qdot0 * e.qdot0 / 2);
   std::ostringstream g;
   g << script_head("energy exchange", title, s)
     << "t_first = " << num(e.t_first) << "\nt_proxy = " << num(e.t_proxy) << "\nh_min = " << num(e.h_min) << "\n"
-    << "set title " << gnuplot_string(title) << " noenhanced\n"
-    << "set xlabel \"t\"\nset ylabel \"energy\"\n"
-    << "set xrange [0:" << num(e.t_end) << "]\nset yrange [0:*]\n"
+    << "set multiplot layout 2,1 title " << gnuplot_string(title) << " noenhanced\n"
     << "set grid lc rgb \"#dddddd\"\n"
-    << "set key outside right top box opaque\n"
+    << "set lmargin (small ? 9 : 11)\nset rmargin (small ? 2 : 3)\n"
+    << "set key top right horizontal maxrows 1 samplen 2 box opaque " << font_of(s, -1) << "\n"
+    << "set ylabel \"energy\"\n"
+    << "set xrange [0:" << num(e.t_end) << "]\nset yrange [0:*]\n"
     << "set arrow 1 from t_first, graph 0 to t_first, graph 1 nohead dt 2 lw 1.5 lc rgb \"black\"\n"
     << "set arrow 2 from t_proxy, graph 0 to t_proxy, graph 1 nohead dt 4 lw 1.5 lc rgb \"#9467bd\"\n"
     << "plot datafile index 0 using 1:2 with lines lc rgb \"#1f77b4\" lw 1.2 title \"H_q\", \\\n"
-    << "     '' index 0 using 1:3 with lines lc rgb \"#ff7f0e\" lw 1.2 title \"H_z\", \\\n"
-    << "     '' index 1 using 1:2 with points pt 7 ps 1.4 lc rgb \"#2ca02c\" title sprintf(\"min H_q = %.4g\", h_min), \\\n"
+    << "     '' index 0 using 1:3 with lines lc rgb \"#ff7f0e\" lw 1.2 title \"H_z\"\n"
+    << "set title (small ? \"H_q near its minimum (log)\" : \"H_q near its minimum (log axis)\") " << font_of(s, 0) << "\n"
+    << "set xlabel \"t\"\n"
+    << "set logscale y\nset format y \"10^{%L}\"\n"
+    << "set xrange [" << num(lo_t) << ":" << num(hi_t) << "]\n"
+    << "set yrange [" << num(y_lo) << ":" << num(hq_max > y_lo ? 2 * hq_max : 10 * y_lo) << "]\n"
+    << "set key bottom right vertical maxrows 3 box opaque\n"
+    << "plot datafile index 0 using 1:($2 > 0 ? $2 : NaN) with lines lc rgb \"#1f77b4\" lw 1.2 notitle, \\\n"
+    << "     '' index 1 using 1:($2 > 0 ? $2 : " << num(y_lo) << ") with points pt 7 ps 1.2 lc rgb \"#2ca02c\" "
+    << "title sprintf(\"min H_q = %.4g\", h_min), \\\n"
     << "     NaN with lines dt 2 lw 1.5 lc rgb \"black\" title sprintf(\"" << first_label << " = %.5g\", t_first), \\\n"
-    << "     NaN with lines dt 4 lw 1.5 lc rgb \"#9467bd\" title sprintf(\"paper proxy {/Symbol p}/n = %.5g\", t_proxy)\n";
+    << "     NaN with lines dt 4 lw 1.5 lc rgb \"#9467bd\" title sprintf(\"proxy {/Symbol p}/n = %.5g\", t_proxy)\n"
+    << "unset multiplot\n";
   return figure_finish(s, d.str(), g.str());
 }
 
 figure_output write_pareto_figure(const figure_spec& s, const std::vector<design_point>& all,
                                   const std::vector<design_point>& front, design_time which,
                                   const std::string& title) {
-  return figure_finish(s, pareto_data(all, front, which, title), pareto_script(s, all, which, title));
+  return figure_finish(s, pareto_data(all, front, which, title, s.width, s.height),
+                       pareto_script(s, all, front, which, title));
 }
 
 std::string pareto_orientation_caption(pareto_orientation o) {

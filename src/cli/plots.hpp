@@ -15,7 +15,7 @@ namespace gyrores::cli {
 namespace fs = std::filesystem;
 
 struct figure_spec {
-  fs::path dir;                     // where NAME.dat, NAME.gp and the images go
+  fs::path dir;                     // where NAME.dat, NAME.gp and the images go (.svg/.png/.pdf/.eps)
   std::string stem;                 // NAME
   int width = 800, height = 600;    // pixels
   std::vector<std::string> images;  // image file names in dir (.svg / .png)
@@ -44,8 +44,11 @@ figure_output write_phase_figure(const figure_spec& s, const phase_portrait& f, 
 figure_output write_energy_figure(const figure_spec& s, const energy_series& e, const std::string& title,
                                   const std::string& first_label);
 
-// Pareto: every pair (grey), degenerate pairs (r_res = 0) drawn on a floor line below the
-// smallest positive r_res, the front (red), some front pairs labelled; both axes logarithmic.
+// Pareto: every pair with r_res > 0 (grey) and the front (red, some pairs labelled) on log axes,
+// an inset with the front alone over its own ranges (on the whole time axis it is a sliver), and
+// the degenerate pairs (r_res = 0) on a strip of their own below, sharing the time axis.
+// Above 50000 pairs the grey and the strip are thinned to one pair per 2x2 pixels (said in the
+// title and the data file), so that a vector image stays a few MB.
 figure_output write_pareto_figure(const figure_spec& s, const std::vector<design_point>& all,
                                   const std::vector<design_point>& front, design_time which,
                                   const std::string& title);

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include <gyrores/core/integer.hpp>
+#include <gyrores/core/stop.hpp>
 #include <gyrores/model/pair.hpp>
 
 namespace gyrores {
@@ -57,6 +58,7 @@ struct pair_report_options {
   std::string qdot0 = "1";   // impulse amplitude v > 0: an exact decimal or fraction
   bool asymptotics = true;   // the paper's asymptotics (the pair values of design, Pareto, coupling skip them)
   bool enclosures = false;   // fill proved_real::enclosure (decimal text costs as much as the roundings)
+  stop_token stop;           // looked at before each precision (throws `interrupted`, core/stop.hpp)
 };
 
 struct pair_report {
@@ -76,7 +78,8 @@ struct pair_report {
 
 // The report of p. usage_error for digits outside [1, 10000] or a qdot0 that is not an exact
 // number > 0 (parse_rational, core/rational.hpp); compute_error only if some rounding is still
-// undecided at 2^20 bits (a resource limit, named in the message), never a wrong digit.
+// undecided at 2^20 bits (a resource limit, named in the message), never a wrong digit;
+// `interrupted` when opt.stop is requested (checked before each doubling of the precision).
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt = {});
 
 // The values the design, Pareto, coupling and report commands list: prove_pair without the

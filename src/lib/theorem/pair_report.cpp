@@ -52,11 +52,14 @@ class rounder {
 };
 
 // Calls fill(bits, rounder) at doubling precisions from `start` until it succeeds (its proofs
-// held) with every rounding decided.
+// held) with every rounding decided. A requested stop is honoured before each precision (one
+// fill at the highest precision is the longest wait: about a second at 10000 digits).
 template <class Fill>
-void refine(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, unsigned start, Fill&& fill) {
+void refine(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, unsigned start, Fill&& fill,
+            const stop_token& stop = {}) {
   std::string last = "a proof of the root";
   for (unsigned bits = start; bits <= max_report_bits; bits *= 2) {
+    stop.throw_if_requested();
     rounder r(digits, enclosures);
     if (!fill(bits, r)) continue;
     if (r.undecided().empty()) return;
@@ -318,7 +321,7 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
     root_cache cache(K);
     if (r.m_min > 0) cache.put_theorem(big_int(r.m_min), M.u_star);
     return asymptotic_fields(r, K, p, cache, M, v, round);
-  });
+  }, opt.stop);
   return r;
 }
 

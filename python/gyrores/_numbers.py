@@ -1,0 +1,80 @@
+"""Numbers of any size between the library's decimal text and Python: no limit of Python's own.
+
+Python refuses to convert decimal text of more than ``sys.get_int_max_str_digits()`` (4300)
+digits to an int, and mpmath parses decimal text through such ints. Here long decimal integers go
+through ``decimal.Decimal`` (whose conversion to int has no such limit) and reals through exact
+integer arithmetic with a single rounding (mpmath.libmp), so nothing process-wide is changed.
+"""
+
+import decimal as _decimal
+import json as _json
+import math as _math
+import re as _re
+
+import mpmath as _mpmath
+from mpmath import libmp as _libmp
+
+# The library's reals: format_scientific (core/decimal.hpp), e.g. "5.0745805e-02", "-1e+00", "0".
+_SCIENTIFIC = _re.compile(r"^(-?)(\d)(?:\.(\d+))?e([+-]\d+)$")
+_SAFE_DIGITS = 4000  # below Python's default limit (4300): int(text) is fine
+
+
+def int_of_text(text):
+    """The int of a decimal integer text of any length."""
+    if len(text) <= _SAFE_DIGITS:
+        return int(text)
+    return int(_decimal.Decimal(text))
+
+
+def loads(text):
+    """json.loads with integers of any size (the library's JSON has 10^400-sized pair members)."""
+    return _json.loads(text, parse_int=int_of_text)
+
+
+def is_real_text(text):
+    """Whether `text` has the form of the library's reals (a scientific decimal, or 0)."""
+    return text in ("0", "-0") or _SCIENTIFIC.match(text) is not None
+
+
+def _fraction_of(text):
+    """(sign, man, exp10): text = (-1)^sign man 10^exp10 exactly."""
+    if text in ("0", "-0"):
+        return 0, 0, 0
+    m = _SCIENTIFIC.match(text)
+    if m is None:
+        raise ValueError(f"not a decimal real of the library: {text!r}")
+    sign, lead, frac, exp = m.groups()
+    frac = frac or ""
+    return (1 if sign else 0), int_of_text(lead + frac), int(exp) - len(frac)
+
+
+def mpf_of_text(text, prec, rounding="n"):
+    """The mpf of `prec` bits nearest to `text` ('n'), below ('f') or above ('c'): one rounding."""
+    sign, man, exp10 = _fraction_of(text)
+    if man == 0:
+        return _mpmath.mp.make_mpf(_libmp.fzero)
+    if sign:
+        man = -man
+    if exp10 >= 0:
+        raw = _libmp.from_int(man * 10**exp10, prec, rounding)
+    else:
+        raw = _libmp.mpf_div(_libmp.from_int(man), _libmp.from_int(10 ** (-exp10)), prec, rounding)
+    return _mpmath.mp.make_mpf(raw)  # make_mpf keeps `prec` bits whatever mpmath.mp.dps is
+
+
+def float_of_text(text, rounding="n"):
+    """The double nearest to `text` ('n', Python's float(), correctly rounded), or below/above."""
+    x = float(text)
+    if rounding == "n" or _math.isinf(x):
+        return x
+    exact = _decimal.Decimal(text)
+    if rounding == "f" and _decimal.Decimal(x) > exact:
+        return _math.nextafter(x, -_math.inf)
+    if rounding == "c" and _decimal.Decimal(x) < exact:
+        return _math.nextafter(x, _math.inf)
+    return x
+
+
+def bits_of_digits(digits):
+    """Binary digits that hold `digits` decimal digits, with a few to spare."""
+    return int(_math.ceil(digits * _math.log2(10))) + 8
