@@ -287,6 +287,16 @@ TEST_CASE("cli coupling: any horizon and any coupling size answer (the horizon t
   const auto huge = cli_run("coupling 1e308 --json --convergents 1");
   CHECK(huge.status == 0);
   CHECK(huge.out.find("\"theorem\": \"horizon-theorem/1\"") != std::string::npos);
+  // Bands: the worst and best minimum over [0, T], and a degenerate pair inside (11, 9).
+  const auto band = cli_json("coupling --band 0.18:0.19 --horizon 20 --band-digits 4 --json");
+  CHECK(band["band"]["worst_h_min"]["converged"] == true);
+  CHECK(band["band"]["degenerate"].is_null());
+  const auto tol = cli_json("coupling 0.201 --tolerance 1% --horizon 40 --band-evaluations 100 --json");
+  CHECK(tol["band"]["degenerate"]["tau"] == 11);
+  CHECK(tol["band"]["best_h_min"]["enclosure"][1] == "0");
+  for (const char* bad : {"coupling --band 2:1", "coupling --band 1", "coupling 2 --tolerance 5", "coupling --n2 4 --tolerance 1%",
+                          "coupling 2 --band 1:3 --tolerance 1%"})
+    check_rejected(bad);
   const auto b = cli_json("coupling 2 --horizon 100pi --below 1% --json");
   CHECK(b["below"]["level"] == "1/200");
   CHECK(b["t_below"].is_string());

@@ -166,3 +166,49 @@ TEST_CASE("horizon: levels that are never reached, and E >= 1/2", "[horizon]") {
   CHECK_THROWS_AS(prove_first_below(two, big_rational(-1), 12), usage_error);
   CHECK_THROWS_AS(prove_horizon_minimum(two, big_rational(-1), 12), usage_error);
 }
+
+TEST_CASE("band: the proved extremes enclose a dense sample of proved minima", "[horizon][band]") {
+  // M(n) at 201 couplings of [0.18, 0.19] over [0, 20]: every sample lies below the worst's upper
+  // end and above the best's lower end, and the extremes are within L h/2 of the samples.
+  const big_rational n1(18, 100), n2(19, 100);
+  const horizon_time T(big_rational(20));
+  band_options opt;
+  opt.digits = 5;
+  const band_report b = prove_band(n1, n2, T, opt);
+  REQUIRE(b.worst.converged);
+  REQUIRE_FALSE(b.zero);
+  big_rational smax = -1, smin = 1;
+  const int samples = 200;
+  for (int i = 0; i <= samples; ++i) {
+    const big_rational n = n1 + (n2 - n1) * i / samples;
+    const auto r = prove_horizon_minimum(coupling_spec::from_n(n), T, 12);
+    const big_rational lo = parse_rational(r.h_min.enclosure.first, "lo"), hi = parse_rational(r.h_min.enclosure.second, "hi");
+    CHECK(lo <= b.worst.hi);
+    CHECK(hi >= b.best.lo);
+    if (lo > smax) smax = lo;
+    if (hi < smin) smin = hi;
+  }
+  const big_rational slack = parse_rational(b.lipschitz, "L") * 2 * (n2 - n1) / samples;
+  CHECK(b.worst.lo <= smax + slack);
+  CHECK(b.worst.hi >= smax);
+  CHECK(b.best.hi >= smin - slack);
+  // The worst is attained where the reported box says: M there is within the enclosure.
+  const auto at = prove_horizon_minimum(coupling_spec::from_n(b.worst.n_at), T, 12);
+  CHECK(parse_rational(at.h_min.enclosure.second, "hi") >= b.worst.lo);
+}
+
+TEST_CASE("band: a degenerate pair inside makes the best case 0, and only when its zero is before T", "[horizon][band]") {
+  // (11, 9): n^2 = 4/99, n = 0.20100756..., first zero at t = sqrt(99) pi/2 = 15.629...
+  band_options opt;
+  opt.max_evaluations = 200;
+  const band_report in = prove_band(big_rational(200, 1000), big_rational(202, 1000), horizon_time(big_rational(16)), opt);
+  REQUIRE(in.zero);
+  CHECK(in.zero->pair.tau() == 11);
+  CHECK(in.zero->pair.sigma() == 9);
+  CHECK(in.best.hi == 0);
+  // T = 15 ends before that zero (and no other degenerate pair of the band has an earlier one).
+  const band_report before = prove_band(big_rational(200, 1000), big_rational(202, 1000), horizon_time(big_rational(15)), opt);
+  CHECK_FALSE(before.zero);
+  CHECK(before.best.hi > 0);
+  CHECK_THROWS_AS(prove_band(big_rational(2), big_rational(1), horizon_time(big_rational(1))), usage_error);
+}

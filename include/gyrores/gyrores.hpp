@@ -27,6 +27,7 @@
 #include <gyrores/theorem/minimum.hpp>        // r_res, minimisers, theta_first, t_first
 #include <gyrores/theorem/pair_report.hpp>    // everything about one pair, every real proved
 #include <gyrores/theorem/horizon.hpp>        // any coupling: min of H_q over [0, T], first time below a level
+#include <gyrores/theorem/band.hpp>           // a band of couplings: worst and best minimum over [0, T], proved
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 // design, figures data, sweeps

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <gyrores/design/coupling_report.hpp>
+#include <gyrores/theorem/band.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 
@@ -18,7 +19,9 @@ namespace gyrores::cli {
 namespace {
 
 struct coupling_args {
-  std::string n, n2, horizon = "100", below;
+  std::string n, n2, horizon = "100", below, band, tolerance;
+  int band_digits = 6;
+  std::int64_t band_evaluations = 4000;
   int digits = 12;
   std::int64_t convergents = 8;
   bool json = false;
@@ -109,7 +112,78 @@ big_rational parse_level(std::string text) {
   return e;
 }
 
+std::string extreme_text(const band_extreme& e, unsigned digits) {
+  std::string out = e.value.empty() ? std::string("in [") + format_rational_scientific(e.lo, digits) + ", " +
+                                          format_rational_scientific(e.hi, digits) + "]"
+                                    : e.value;
+  out += "  at n = " + format_rational_scientific(e.n_at, 10);
+  if (e.n_box_lo != e.n_box_hi)
+    out += " (attained in [" + format_rational_scientific(e.n_box_lo, 10) + ", " + format_rational_scientific(e.n_box_hi, 10) + "])";
+  if (!e.converged) out += "  (not narrowed to " + std::to_string(digits) + " digits within the evaluation budget)";
+  return out;
+}
+
+std::string band_text(const coupling_args& a, const band_report& b) {
+  std::ostringstream os;
+  os << "band n in [" << rational_str(b.n1) << ", " << rational_str(b.n2) << "], over [0, " << a.horizon << "]:\n"
+     << "  worst min H_q " << extreme_text(b.worst, b.digits) << "\n"
+     << "  best min H_q  "
+     << (b.zero ? "0 exactly, at the degenerate pair below" : extreme_text(b.best, b.digits)) << "\n";
+  if (b.zero)
+    os << "  degenerate    the pair " << b.zero->pair.str() << " (n^2 = " << rational_str(b.zero->n2)
+       << ") lies in the band and H_q = 0 there at t = " << b.zero->t_zero.value << " <= T: no containment guarantee\n";
+  os << "  proof         horizon theorem at " << b.evaluations << " couplings, |dH_q/dn| <= " << b.lipschitz
+     << " over the band and [0, T]; each bound an enclosure of the exact extreme\n";
+  return os.str();
+}
+
+json band_json(const band_report& b) {
+  auto ext = [](const band_extreme& e) {
+    return json{{"value", e.value.empty() ? json(nullptr) : json(e.value)},
+                {"enclosure", {rational_str(e.lo), rational_str(e.hi)}},
+                {"n_at", rational_str(e.n_at)},
+                {"n_box", {rational_str(e.n_box_lo), rational_str(e.n_box_hi)}},
+                {"converged", e.converged}};
+  };
+  json j{{"n1", rational_str(b.n1)}, {"n2", rational_str(b.n2)}, {"digits", b.digits}, {"lipschitz", b.lipschitz},
+         {"evaluations", b.evaluations}, {"worst_h_min", ext(b.worst)}, {"best_h_min", ext(b.best)}};
+  j["degenerate"] = b.zero ? json{{"n2", rational_str(b.zero->n2)}, {"tau", json_integer(b.zero->pair.tau())},
+                                  {"sigma", json_integer(b.zero->pair.sigma())}, {"t_zero", b.zero->t_zero.value}}
+                           : json(nullptr);
+  return j;
+}
+
+// --band N1:N2, or --tolerance P% around N.
+std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args& a) {
+  if (!a.band.empty() && !a.tolerance.empty()) throw usage_error("give at most one of --band and --tolerance");
+  if (!a.band.empty()) {
+    const auto colon = a.band.find(':');
+    if (colon == std::string::npos) throw usage_error("--band must be N1:N2, got " + a.band);
+    return std::pair{parse_rational(a.band.substr(0, colon), "--band N1"), parse_rational(a.band.substr(colon + 1), "--band N2")};
+  }
+  if (a.tolerance.empty()) return std::nullopt;
+  if (a.n.empty()) throw usage_error("--tolerance needs the coupling N (not --n2)");
+  std::string t = a.tolerance;
+  if (t.empty() || t.back() != '%') throw usage_error("--tolerance must be a percentage such as 1%, got " + a.tolerance);
+  t.pop_back();
+  const big_rational p = parse_rational(t, "--tolerance") / 100, n = parse_rational(a.n, "N");
+  if (!(p > 0) || !(p < 1)) throw usage_error("--tolerance must be in (0%, 100%), got " + a.tolerance);
+  const big_rational an = n < 0 ? big_rational(-n) : n;
+  return std::pair{big_rational(an * (1 - p)), big_rational(an * (1 + p))};
+}
+
 std::string run_coupling(const coupling_args& a) {
+  const auto band = band_of(a);
+  if (band && a.n.empty() && a.n2.empty()) {
+    check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
+    check_flag_range(a.band_evaluations, 10, 1000000, "--band-evaluations");
+    band_options bo;
+    bo.digits = unsigned(a.band_digits);
+    bo.max_evaluations = std::size_t(a.band_evaluations);
+    const band_report b = prove_band(band->first, band->second, parse_horizon(a.horizon), bo);
+    if (!a.json) return band_text(a, b);
+    return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_json(b)}}) + "\n";
+  }
   if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
   check_digits_flag(a.digits, 1, 1000);
   check_flag_range(a.convergents, 0, 60, "--convergents");
@@ -121,9 +195,20 @@ std::string run_coupling(const coupling_args& a) {
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   const coupling_report r = analyse_coupling(spec, opt);
-  if (!a.json) return coupling_text(a, r);
+  std::optional<band_report> b;
+  if (band) {
+    check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
+    check_flag_range(a.band_evaluations, 10, 1000000, "--band-evaluations");
+    band_options bo;
+    bo.digits = unsigned(a.band_digits);
+    bo.max_evaluations = std::size_t(a.band_evaluations);
+    b = prove_band(band->first, band->second, opt.horizon, bo);
+  }
+  if (!a.json) return coupling_text(a, r) + (b ? band_text(a, *b) : "");
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
-  return json_dump(coupling_report_json(input, a.horizon, unsigned(a.digits), r)) + "\n";
+  json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
+  if (b) j["band"] = band_json(*b);
+  return json_dump(j) + "\n";
 }
 
 command_runner install_coupling(CLI::App& app) {
@@ -132,6 +217,10 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
   sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
   sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
+  sub.add("--band", a->band, "a band of couplings N1:N2: worst and best min of H_q over [0, T], proved (N optional)");
+  sub.add("--tolerance", a->tolerance, "the band N (1 -+ P%) around N, e.g. 1%");
+  sub.add("--band-digits", a->band_digits, "relative width asked of the band's enclosures: 10^-D (1..12)", show::with_default);
+  sub.add("--band-evaluations", a->band_evaluations, "proved horizon minima per extreme at most", show::with_default);
   sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%)");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);
