@@ -212,3 +212,34 @@ TEST_CASE("band: a degenerate pair inside makes the best case 0, and only when i
   CHECK(before.best.hi > 0);
   CHECK_THROWS_AS(prove_band(big_rational(2), big_rational(1), horizon_time(big_rational(1))), usage_error);
 }
+
+TEST_CASE("design with tolerance: each verdict agrees with a dense sample of the band", "[horizon][band][design]") {
+  // Absorb to E = 1% (0.005) before T = 20 and contain E = 1e-4 over [0, 50]: for every checked
+  // pair, 'meets' means every sampled coupling meets it, 'fails' that the band's proved extreme is
+  // on the wrong side (and some sample near it is too).
+  const auto catalogue = design_catalogue(60);
+  for (auto problem : {design_problem::absorb, design_problem::contain}) {
+    design_options o;
+    o.problem = problem;
+    o.tmax = problem == design_problem::absorb ? big_rational(20) : big_rational(17);
+    o.candidates = 6;
+    const auto res = design_solve(catalogue, o);
+    tolerance_options t;
+    t.fraction = big_rational(1, 100);
+    t.level = problem == design_problem::absorb ? big_rational(1, 200) : big_rational(1, 10000);
+    t.horizon = horizon_time(problem == design_problem::absorb ? big_rational(20) : big_rational(50));
+    t.max_pairs = 6;
+    const tolerance_result r = design_with_tolerance(res.ranked, problem, t);
+    REQUIRE(r.chosen);  // both problems have a pair that meets the guarantee here
+    for (const auto& c : r.checked) {
+      INFO(c.point.pair().str() << " " << tolerance_verdict_name(c.verdict));
+      if (c.verdict != tolerance_verdict::meets) continue;
+      for (int i = 0; i <= 40; ++i) {
+        const big_rational n = c.band.n1 + (c.band.n2 - c.band.n1) * i / 40;
+        const auto m = prove_horizon_minimum(coupling_spec::from_n(n), t.horizon, 10);
+        if (problem == design_problem::absorb) CHECK(parse_rational(m.h_min.enclosure.first, "lo") <= t.level);
+        else CHECK(parse_rational(m.h_min.enclosure.second, "hi") >= t.level);
+      }
+    }
+  }
+}

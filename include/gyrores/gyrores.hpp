@@ -31,8 +31,9 @@
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 // design, figures data, sweeps
-#include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
-#include <gyrores/design/coupling_report.hpp>  // the coupling analysis (proved but for the horizon minimum)
+#include <gyrores/design/coupling.hpp>       // the scan of every critical point over a horizon (a reference, and for figures)
+#include <gyrores/design/coupling_report.hpp>  // the coupling analysis, every number proved
 #include <gyrores/design/design.hpp>         // design problems (absorb/contain) and the Pareto front
+#include <gyrores/design/tolerance.hpp>      // design with a tolerance band on the coupling, proved over a horizon
 #include <gyrores/design/figures.hpp>        // data behind the figures (trajectory, envelope, circles, energies)
 #include <gyrores/sweep/sweep.hpp>           // sweeps over all pairs up to an order: checks, mergeable summary

@@ -7,6 +7,7 @@
 #include <gyrores/design/design.hpp>
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/design/tolerance.hpp>
 #include <gyrores/io/json.hpp>
 
 #include "cli_options.hpp"
@@ -17,7 +18,7 @@ namespace gyrores::cli {
 namespace {
 
 struct design_args {
-  std::string problem, tmax, beat;
+  std::string problem, tmax, beat, tolerance, level, horizon;
   std::int64_t max_order = 200, exclude_low = 0, delta = 0, candidates = 5;
   int digits = 10;
   bool proxy = false, json = false;
@@ -116,19 +117,97 @@ std::string design_text(const design_args& a, const design_options& o, const des
   return os.str();
 }
 
+// --tolerance P% with --level E (energy or % of H_q(0) = 1/2) and --horizon H (contain; default T_max).
+std::optional<tolerance_options> tolerance_options_of(const design_args& a, const design_options& o) {
+  if (a.tolerance.empty()) {
+    if (!a.level.empty() || !a.horizon.empty()) throw usage_error("--level and --horizon need --tolerance");
+    return std::nullopt;
+  }
+  if (a.proxy) throw usage_error("--tolerance needs the exact first-hit time (not --proxy)");
+  auto percent = [](std::string t, const char* flag) {
+    if (t.empty() || t.back() != '%') throw usage_error(std::string(flag) + " must be a percentage such as 1%, got " + t);
+    t.pop_back();
+    return parse_rational(t, flag) / 100;
+  };
+  tolerance_options t;
+  t.fraction = percent(a.tolerance, "--tolerance");
+  if (!(t.fraction > 0) || !(t.fraction < 1)) throw usage_error("--tolerance must be in (0%, 100%), got " + a.tolerance);
+  if (a.level.empty()) throw usage_error("--tolerance needs --level E: the energy to absorb down to (absorb) or to keep (contain)");
+  t.level = a.level.back() == '%' ? big_rational(percent(a.level, "--level") / 2) : parse_rational(a.level, "--level");
+  if (t.level < 0) throw usage_error("--level must be >= 0, got " + a.level);
+  t.horizon = horizon_time(o.tmax);
+  if (!a.horizon.empty()) {
+    if (o.problem == design_problem::absorb) throw usage_error("--horizon is for contain (absorb uses --tmax)");
+    t.horizon = horizon_time(parse_positive_flag(a.horizon, "--horizon"));
+  }
+  t.max_pairs = std::max<std::size_t>(o.candidates + 1, 20);
+  return t;
+}
+
+std::string tolerance_text(const design_args& a, const design_problem problem, const tolerance_result& r) {
+  std::ostringstream os;
+  const bool absorb = problem == design_problem::absorb;
+  os << "with tolerance " << a.tolerance << " on n: " << (absorb ? "H_q <= " : "H_q >= ") << a.level
+     << (absorb ? " before --tmax " + a.tmax : " on [0, " + (a.horizon.empty() ? a.tmax : a.horizon) + "]")
+     << " for every n of the band, proved (" << horizon_theorem_id << ")\n"
+     << "  rank  pair          band of n                        " << (absorb ? "worst" : "best") << " min H_q over the horizon   verdict\n";
+  for (std::size_t i = 0; i < r.checked.size(); ++i) {
+    const auto& c = r.checked[i];
+    const band_extreme& e = absorb ? c.band.worst : c.band.best;
+    const std::string pr = c.point.pair().str();
+    os << "  " << i + 1 << std::string(i + 1 < 10 ? 5 : 4, ' ') << pr << std::string(pr.size() < 14 ? 14 - pr.size() : 1, ' ')
+       << "[" << format_rational_scientific(c.band.n1, 8) << ", " << format_rational_scientific(c.band.n2, 8) << "]  "
+       << (c.band.zero ? "0 (degenerate " + c.band.zero->pair.str() + ")"
+                       : "[" + format_rational_scientific(e.lo, 4) + ", " + format_rational_scientific(e.hi, 4) + "]")
+       << "  " << tolerance_verdict_name(c.verdict) << "\n";
+  }
+  if (r.chosen) os << "chosen with tolerance: " << r.checked[*r.chosen].point.pair().str() << "\n";
+  else
+    os << "no pair among the " << r.checked.size() << " best ranked meets the guarantee with this tolerance"
+       << " (a wider --tmax, a smaller tolerance or another --level may)\n";
+  return os.str();
+}
+
+json tolerance_json(const design_problem problem, const tolerance_result& r) {
+  json checked = json::array();
+  for (const auto& c : r.checked) {
+    const band_extreme& e = problem == design_problem::absorb ? c.band.worst : c.band.best;
+    checked.push_back({{"tau", c.point.tau}, {"sigma", c.point.sigma},
+                       {"band", {rational_str(c.band.n1), rational_str(c.band.n2)}},
+                       {"h_min_enclosure", {rational_str(e.lo), rational_str(e.hi)}},
+                       {"degenerate_zero", c.band.zero ? json(c.band.zero->pair.str()) : json(nullptr)},
+                       {"verdict", tolerance_verdict_name(c.verdict)}});
+  }
+  json j{{"checked", checked}, {"theorem", horizon_theorem_id}};
+  j["chosen"] = r.chosen ? json{{"tau", r.checked[*r.chosen].point.tau}, {"sigma", r.checked[*r.chosen].point.sigma}}
+                         : json(nullptr);
+  return j;
+}
+
 std::string run_design(const design_args& a) {
-  const design_options o = design_options_of(a);
+  design_options o = design_options_of(a);
+  const auto tol = tolerance_options_of(a, o);
+  if (tol) o.candidates = tol->max_pairs;
   const auto res = design_solve(design_catalogue(a.max_order), o);
   if (!res.feasible_any())
     throw compute_error("no resonant pair meets the constraints (" + constraint_text(a, o) + "; " +
                         std::to_string(res.examined) + " pairs examined); nothing chosen");
   design_rows rows;
   for (const auto& p : res.ranked) {
+    if (rows.size() > std::size_t(a.candidates)) break;  // --tolerance ranks more pairs than it shows
     resonant_pair<big_int> bp(big_int(p.tau), big_int(p.sigma));
     rows.push_back({bp, prove_pair_values(bp, unsigned(a.digits))});
   }
   const bool exact_exceeds = a.proxy && !design_time_within(res.ranked.front(), design_time::first_hit, o.tmax);
-  return a.json ? design_json(a, res, rows, exact_exceeds) : design_text(a, o, res, rows, exact_exceeds);
+  if (!tol) return a.json ? design_json(a, res, rows, exact_exceeds) : design_text(a, o, res, rows, exact_exceeds);
+  const tolerance_result tr = design_with_tolerance(res.ranked, o.problem, *tol);
+  if (!a.json) return design_text(a, o, res, rows, exact_exceeds) + tolerance_text(a, o.problem, tr);
+  std::string text = design_json(a, res, rows, exact_exceeds);
+  json j = json::parse(text);
+  j["tolerance"] = tolerance_json(o.problem, tr);
+  j["tolerance"]["percent"] = a.tolerance;
+  j["tolerance"]["level"] = a.level;
+  return json_dump(j) + "\n";
 }
 
 command_runner install_design(CLI::App& app) {
@@ -142,6 +221,9 @@ command_runner install_design(CLI::App& app) {
   sub.add("--delta", a->delta, "only pairs with tau - sigma = D (follows the paper's Case A)");
   sub.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| instead of the exact first-hit time");
   sub.add("--candidates", a->candidates, "runners-up to report", show::with_default);
+  sub.add("--tolerance", a->tolerance, "the coupling is realised within n (1 -+ P%): prove the guarantee over that band");
+  sub.add("--level", a->level, "with --tolerance: E (energy, or % of H_q(0) = 1/2) to absorb down to, or to keep");
+  sub.add("--horizon", a->horizon, "with --tolerance, contain: keep H_q >= E on [0, H] (default --tmax)");
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);
   return [a] { return run_design(*a); };

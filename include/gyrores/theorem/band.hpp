@@ -26,6 +26,7 @@ namespace gyrores {
 struct band_options {
   unsigned digits = 6;                 // the relative width asked of each enclosure: 10^-digits
   std::size_t max_evaluations = 4000;  // proved horizon minima per extreme (then the enclosure reached is reported)
+  bool want_worst = true, want_best = true;  // which extremes to prove (the other is left 0, unconverged)
   stop_token stop;
 };
 

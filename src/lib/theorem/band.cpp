@@ -251,7 +251,8 @@ band_report prove_band(const big_rational& n1, const big_rational& n2, const hor
   r.digits = opt.digits;
   const big_rational L = lipschitz_bound(n1, n2, T);
   r.lipschitz = format_rational_scientific(L, 6);
-  r.worst = extreme(n1, n2, T, L, opt, true, r.evaluations);
+  if (opt.want_worst) r.worst = extreme(n1, n2, T, L, opt, true, r.evaluations);
+  if (!opt.want_best) return r;
   r.zero = find_degenerate(n1, n2, T, opt.stop);
   if (r.zero) {
     r.best.lo = r.best.hi = 0;
