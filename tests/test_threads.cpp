@@ -2,7 +2,7 @@
 // nothing in the library writes process-wide state, so each may run on any thread): proved pair
 // reports at 17, 50 and 300 digits, lattice-theorem certificates and their independent checker,
 // small sweeps (double and MPFR rows, with and without --certified) and the coupling report
-// (whose horizon minimum runs on the MPFR precision ladder, core/precision.hpp). Each job's
+// (whose horizon minimum is proved in Arb). Each job's
 // result, as text, must equal the same job's result run alone first.
 //
 // What it catches: a library function that sets Boost's process-wide default precision of

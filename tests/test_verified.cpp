@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/core/precision.hpp>
-#include <gyrores/core/verified_digits.hpp>
+#include "reference/precision.hpp"
+#include "reference/verified_digits.hpp"
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/gyrores.hpp>
 

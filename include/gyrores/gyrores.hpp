@@ -11,9 +11,7 @@
 #include <gyrores/core/decimal.hpp>          // exact decimal output, Ziv rounding test, decimal input
 #include <gyrores/core/rational.hpp>         // exact rationals: parsing, printing
 #include <gyrores/core/roots.hpp>            // the TOMS 748 wrapper, safeguarded Newton
-#include <gyrores/core/precision.hpp>        // the working type chosen from the digits asked
 #include <gyrores/core/quadratic.hpp>        // exact numbers of Q(sqrt d): the rotation number of any coupling
-#include <gyrores/core/verified_digits.hpp>  // the verified-digits contract (two runs, Ziv's test)
 // model: pairs, enumeration, the model for any n, resonant frames
 #include <gyrores/model/pair.hpp>            // resonant_pair<I>: number theory of (tau, sigma)
 #include <gyrores/model/enumerate.hpp>       // coprime_pairs: lazy enumeration by order

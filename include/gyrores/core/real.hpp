@@ -13,8 +13,7 @@
 // once only while every value has the default precision and nobody changes the default. The
 // library never changes it (docs/architecture.md, Conventions): proved code works on
 // fixed_mpfr/fixed_mpfi (core/fixed_precision.hpp) or Arb balls, and generic code that needs a
-// chosen MPFR precision runs in mpfr_fixed<D> (core/precision.hpp, with_real_type), whose
-// precision is part of the type.
+// chosen MPFR precision runs in mpfr_fixed<D>, whose precision is part of the type.
 #pragma once
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -119,8 +118,8 @@ inline unsigned digits10_for_bits(unsigned bits) { return bits_to_digits10(bits)
 
 // pi in T, correctly rounded. mpfr_fixed: by MPFR at each call (MPFR caches pi per thread):
 // Boost's pi<T>() for a fixed-precision MPFR type computes pi at that precision when the
-// program starts (a static initialiser per type), which the large types of the precision
-// ladder (core/precision.hpp) must not cost every process.
+// program starts (a static initialiser per type), which large fixed types must not cost every
+// process.
 template <class T> T real_pi() {
   if constexpr (is_mpfr_fixed_v<T>) {
     T r;

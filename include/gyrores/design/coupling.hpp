@@ -15,8 +15,7 @@
 // Each root is solved by TOMS 748 (roots.hpp) in T; H_q is q^2/2 at a q' root (q' = 0 there;
 // R is stationary, see resonant.hpp) and (q^2 + q'^2)/2 at a z' root. Cost: about 2 W1 T/pi
 // root solves. Accuracy: the phases W1 t are formed in T, so the absolute phase error grows
-// like T * eps(T); coupling_report.hpp verifies printed digits by recomputing at higher
-// precision (core/verified_digits.hpp).
+// like T * eps(T): in double it is a drawing aid (figures.cpp), at 200 bits the tests' reference.
 // Infimum over all time: for non-resonant n the line (W1 t, W2 t) is dense on the torus and
 // passes arbitrarily close to P+ = (pi/2, -pi/2), where q = q' = 0 (docs/mathematics.md §3): inf H_q = 0,
 // not attained. For resonant n it is the pair's H_min = r_res^2/2, first attained at t_first.
@@ -154,8 +153,7 @@ inline std::string approximate_count_text(double count) {
 // Preconditions (checked, usage_error): v > 0, horizon >= 0, n != 0, at most
 // horizon_max_critical_points critical points. mpfr_real works at Boost's default precision,
 // which every argument must have (else Boost's operators change that process-wide default
-// during the call: core/real.hpp); mpfr_fixed<D> carries its own (coupling_report.hpp runs the
-// ladder of core/precision.hpp).
+// during the call: core/real.hpp); mpfr_fixed<D> carries its own (the tests' reference runs there).
 template <class T> horizon_min_result<T> horizon_minimum(const T& n_in, const T& v, const T& horizon) {
   using std::fabs;
   using std::floor;

@@ -42,13 +42,24 @@ void set_infimum(coupling_report& r) {
                  "(pi/2, -pi/2), where q = q' = 0; the infimum 0 is approached but never attained";
 }
 
-std::vector<coupling_convergent> proved_convergents(const coupling_spec& spec, std::size_t count, unsigned digits) {
+// A pair's values as design, Pareto and coupling list them (no asymptotics), stoppable.
+pair_report pair_values(const resonant_pair<big_int>& p, unsigned digits, const stop_token& stop) {
+  pair_report_options o;
+  o.digits = digits;
+  o.asymptotics = false;
+  o.enclosures = true;  // as prove_pair_values
+  o.stop = stop;
+  return prove_pair(p, o);
+}
+
+std::vector<coupling_convergent> proved_convergents(const coupling_spec& spec, std::size_t count, unsigned digits,
+                                                    const stop_token& stop) {
   std::vector<coupling_convergent> out;
   for (auto& c : coupling_convergents(spec, count)) {
     coupling_convergent row{c, std::nullopt, std::nullopt};
     if (c.p > c.q) {
       row.pair = resonant_pair<big_int>(c.p, c.q);
-      row.values = prove_pair_values(*row.pair, digits);
+      row.values = pair_values(*row.pair, digits, stop);
     }
     out.push_back(row);
   }
@@ -65,12 +76,12 @@ coupling_report analyse_coupling(const coupling_spec& spec, const coupling_repor
   r.spec = spec;
   r.n_negative = spec.n && *spec.n < 0;
   r.pair = coupling_resonant_pair(spec);
-  if (r.pair) r.pair_values = prove_pair_values(*r.pair, opt.digits);
+  if (r.pair) r.pair_values = pair_values(*r.pair, opt.digits, opt.stop);
   prove_coupling_numbers(r, opt.digits);
   r.horizon = prove_horizon_minimum(spec, opt.horizon, opt.digits, opt.stop);
   if (opt.below) r.below = prove_first_below(spec, *opt.below, opt.digits, opt.stop);
   set_infimum(r);
-  r.convergents = proved_convergents(spec, opt.convergents, opt.digits);
+  r.convergents = proved_convergents(spec, opt.convergents, opt.digits, opt.stop);
   return r;
 }
 

@@ -309,9 +309,12 @@ horizon_lobe lobe_of(const quadratic_number& x, const big_int& k) {
   return l;
 }
 
+// The starting precision: the digits asked, plus twice the bits of the integer part of `scale`
+// (the phases reach about scale and must keep the digits after their integer part).
 slong start_bits(unsigned digits, const big_rational& scale) {
-  const double mag = std::max(1.0, std::fabs(scale.convert_to<double>()));
-  return slong(digits * 3.33) + 64 + slong(std::log2(mag + 1) * 2);
+  const auto bits = [](big_int v) { return v == 0 ? slong(0) : slong(boost::multiprecision::msb(v < 0 ? big_int(-v) : v)) + 1; };
+  const slong mag = std::max<slong>(0, bits(boost::multiprecision::numerator(scale)) - bits(boost::multiprecision::denominator(scale)) + 1);
+  return slong(digits * 3.33) + 64 + 2 * mag;
 }
 
 // alpha_T = s T/2 as a ball.

@@ -1,5 +1,5 @@
 // include/gyrores/core/verified_digits.hpp
-#include <gyrores/core/verified_digits.hpp>
+#include "reference/verified_digits.hpp"
 
 #include <algorithm>
 #include <optional>

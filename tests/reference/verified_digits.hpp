@@ -1,5 +1,6 @@
-// Verified decimal digits: printing a computed real only with digits that two independent
-// precisions agree on (the contract of every real number the gyrores CLI prints).
+// Verified decimal digits: accepting a computed real only with digits that two independent
+// precisions agree on. The CLI printed such digits before the theorems proved every number; this is
+// now a reference method for the tests (a consistency check, not a proof).
 //
 // The computation is a function from a precision plan (core/precision.hpp) to named real
 // fields (each a list of values, copied exactly into MPFR). compute_verified runs it twice: in the
@@ -39,7 +40,7 @@
 #include <vector>
 
 #include <gyrores/core/decimal.hpp>
-#include <gyrores/core/precision.hpp>
+#include "reference/precision.hpp"
 #include <gyrores/core/real.hpp>
 
 namespace gyrores {

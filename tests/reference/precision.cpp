@@ -1,5 +1,5 @@
 // include/gyrores/core/precision.hpp
-#include <gyrores/core/precision.hpp>
+#include "reference/precision.hpp"
 
 namespace gyrores {
 
