@@ -124,3 +124,12 @@ def test_wrong_arguments_name_function_and_argument(call, message):
     with pytest.raises(gyrores.UsageError) as e:
         call()
     assert str(e.value).startswith(message) and "\n" not in str(e.value)
+
+
+def test_an_exception_in_progress_stops_the_loop():
+    def progress(done, total):
+        raise RuntimeError(f"stop at {done}")
+
+    with pytest.raises(RuntimeError, match="stop at 64"):
+        gyrores.couplings(np.linspace(0.5, 3, 300), horizon=100, progress=progress)
+    assert gyrores.couplings(2)["h_min_horizon"] > 0  # still usable
