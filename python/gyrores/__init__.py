@@ -40,13 +40,15 @@ __version__ = _gyrores.__version__
 
 __all__ = [
     "CheckResult", "ComputeError", "Interval", "PairResult", "Result", "UsageError", "__version__", "asymptotics",
-    "certify", "check", "coupling", "design", "enumerate_pairs", "pair", "pairs", "pareto", "sweep",
+    "certify", "check", "coupling", "couplings", "design", "enumerate_pairs", "pair", "pairs", "pareto", "sweep",
 ]
 
 # Keys whose values are exact rationals as text ("1/12", "17"): fractions.Fraction.
-_RATIONAL_KEYS = frozenset({"tmax", "beat", "horizon", "n2"})
+_RATIONAL_KEYS = frozenset({"tmax", "beat", "n2", "level"})
 # Keys whose strings are text (or the caller's input echoed back), never converted.
-_ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason", "note",
+# x and horizon_lobe_distance are exact algebraic numbers as text ("sqrt(2)/2 + 1/2"): no Python
+# number type holds them exactly, and a float would pass for the proved value.
+_ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason", "note", "x", "horizon_lobe_distance",
                         "inf_reason", "horizon_source", "orientation", "orientation_meaning", "time", "problem"})
 _DOUBLE_DIGITS = 15  # up to here reals are floats
 _FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then more if undecided)
@@ -371,20 +373,143 @@ def pareto(max_order, orientation="absorb", proxy=False, exclude_degenerate=Fals
     return _convert(raw, _real(d))
 
 
-def coupling(n=None, n2=None, horizon=100, convergents=8, digits=12):
-    """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q, convergents.
+def _prefixed(function, call, *args):
+    """call(*args), its UsageError naming `function` (the library names only the argument)."""
+    try:
+        return call(*args)
+    except UsageError as e:
+        raise UsageError(f"{function}(): {e}") from None
 
-    Exactly one of n, n2 (rationals). horizon: T >= 0 for the minimum of H_q over [0, T];
-    convergents: how many convergents of W1/W2 (0..60); digits 1..1000. Returns the Result of
-    ``gyrores coupling --json``. Ctrl-C returns at once (the computation then ends on its own).
+
+def _level(below, function):
+    """The level E as text: an energy (a rational) or a percentage of H_q(0) = 1/2 ("1%")."""
+    if below is None:
+        return None
+    if isinstance(below, str):
+        return below.strip()
+    return _args.rational(below, function, "below")
+
+
+def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12):
+    """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q over [0, T],
+    the first time H_q <= E, the infimum over all time, convergents (``gyrores coupling --json``).
+
+    Exactly one of n, n2 (rationals). horizon: T >= 0 as the CLI takes it: a number, a decimal,
+    scientific or fraction text ("1e100", "1/3"), or a multiple of pi ("100pi"); the minimum of
+    H_q over [0, T] and its first time are proved by the horizon theorem in O(log T).
+    below: a level E, an energy (a rational) or a percentage of H_q(0) = 1/2 ("1%"): ``t_below``
+    (None when never, ``below.reason`` says why). convergents: 0..60; digits 1..1000.
+    Returns a Result with the CLI's keys: reals as in design() (floats for digits <= 15, mpf
+    beyond); ``enclosures`` Intervals (h_min_horizon, t_min_horizon, r_min_horizon, t_below);
+    integers (horizon_lobe, cut_lobe, discriminant) exact ints; ``n2``, ``below.level`` and
+    ``horizon`` Fractions (``horizon`` stays text when it is a multiple of pi); ``x`` and
+    ``horizon_lobe_distance`` exact algebraic numbers as text (e.g. "sqrt(2)/2 + 1/2").
+    Ctrl-C stops the computation (KeyboardInterrupt).
     """
     f = "coupling"
     d = _args.bounded(digits, f, "digits", 1, 1000)
-    raw = _gyrores._coupling(None if n is None else _args.rational(n, f, "n"),
-                             None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
-                             _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d))
+    raw = _prefixed(f, _gyrores._coupling, None if n is None else _args.rational(n, f, "n"),
+                    None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
+                    _level(below, f), _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d))
     raw["digits"] = d
-    return _convert(raw, _real(d))
+    horizon_text = raw.pop("horizon")
+    enclosures = raw.pop("enclosures")
+    out = _convert(raw, _real(d))
+    try:
+        out["horizon"] = _fractions.Fraction(horizon_text)
+    except ValueError:  # a multiple of pi: the text
+        out["horizon"] = horizon_text
+    out["enclosures"] = _hull_with_values(_intervals(enclosures, d), out)
+    return out
+
+
+def _input_texts(values, function, name):
+    """A NumPy array (any shape) of the exact texts of `values`: floats as their exact binary
+    values ("0.1" the float is 3602879701896397/36028797018963968), strings as the CLI reads them,
+    other numbers as in coupling()."""
+    import numpy as np
+    if isinstance(values, np.ndarray):
+        arr = values
+    elif isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        arr = np.empty((), dtype=object)
+        arr[()] = values
+    else:
+        try:
+            arr = np.array(list(values), dtype=object)  # nested lists: a grid
+        except ValueError:
+            raise UsageError(f"{function}(): {name} is ragged (nested sequences of different lengths)") from None
+    texts = np.empty(arr.shape, dtype=object)
+    for i, (index, v) in enumerate(zip(np.ndindex(arr.shape), arr.flat)):
+        where = f"{name}[{i}]" if arr.ndim else name
+        if isinstance(v, (bool, np.bool_)):
+            raise UsageError(f"{function}(): {where} must be a number, got a bool {v!r}")
+        if isinstance(v, (float, np.floating)):
+            if not np.isfinite(v):
+                raise UsageError(f"{function}(): {where} must be finite, got {v}")
+            p, q = v.as_integer_ratio()
+            texts[index] = f"{p}/{q}"
+        elif isinstance(v, str):
+            texts[index] = v.strip()
+        else:
+            texts[index] = _args.rational(v, function, where)
+    return texts
+
+
+def _double_of_text(text):
+    """The double of an exact input text: a rational (correctly rounded), or a multiple of pi."""
+    if text.endswith("pi"):
+        import mpmath
+        with mpmath.workdps(40):
+            v = _fractions.Fraction(text[:-2].rstrip(" *"))
+            return float(mpmath.mpf(v.numerator) / v.denominator * mpmath.pi)
+    return float(_fractions.Fraction(text))
+
+
+def couplings(n=None, n2=None, horizon=100, below=None, progress=None):
+    """coupling() over arrays: the minimum of H_q over [0, T] and the first time H_q <= E for
+    every (n, T) in one call, as a NumPy structured array.
+
+    Exactly one of n, n2: a number or a NumPy array / iterable of numbers; horizon likewise
+    (numbers, or texts as coupling() takes them: "1e100", "100pi"); they are broadcast together
+    (NumPy rules) and the table has the broadcast shape. Floats (and NumPy floats) are taken as
+    their exact binary values (0.1 is 3602879701896397/2^55, not 1/10): give text ("0.1") for a
+    decimal. below: one level for all (as in coupling()). Fields, float64, each the correctly
+    rounded double of the proved value (decided from its enclosure, more digits when needed): n
+    (or n2), horizon (T; for a multiple of pi its nearest double), h_min_horizon, t_min_horizon,
+    t_below (NaN without below or when never); min_at_horizon_end and resonant (bool). The loop
+    runs in C++ without the GIL; Ctrl-C stops it between elements or inside one
+    (KeyboardInterrupt). progress, if given, is called as progress(done, total) every 64
+    elements and at the end, from a worker thread; an exception it raises stops the loop.
+    """
+    import numpy as np
+    f = "couplings"
+    if (n is None) == (n2 is None):
+        raise UsageError(f"{f}(): give exactly one of n (the coupling) or n2 (its square)")
+    if progress is not None and not callable(progress):
+        raise UsageError(f"{f}(): progress must be callable, got {type(progress).__name__}")
+    name = "n" if n2 is None else "n2"
+    coupling_texts = _input_texts(n if n2 is None else n2, f, name)
+    horizon_texts = _input_texts(horizon, f, "horizon")
+    try:
+        cb, hb = np.broadcast_arrays(coupling_texts, horizon_texts)
+    except ValueError:
+        raise UsageError(f"{f}(): {name} of shape {coupling_texts.shape} and horizon of shape {horizon_texts.shape} "
+                         "do not broadcast") from None
+    cs, hs = [str(t) for t in cb.flat], [str(t) for t in hb.flat]
+    h_min, t_min, at_end, t_below, resonant = _prefixed(f, _gyrores._couplings, cs, n2 is not None, hs,
+                                                        _level(below, f), progress)
+    table = np.empty(cb.shape, dtype=[(name, np.float64), ("horizon", np.float64), ("h_min_horizon", np.float64),
+                                      ("t_min_horizon", np.float64), ("min_at_horizon_end", bool),
+                                      ("t_below", np.float64), ("resonant", bool)])
+    flat = table.reshape(-1)
+    flat[name] = [_double_of_text(t) for t in cs]
+    flat["horizon"] = [_double_of_text(t) for t in hs]
+    flat["h_min_horizon"] = h_min
+    flat["t_min_horizon"] = t_min
+    flat["min_at_horizon_end"] = at_end
+    flat["t_below"] = t_below
+    flat["resonant"] = resonant
+    return table
 
 
 def enumerate_pairs(max_order, min_order=3):

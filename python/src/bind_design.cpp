@@ -1,10 +1,9 @@
-// gyrores.design, gyrores.pareto, gyrores.coupling: design/design.hpp (the design problems and
-// the Pareto front over resonant pairs) and design/coupling_report.hpp (any coupling n), as the
-// dicts of the matching `gyrores ... --json` commands (the files the CLI can write beside them,
-// CSV and plots, are left to the caller). Parameters are checked here with their Python names.
+// gyrores.design, gyrores.pareto: design/design.hpp (the design problems and the Pareto front
+// over resonant pairs), as the dicts of the matching `gyrores ... --json` commands (the files the
+// CLI can write beside them, CSV and plots, are left to the caller). Parameters are checked here
+// with their Python names.
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
-#include <gyrores/design/coupling_report.hpp>
 #include <gyrores/design/design.hpp>
 #include <gyrores/io/report_json.hpp>
 
@@ -130,25 +129,6 @@ py::object pareto_dict(std::int64_t max_order, const std::string& orientation, b
   return to_python(result);
 }
 
-py::object coupling_dict(const py::object& n, const py::object& n2, const py::object& horizon,
-                         std::int64_t convergents, long long digits) {
-  if (n.is_none() == n2.is_none()) throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
-  coupling_report_options opt;
-  opt.digits = checked_digits(digits, 1, 1000);
-  if (convergents < 0 || convergents > 60) throw usage_error("convergents must be in [0, 60]");
-  opt.convergents = std::size_t(convergents);
-  const std::string horizon_text = rational_text(horizon);
-  opt.horizon = horizon_time(parse_rational(horizon_text, "horizon"));
-  if (opt.horizon.value < 0) throw usage_error("horizon must be >= 0, got " + horizon_text);
-  const coupling_spec spec = n.is_none() ? coupling_spec::from_n2(parse_rational(rational_text(n2), "n2"))
-                                         : coupling_spec::from_n(parse_rational(rational_text(n), "n"));
-  const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
-  // The coupling library takes no stop flag: on Ctrl-C this call returns at once and the work
-  // ends on its own, its result dropped (interruptible.hpp).
-  const coupling_report r = run_interruptible<coupling_report>([spec, opt](stop_token) { return analyse_coupling(spec, opt); });
-  return to_python(coupling_report_json(input, horizon_text, opt.digits, r));
-}
-
 }  // namespace
 
 void bind_design(py::module_& m) {
@@ -158,8 +138,6 @@ void bind_design(py::module_& m) {
   m.def("_pareto", &pareto_dict, py::arg("max_order"), py::arg("orientation"), py::arg("proxy"),
         py::arg("exclude_degenerate"), py::arg("beat"), py::arg("exclude_low"), py::arg("digits"),
         "The dict of `gyrores pareto --json` (without its file keys). Use gyrores.pareto.");
-  m.def("_coupling", &coupling_dict, py::arg("n"), py::arg("n2"), py::arg("horizon"), py::arg("convergents"),
-        py::arg("digits"), "The dict of `gyrores coupling --json`. Use gyrores.coupling.");
 }
 
 }  // namespace gyrores::python

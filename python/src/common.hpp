@@ -46,7 +46,8 @@ py::object to_python(const json& j);
 // The module's areas, one file each.
 void bind_pair(py::module_& m);      // pair, asymptotics
 void bind_certify(py::module_& m);   // certify, check
-void bind_design(py::module_& m);    // design, pareto, coupling
+void bind_design(py::module_& m);    // design, pareto
+void bind_coupling(py::module_& m);  // coupling, couplings
 void bind_sweep(py::module_& m);     // enumerate_pairs, sweep
 void bind_pairs(py::module_& m);     // pairs
 void bind_figures(py::module_& m);   // the figures' data (gyrores.plot)

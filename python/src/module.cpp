@@ -14,6 +14,7 @@ PYBIND11_MODULE(_gyrores, m) {
   gp::bind_pair(m);
   gp::bind_certify(m);
   gp::bind_design(m);
+  gp::bind_coupling(m);
   gp::bind_sweep(m);
   gp::bind_pairs(m);
   gp::bind_figures(m);

@@ -1,4 +1,4 @@
-# gyrores.design, gyrores.pareto and gyrores.coupling against the CLI's JSON.
+# gyrores.design and gyrores.pareto against the CLI's JSON (coupling: test_coupling.py).
 import pytest
 
 import gyrores
@@ -23,14 +23,6 @@ def test_pareto_matches_cli(cli_json):
     got = gyrores._gyrores._pareto(40, "absorb", False, False, None, 0, 10)
     for key in ("orientation", "orientation_meaning", "time", "max_order", "pairs", "front", "digits"):
         assert got[key] == expected[key], key
-
-
-def test_coupling_matches_cli(cli_json):
-    expected = cli_json("coupling", "--n2", "1/12")
-    got = gyrores._gyrores._coupling(None, "1/12", "100", 8, 12)
-    assert got == expected
-    c = gyrores.coupling(n2="1/12")
-    assert c["resonant"] and (c["pair"]["tau"], c["pair"]["sigma"]) == (4, 3)
 
 
 def test_bad_input():

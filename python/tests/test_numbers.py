@@ -27,9 +27,10 @@ def _leaves(value):
         yield "", value
 
 
-# Keys whose values are text by nature: names, explanations, formats.
+# Keys whose values are text by nature: names, explanations, formats; and coupling()'s exact
+# algebraic numbers x and horizon_lobe_distance ("sqrt(2)/2"), which no Python number holds.
 TEXT_KEYS = {"format", "theorem", "reason", "note", "inf_reason", "horizon_source", "orientation",
-             "orientation_meaning", "time", "problem", "input"}
+             "orientation_meaning", "time", "problem", "input", "x", "horizon_lobe_distance"}
 
 
 def _assert_numeric(result, real_type):

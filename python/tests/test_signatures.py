@@ -9,7 +9,8 @@ import gyrores
 import gyrores.plot
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-PUBLIC = ["pair", "pairs", "asymptotics", "certify", "check", "design", "pareto", "coupling", "enumerate_pairs", "sweep"]
+PUBLIC = ["pair", "pairs", "asymptotics", "certify", "check", "design", "pareto", "coupling", "couplings",
+          "enumerate_pairs", "sweep"]
 PLOTS = ["phase", "energy", "pareto", "coupling_floor"]
 
 

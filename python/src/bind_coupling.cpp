@@ -1,0 +1,182 @@
+// gyrores.coupling and gyrores.couplings: design/coupling_report.hpp (any coupling n) as the dict
+// of `gyrores coupling --json`, and the horizon theorem (theorem/horizon.hpp) over arrays of
+// couplings and horizons in one C++ loop (GIL released, the stop flag passed into every proof and
+// looked at between elements). The horizon and level texts are read as the CLI reads them
+// (src/cli/cmd_coupling.cpp: "1e100", "100pi", "1%"); the library has no parser for them.
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/rational.hpp>
+#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/io/report_json.hpp>
+#include <gyrores/model/coupling.hpp>
+#include <gyrores/theorem/horizon.hpp>
+
+#include "common.hpp"
+#include "interruptible.hpp"
+
+namespace gyrores::python {
+namespace {
+
+// T: a decimal, scientific or fraction, optionally times pi ("100pi", "100*pi", "1e30").
+horizon_time horizon_of(std::string text, const std::string& what) {
+  const std::string given = text;
+  bool pi = false;
+  if (text.size() > 2 && text.compare(text.size() - 2, 2, "pi") == 0) {
+    pi = true;
+    text.resize(text.size() - 2);
+    while (!text.empty() && (text.back() == '*' || text.back() == ' ')) text.pop_back();
+  }
+  horizon_time t(parse_rational(text, what), pi);
+  if (t.value < 0) throw usage_error(what + " must be >= 0, got " + given);
+  // The library aborts the process (a GMP allocation failure) for T beyond the double range
+  // (1e309 does, 1e308 does not): refused here, as a Python error, until it is fixed there.
+  if (t.value > parse_rational(pi ? "1e307" : "1e308", what))
+    throw usage_error(what + " must be <= 1e308 (the library cannot take more yet), got " + given);
+  return t;
+}
+
+// E: an energy (H_q(0) = 1/2), or a percentage of the initial energy ("1%" is 1/200).
+big_rational level_of(std::string text) {
+  const std::string given = text;
+  big_rational e;
+  if (!text.empty() && text.back() == '%') {
+    text.pop_back();
+    e = parse_rational(text, "below") / 200;
+  } else e = parse_rational(text, "below");
+  if (e < 0) throw usage_error("below must be >= 0, got " + given);
+  return e;
+}
+
+coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& what) {
+  return is_n2 ? coupling_spec::from_n2(parse_rational(text, what)) : coupling_spec::from_n(parse_rational(text, what));
+}
+
+py::object coupling_dict(const py::object& n, const py::object& n2, const std::string& horizon,
+                         const py::object& below, std::int64_t convergents, long long digits) {
+  if (n.is_none() == n2.is_none()) throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
+  coupling_report_options opt;
+  opt.digits = checked_digits(digits, 1, report_digits_max);
+  if (convergents < 0 || convergents > 60) throw usage_error("convergents must be in [0, 60]");
+  opt.convergents = std::size_t(convergents);
+  opt.horizon = horizon_of(horizon, "horizon");
+  if (!below.is_none()) opt.below = level_of(below.cast<std::string>());
+  const coupling_spec spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
+  const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
+  // The stop flag goes into the library: on Ctrl-C the proof ends at its next safe point.
+  const coupling_report r = run_interruptible<coupling_report>([spec, opt](stop_token stop) mutable {
+    opt.stop = stop;
+    return analyse_coupling(spec, opt);
+  });
+  return to_python(coupling_report_json(input, horizon, opt.digits, r));
+}
+
+// The correctly rounded double of a proved real, or nothing when its enclosure does not decide
+// it: rounding to nearest is monotone, so equal roundings of both ends are the exact value's.
+std::optional<double> decided_double(const proved_real& r) {
+  const double lo = std::strtod(r.enclosure.first.c_str(), nullptr);
+  const double hi = std::strtod(r.enclosure.second.c_str(), nullptr);
+  if (lo != hi) return std::nullopt;
+  return lo;
+}
+
+struct coupling_row {
+  double h_min = 0, t_min = 0, t_below = std::numeric_limits<double>::quiet_NaN();
+  bool at_end = false, resonant = false;
+};
+
+// One element: the horizon theorem at 17 digits, then more until every double is decided.
+coupling_row row_of(const coupling_spec& spec, const horizon_time& horizon, const std::optional<big_rational>& level,
+                    stop_token stop) {
+  for (unsigned digits = 17;; digits = std::min(2 * digits, report_digits_max)) {
+    coupling_row row;
+    row.resonant = coupling_resonant_pair(spec).has_value();
+    const horizon_minimum_report h = prove_horizon_minimum(spec, horizon, digits, stop);
+    const auto hmin = decided_double(h.h_min), tmin = decided_double(h.t_min);
+    bool decided = hmin && tmin;
+    if (decided) row.h_min = *hmin, row.t_min = *tmin, row.at_end = h.at_horizon_end;
+    if (decided && level) {
+      const first_below_report b = prove_first_below(spec, *level, digits, stop);
+      if (!b.never) {
+        const auto tb = decided_double(b.t_below);
+        decided = tb.has_value();
+        if (tb) row.t_below = *tb;
+      }
+    }
+    if (decided) return row;
+    if (digits == report_digits_max)
+      throw compute_error("a double of coupling n^2 = " + rational_str(spec.n2) + " is not decided at " +
+                          std::to_string(report_digits_max) + " digits");
+  }
+}
+
+struct coupling_columns {
+  std::vector<double> h_min, t_min, t_below;
+  std::vector<bool> at_end, resonant;
+};
+
+// couplings[i] and horizons[i] as exact texts (Python broadcast them); the columns of the table.
+py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::list& horizons, const py::object& below,
+                            const py::object& progress) {
+  if (couplings.size() != horizons.size()) throw usage_error("couplings and horizons differ in length");
+  const std::string what = is_n2 ? "n2" : "n";
+  std::vector<coupling_spec> specs;
+  std::vector<horizon_time> times;
+  for (std::size_t i = 0; i < couplings.size(); ++i) {  // every input checked before any work
+    specs.push_back(spec_of(couplings[i].cast<std::string>(), is_n2, what + "[" + std::to_string(i) + "]"));
+    times.push_back(horizon_of(horizons[i].cast<std::string>(), "horizon[" + std::to_string(i) + "]"));
+  }
+  std::optional<big_rational> level;
+  if (!below.is_none()) level = level_of(below.cast<std::string>());
+  // The progress callback is called from the worker thread with the GIL taken, and an exception
+  // it raises stops the loop (rethrown here). It is held as a borrowed pointer (no reference
+  // counting without the GIL): on_stop::wait keeps this call, and so the caller's reference,
+  // alive until the worker ends, which is soon after Ctrl-C (the flag is looked at between
+  // elements and inside every proof).
+  PyObject* const callback = progress.is_none() ? nullptr : progress.ptr();
+  const auto work = [specs, times, level, callback](stop_token stop) {
+    coupling_columns c;
+    const std::size_t total = specs.size();
+    for (std::size_t i = 0; i < total; ++i) {
+      stop.throw_if_requested();
+      const coupling_row r = row_of(specs[i], times[i], level, stop);
+      c.h_min.push_back(r.h_min);
+      c.t_min.push_back(r.t_min);
+      c.t_below.push_back(r.t_below);
+      c.at_end.push_back(r.at_end);
+      c.resonant.push_back(r.resonant);
+      if (callback != nullptr && ((i + 1) % 64 == 0 || i + 1 == total)) {
+        py::gil_scoped_acquire gil;
+        py::handle fn(callback);
+        fn(i + 1, total);
+      }
+    }
+    return c;
+  };
+  const coupling_columns cols = run_interruptible<coupling_columns>(work, on_stop::wait);
+  py::list h, t, tb, end, res;
+  for (std::size_t i = 0; i < cols.h_min.size(); ++i) {
+    h.append(cols.h_min[i]);
+    t.append(cols.t_min[i]);
+    tb.append(cols.t_below[i]);
+    end.append(bool(cols.at_end[i]));
+    res.append(bool(cols.resonant[i]));
+  }
+  return py::make_tuple(h, t, end, tb, res);
+}
+
+}  // namespace
+
+void bind_coupling(py::module_& m) {
+  m.def("_coupling", &coupling_dict, py::arg("n"), py::arg("n2"), py::arg("horizon"), py::arg("below"),
+        py::arg("convergents"), py::arg("digits"), "The dict of `gyrores coupling --json`. Use gyrores.coupling.");
+  m.def("_couplings", &couplings_columns, py::arg("couplings"), py::arg("is_n2"), py::arg("horizons"),
+        py::arg("below"), py::arg("progress"),
+        "Columns (h_min_horizon, t_min_horizon, min_at_horizon_end, t_below, resonant) of every "
+        "(coupling, horizon), correctly rounded doubles. Use gyrores.couplings.");
+}
+
+}  // namespace gyrores::python
