@@ -5,8 +5,8 @@
 // proved decimal strings, and every number printed in the markdown is such a string.
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <cstdio>
+#include <iterator>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -21,8 +21,8 @@ namespace gyrores::cli::report {
 namespace {
 
 // (a): the horizons, 24 per decade from 1 to 10^12 (4 significant digits, exact decimals), and
-// the couplings drawn: n = 2 (Fig. 1a; x = 1/sqrt 2, partial quotients all 2) and n = 0.1832
-// (a decimal whose x has large partial quotients: uneven steps).
+// the couplings drawn: n = 2 (Fig. 1a; x = 1/sqrt 2 = [0; 1, 2, 2, ...]) and n = 0.1832 (a
+// decimal of issue 23's measurements, whose k ||k x - 1/2|| varies widely on the records: uneven steps).
 constexpr int horizon_per_decade = 24, horizon_decades = 12;
 const char* const horizon_couplings[] = {"2", "0.1832"};
 
@@ -31,7 +31,7 @@ const char* const horizon_couplings[] = {"2", "0.1832"};
 constexpr int absorb_samples = 240, absorb_pair_order = 16;
 const char* const absorb_level_text = "1/200";  // 1% of H_q(0) = 1/2: 99% of the energy absorbed
 
-// Decimal text of a number with 4 significant digits ("1.778e3", "0.05"): parsed exactly.
+// Decimal text of a number with 4 significant digits ("1778", "1.778e+05", "0.05"): parsed exactly.
 std::string four_digits(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", v);
@@ -176,7 +176,8 @@ std::string part_a(context& c) {
         "lobe minima scale as nu_k^4 (H_q / (pi nu_k)^4 is the same at every record lobe of one coupling, to many "
         "digits), and for n = 2, x = 1/sqrt 2 is badly approximable, so k nu_k stays bounded away from 0 on the "
         "records: nu_k ~ 1/k ~ 1/T and the staircase falls as T^-4 (the dashed guide). n = 0.1832 (the exact "
-        "decimal) has large partial quotients: fewer, deeper steps around the same slope. Each point is proved, "
+        "decimal) is approximated less evenly (k nu_k varies widely on its records): fewer, deeper steps around the "
+        "same slope. Each point is proved, "
         "24 horizons per decade; the table gives the decades (lobe `-`: the minimum is at t = T).\n\n"
      << "| n | T | lobe k | min H_q over [0, T] | first at t |\n|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < curves.size(); ++i)
