@@ -465,6 +465,49 @@ TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
     check_rejected(bad);
 }
 
+// Section 7 of the report (couplings that are not resonant): its figures exist, and the values it
+// prints and plots are those of `gyrores coupling ... --json`, an independent path through the CLI
+// (the report calls the theorem layer directly; the CLI goes through the coupling report).
+static void check_coupling_section(const std::string& md, const fs::path& out) {
+  CHECK(md.find("## 7. Couplings that are not resonant") != std::string::npos);
+  const bool gnuplot = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+  for (const char* stem : {"fig-coupling-horizon", "fig-coupling-absorb"})
+    for (const char* ext : {".dat", ".gp", ".png", ".svg"}) {
+      const fs::path f = out / "figures" / (std::string(stem) + ext);
+      INFO(f.string());
+      const bool image = std::string(ext) == ".png" || std::string(ext) == ".svg";
+      if (!image || gnuplot) CHECK(fs::exists(f));
+      std::string why;
+      if (std::string(ext) == ".svg" && gnuplot) CHECK(xml_well_formed(read_file(f), why));
+      if (std::string(ext) == ".png" && gnuplot) CHECK(decode_png(read_file(f)).non_background > 0.01);
+    }
+  const auto integer_text = [](const nlohmann::json& j) { return j.is_null() ? std::string("-") : j.dump(); };
+  const std::string horizon_dat = read_file(out / "figures" / "fig-coupling-horizon.dat");
+  const std::string absorb_dat = read_file(out / "figures" / "fig-coupling-absorb.dat");
+  // (a) the minimum over [0, 10^12] for n = 2 (a lobe) and over [0, 1] for n = 0.1832 (the end point).
+  for (auto [n, e] : {std::pair{"2", 12}, std::pair{"0.1832", 6}, std::pair{"0.1832", 0}}) {
+    const auto j = cli_json(std::string("coupling ") + n + " --horizon 1e" + std::to_string(e) + " --digits 10 --convergents 0 --json");
+    const std::string lobe = j["min_at_horizon_end"].get<bool>() ? "-" : integer_text(j["horizon_lobe"]);
+    const std::string row = std::string("| ") + n + " | 10^" + std::to_string(e) + " | " + lobe + " | " +
+                            j["h_min_horizon"].get<std::string>() + " | " + j["t_min_horizon"].get<std::string>() + " |\n";
+    INFO(row);
+    CHECK(md.find(row) != std::string::npos);
+    const std::string dat = "\n1e" + std::to_string(e) + " " + j["h_min_horizon"].get<std::string>() + " " +
+                            j["t_min_horizon"].get<std::string>() + " " + (lobe == "-" ? "-1" : lobe) + "\n";
+    CHECK(horizon_dat.find(dat) != std::string::npos);
+  }
+  CHECK(md.find("| 0.1832 | 10^0 | - |") != std::string::npos);  // the end point case is exercised
+  // (b) the first time H_q <= 1% for n = 2 (table and figure data), and (2, 1), which never gets there.
+  const auto j2 = cli_json("coupling 2 --below 1% --digits 10 --convergents 0 --json");
+  const std::string t2 = j2["t_below"].get<std::string>(), lobe2 = integer_text(j2["below"]["lobe"]);
+  CHECK(md.find("| decimal | 2 | " + lobe2 + " | " + t2 + " |\n") != std::string::npos);
+  CHECK(absorb_dat.find("\n2 " + t2 + " " + lobe2 + "\n") != std::string::npos);
+  const auto j21 = cli_json("coupling --n2 1/2 --below 1% --digits 10 --convergents 0 --json");
+  REQUIRE(j21["below"]["never"].get<bool>());
+  CHECK(md.find("| pair (2, 1) | " + j21["n"].get<std::string>() + " | - | never: H_q min = " +
+                j21["pair_analysis"]["h_min"].get<std::string>() + " |\n") != std::string::npos);
+}
+
 TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli]") {
   if (!cli_available()) return;
   gyrores::test::temp_dir tmp("report");
@@ -503,4 +546,5 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   CHECK(md.find("verified digits, not proved") == std::string::npos);
   for (auto& e : fs::recursive_directory_iterator(fs::path(dir) / "out"))
     CHECK(e.path().string().find(".tmp") == std::string::npos);
+  check_coupling_section(md, fs::path(dir) / "out");
 }

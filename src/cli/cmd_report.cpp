@@ -45,6 +45,7 @@ std::string run_report(const report_args& a) {
   c.catalogue = design_catalogue(std::max<std::int64_t>(a.pareto_order, 200));  // sections 2-5
   md << report::case_a_section(c) << report::case_b_section(c) << report::design_section(c)
      << report::pareto_section(c, a.pareto_order) << report::sweep_section(a.sweep_order)
+     << report::coupling_section(c)
      << report::files_section(c.figs) << footer(t_start);
   write_file_atomically(c.dir / "REPORT.md", md.str());
   std::string out = (c.dir / "REPORT.md").string() + "\n";

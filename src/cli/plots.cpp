@@ -350,6 +350,14 @@ figure_output write_pareto_figure(const figure_spec& s, const std::vector<design
                        pareto_script(s, all, front, which, title));
 }
 
+std::string figure_script_head(const std::string& kind, const std::string& title, const figure_spec& s) {
+  return script_head(kind, title, s);
+}
+
+figure_output write_figure_files(const figure_spec& s, const std::string& data, const std::string& script) {
+  return figure_finish(s, data, script);
+}
+
 std::string pareto_orientation_caption(pareto_orientation o) {
   return o == pareto_orientation::absorb ? "absorb: min r_res, min time" : "contain: max r_res, min time";
 }

@@ -53,6 +53,12 @@ figure_output write_pareto_figure(const figure_spec& s, const std::vector<design
                                   const std::vector<design_point>& front, design_time which,
                                   const std::string& title);
 
+// For figure kinds drawn outside this file (the report's own): the opening of a script (what it
+// draws, how to redraw it, terminal, `datafile`), and writing NAME.dat and NAME.gp then drawing
+// every image of `s` (a gnuplot failure is reported in the result, not thrown).
+std::string figure_script_head(const std::string& kind, const std::string& title, const figure_spec& s);
+figure_output write_figure_files(const figure_spec& s, const std::string& data, const std::string& script);
+
 // "absorb: min r_res, min time" or "contain: max r_res, min time" (figure titles).
 std::string pareto_orientation_caption(pareto_orientation o);
 

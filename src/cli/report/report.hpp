@@ -71,6 +71,7 @@ std::string case_b_section(context& c);
 std::string design_section(context& c);
 std::string pareto_section(context& c, std::int64_t max_order);
 std::string sweep_section(std::int64_t max_order);
+std::string coupling_section(context& c);
 std::string files_section(const figure_set& figs);
 
 }  // namespace gyrores::cli::report
