@@ -29,6 +29,7 @@
 #include <gyrores/theorem/horizon.hpp>        // any coupling: min of H_q over [0, T], first time below a level
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
+#include <gyrores/certify/horizon_certificate.hpp> // certificates of any coupling's horizon minimum ("gyrores-coupling-certificate/1")
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // any n: exact resonance test, min of H_q over a horizon, convergents
 #include <gyrores/design/coupling_report.hpp>  // the coupling analysis (proved but for the horizon minimum)
