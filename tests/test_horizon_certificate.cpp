@@ -93,12 +93,14 @@ TEST_CASE("coupling certificates of random couplings and horizons are accepted",
   }
 }
 
-TEST_CASE("the certificate text for the CLI; a level is refused; T <= 0 is refused", "[certificate][horizon]") {
+TEST_CASE("the certificate text for the CLI; T <= 0 is refused", "[certificate][horizon]") {
   const auto c = coupling_spec::from_n(parse_rational("2", "n"));
   const std::string text = coupling_certificate_text(c, parse_rational("37", "T"), std::nullopt, 15);
   CHECK(text.back() == '\n');
   CHECK(gyrores_checker::check_coupling_certificate(text).status == 0);
-  CHECK_THROWS_AS(coupling_certificate_text(c, 37, big_rational(1, 100), 15), usage_error);
+  const std::string with_level = coupling_certificate_text(c, 37, big_rational(1, 100), 15);
+  CHECK(gyrores_checker::check_coupling_certificate(with_level).status == 0);
+  CHECK(with_level.find("\"case\": \"lobe\"") != std::string::npos);
   CHECK_THROWS_AS(certify_horizon_minimum(c, 0, 15), usage_error);
 }
 
@@ -112,8 +114,8 @@ std::string plus_one(const json& v) { return (big_int(v.get<std::string>()) + 1)
 // below lo): the bracket is then reversed, or no longer holds its value.
 void swap_in(json& bracket, int end) {
   const big_rational other = parse_rational(bracket[1 - end].get<std::string>(), "end");
-  const big_rational moved = other == 0 ? big_rational(end == 0 ? 1 : -1, 1000000)
-                                        : other * big_rational(end == 0 ? 1000001 : 999999, 1000000);
+  const big_rational step = other == 0 ? big_rational(1, 1000000) : abs(other) / 1000000;
+  const big_rational moved = end == 0 ? big_rational(other + step) : big_rational(other - step);
   bracket[end] = format_rational_scientific(moved, 30);
 }
 
@@ -220,4 +222,105 @@ TEST_CASE("wrong but self-consistent claims are refused", "[certificate][horizon
     CHECK(v.status == 1);
     CHECK(v.message.find("lobe.k") != std::string::npos);
   }
+}
+
+namespace {
+
+struct below_case {
+  std::string n2, E;
+};
+
+// Levels in every case: t = 0 (2E >= 1), lobe 0 (V(1/2) <= 2E < 1), a later lobe, E = 0 on a
+// degenerate pair (zero) and on others (never), a resonant coupling whose H_min exceeds E (never).
+std::vector<below_case> below_cases() {
+  std::vector<below_case> out{{"4", "1/2"},      {"4", "0.3"},       {"4", "1/100"},     {"4", "1e-6"},
+                              {"4/99", "0"},     {"1/12", "0"},      {"4", "0"},         {"1/12", "1e-6"},
+                              {"1/12", "0.01"},  {"9/4", "0.001"},   {"0.000001", "0.1"}, {"900", "0.001"},
+                              {"1/3", "1e-30"},  {"4/99", "1e-9"}};
+  std::mt19937_64 rng(23);
+  for (int i = 0; i < 16; ++i)
+    out.push_back({rational_str(big_rational(long(rng() % 9000) + 1, long(rng() % 900) + 1)),
+                   rational_str(big_rational(1, long(rng() % 100000) + 3))});
+  return out;
+}
+
+json below_json(const std::string& n2, const std::string& E, unsigned digits) {
+  const auto c = coupling_spec::from_n2(parse_rational(n2, "n2"));
+  return json::parse(coupling_certificate_text(c, 10, parse_rational(E, "E"), digits));
+}
+
+}  // namespace
+
+TEST_CASE("first time below a level: certificates in every case are accepted", "[certificate][horizon]") {
+  for (const auto& b : below_cases()) {
+    const json j = below_json(b.n2, b.E, 20);
+    const auto v = check(j);
+    INFO("n^2 = " << b.n2 << ", E = " << b.E << ": " << json_dump(j["below"], -1) << "\n" << v.message);
+    CHECK(v.status == 0);
+  }
+}
+
+
+TEST_CASE("first time below a level: every field tampered is refused, naming it", "[certificate][horizon]") {
+  // A later lobe (n = 2, E = 10^-6: lobe 12), lobe 0 (E = 0.3), never (n^2 = 1/12, E = 10^-6),
+  // zero (n^2 = 4/99, E = 0), start (E = 1/2).
+  for (const auto& [n2, E] : std::vector<std::pair<std::string, std::string>>{
+           {"4", "1e-6"}, {"4", "0.3"}, {"1/12", "1e-6"}, {"4/99", "0"}, {"4", "1/2"}, {"9/4", "0.001"}}) {
+    const json cert = below_json(n2, E, 20);
+    REQUIRE(check(cert).status == 0);
+    const json& b = cert["below"];
+    std::vector<std::tuple<std::string, std::string, tamper>> t;
+    auto add = [&](std::string what, std::string names, tamper f) { t.emplace_back(std::move(what), std::move(names), std::move(f)); };
+    add("level / 2", "", [](json& j) {
+      const big_rational E = parse_rational(j["below"]["level"].get<std::string>(), "E");
+      j["below"]["level"] = rational_str(E == 0 ? big_rational(1, 1000) : E / 2);
+    });
+    add("case changed", "below.case",
+        [](json& j) { j["below"]["case"] = j["below"]["case"] == "never" ? "lobe" : "never"; });
+    add("case unknown", "below.case", [](json& j) { j["below"]["case"] = "sometimes"; });
+    if (!b["lobe"].is_null()) {
+      add("below.lobe.k + 1", "below.lobe", [](json& j) { j["below"]["lobe"]["k"] = plus_one(j["below"]["lobe"]["k"]); });
+      add("below.lobe.j + 1", "below.lobe.j", [](json& j) { j["below"]["lobe"]["j"] = plus_one(j["below"]["lobe"]["j"]); });
+      add("below.lobe.side changed", "below.lobe.side",
+          [](json& j) { j["below"]["lobe"]["side"] = j["below"]["lobe"]["side"].get<int>() == 1 ? -1 : 1; });
+    }
+    for (const std::string f : {"level_root", "delta", "root", "crossing", "t_below"}) {
+      if (b[f].is_null()) continue;
+      const std::string name = "below." + f;
+      if (b[f][0] == b[f][1]) {  // an exact value (t = 0): any other is refused
+        add(name + " moved", name, [f](json& j) { j["below"][f] = json::array({"1e-3", "1e-3"}); });
+        continue;
+      }
+      add(name + "[0] above [1]", name, [f](json& j) { swap_in(j["below"][f], 0); });
+      add(name + "[1] below [0]", name, [f](json& j) { swap_in(j["below"][f], 1); });
+      add(name + " null", name, [f](json& j) { j["below"][f] = nullptr; });
+    }
+    for (const auto& [what, names, change] : t) {
+      json j = cert;
+      change(j);
+      const auto v = check(j);
+      INFO("n^2 = " << n2 << ", E = " << E << ", " << what << ": " << v.message);
+      CHECK(v.status != 0);
+      CHECK(v.message.find('\n') == std::string::npos);
+      if (!names.empty()) CHECK(v.message.find(names) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("first time below a level: a later lobe that also reaches E is refused", "[certificate][horizon]") {
+  // n = 2, E = 10^-6: lobe 12 is the first; a later lobe with nu_k <= delta exists (irrational x).
+  const auto c = coupling_spec::from_n2(4);
+  json cert = below_json("4", "1e-6", 20);
+  const big_int first(cert["below"]["lobe"]["k"].get<std::string>());
+  const big_rational d_lo = parse_rational(cert["below"]["delta"][0].get<std::string>(), "delta");
+  const quadratic_number x = coupling_rotation_number(c);
+  big_int later = first + 1;
+  while (!(distance_to_half(x, later) <= quadratic_number(d_lo))) ++later;
+  const certificate_lobe other = certificate_lobe_of(c, later, 20);
+  cert["below"]["lobe"] = json{{"k", other.k.str()}, {"j", other.j.str()}, {"side", other.side}};
+  cert["below"]["root"] = json::array({other.root.first, other.root.second});
+  const auto v = check(cert);
+  INFO("later lobe " << later << ": " << v.message);
+  CHECK(v.status == 1);
+  CHECK(v.message.find("below.lobe.k") != std::string::npos);
 }

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -231,6 +232,62 @@ minimum min_frac(const field& F, const QD& alpha, const QD& beta, const Z& K) {
   return cut;
 }
 
+// FirstHit(alpha, beta, w, K): the smallest k in [0, K] with {k alpha + beta} <= w, or none
+// (proofs/horizon-theorem.md, "Rotation minima": the first run with a hit holds the first hit).
+std::optional<Z> first_hit(const field& F, const QD& alpha, const QD& beta, const QD& w, const Z& K) {
+  if (cmp(F, beta, w) <= 0) return Z(0);
+  if (fmpz_is_zero(K.v) || sign(F, alpha) == 0) return std::nullopt;
+  if (cmp(F, alpha, rational(1, 2)) <= 0) {
+    Z J = floor_of(F, add(mul(F, integer(K), alpha), beta));
+    if (fmpz_is_zero(J.v)) return std::nullopt;
+    const QD wa = div(F, w, alpha);
+    Z j(1);
+    if (cmp(F, wa, rational(1, 1)) < 0) {
+      const QD a1 = frac(F, neg(inv(F, alpha))), b1 = frac(F, div(F, beta, alpha));
+      Z Jm1;
+      fmpz_sub_ui(Jm1.v, J.v, 1);
+      auto i = first_hit(F, a1, frac(F, add(a1, b1)), wa, Jm1);
+      if (!i) return std::nullopt;
+      fmpz_add_ui(j.v, i->v, 1);
+    }
+    return ceil_of(F, div(F, sub(integer(j), beta), alpha));
+  }
+  const QD g = sub(rational(1, 1), alpha), wg = div(F, w, g);
+  Z K1;
+  fmpz_add_ui(K1.v, K.v, 1);
+  Z Jp = ceil_of(F, sub(mul(F, integer(K1), g), beta));
+  fmpz_sub_ui(Jp.v, Jp.v, 1);
+  // The first element <= w of run j: max(start_j, ceil((beta + j - w)/g)), start_j = k_{j-1} + 1.
+  auto first_in_run = [&](const Z& j) {
+    Z start(0);
+    if (fmpz_sgn(j.v) > 0) {
+      Z jm1;
+      fmpz_sub_ui(jm1.v, j.v, 1);
+      start = floor_of(F, div(F, add(beta, integer(jm1)), g));
+      fmpz_add_ui(start.v, start.v, 1);
+    }
+    Z e = ceil_of(F, div(F, sub(add(beta, integer(j)), w), g));
+    return fmpz_cmp(start.v, e.v) > 0 ? start : e;
+  };
+  if (fmpz_sgn(Jp.v) >= 0) {
+    std::optional<Z> j;
+    if (cmp(F, wg, rational(1, 1)) >= 0) j = Z(0);
+    else j = first_hit(F, frac(F, inv(F, g)), frac(F, div(F, beta, g)), wg, Jp);
+    if (j) return first_in_run(*j);
+  }
+  if (cmp(F, frac(F, sub(beta, mul(F, integer(K), g))), w) <= 0) {
+    Z j;
+    fmpz_add_ui(j.v, Jp.v, 1);
+    return first_in_run(j);
+  }
+  return std::nullopt;
+}
+
+// The first k in [0, K] with nu_k <= d (d in [0, 1/2)): {k x + 1/2 + d} <= 2 d (Step 9).
+std::optional<Z> first_lobe_at_most(const field& F, const QD& x, const QD& d, const Z& K) {
+  return first_hit(F, x, frac(F, add(rational(1, 2), d)), add(d, d), K);
+}
+
 // ---- Reading.
 bool all_digits(const std::string& s, std::size_t from) {
   return from < s.size() && std::all_of(s.begin() + long(from), s.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -245,7 +302,7 @@ Z integer_field(const json& j, const std::string& name) {
   return z;
 }
 // "p/q" or "p": a positive rational (p, q >= 1), reduced here.
-void rational_field(const json& j, const std::string& name, Z& num, Z& den) {
+void rational_field(const json& j, const std::string& name, Z& num, Z& den, bool allow_zero = false) {
   if (!j.is_string()) throw malformed(name + " must be a string \"p/q\"");
   const std::string s = j.get<std::string>();
   const auto slash = s.find('/');
@@ -254,7 +311,7 @@ void rational_field(const json& j, const std::string& name, Z& num, Z& den) {
     throw malformed(name + " is not a rational p/q: '" + s.substr(0, 40) + "'");
   fmpz_set_str(num.v, a.c_str(), 10);
   fmpz_set_str(den.v, b.c_str(), 10);
-  if (fmpz_is_zero(num.v)) throw fails(name + " must be > 0");
+  if (fmpz_is_zero(num.v) && !allow_zero) throw fails(name + " must be > 0");
   Z g;
   fmpz_gcd(g.v, num.v, den.v);
   fmpz_divexact(num.v, num.v, g.v);
@@ -311,7 +368,28 @@ struct certificate {
   bool has_lobe = false;
   lobe_data lobe;
   bracket cut_root, root, h_min, t_min;
+  // The first time below a level (null when not stated): which case of horizon-theorem item 5.
+  bool has_below = false;
+  Z En, Ed;
+  std::string below_case;
+  bool below_has_lobe = false;
+  lobe_data below_lobe;
+  std::optional<bracket> level_root, delta, below_root, crossing, t_below;
 };
+
+std::optional<bracket> optional_bracket(const json& j, const std::string& name, std::size_t max_len) {
+  if (j.is_null()) return std::nullopt;
+  return bracket_field(j, name, max_len);
+}
+lobe_data lobe_field(const json& j, const std::string& name) {
+  exact_keys(j, {"k", "j", "side"}, name);
+  lobe_data l;
+  l.k = integer_field(j["k"], name + ".k");
+  l.j = integer_field(j["j"], name + ".j");
+  if (!j["side"].is_number_integer()) throw malformed(name + ".side must be -1, 0 or 1");
+  l.side = j["side"].get<long>();
+  return l;
+}
 
 certificate read(const std::string& text) {
   json j;
@@ -320,7 +398,7 @@ certificate read(const std::string& text) {
   } catch (const std::exception& e) {
     throw malformed(std::string("not JSON: ") + e.what());
   }
-  exact_keys(j, {"format", "theorem", "n2", "horizon", "digits", "minimum"}, "the certificate");
+  exact_keys(j, {"format", "theorem", "n2", "horizon", "digits", "minimum", "below"}, "the certificate");
   if (j["format"] != coupling_certificate_format) throw malformed(std::string("format is not ") + coupling_certificate_format);
   if (j["theorem"] != "horizon-theorem/1") throw fails("theorem is not horizon-theorem/1 (the one this checker knows)");
   certificate c;
@@ -349,6 +427,23 @@ certificate read(const std::string& text) {
   }
   c.h_min = bracket_field(m["h_min"], "h_min", max_len);
   c.t_min = bracket_field(m["t_min"], "t_min", max_len);
+  const json& b = j["below"];
+  c.has_below = !b.is_null();
+  if (c.has_below) {
+    exact_keys(b, {"level", "case", "lobe", "level_root", "delta", "root", "crossing", "t_below"}, "below");
+    rational_field(b["level"], "below.level", c.En, c.Ed, true);
+    if (!b["case"].is_string()) throw malformed("below.case must be a string");
+    c.below_case = b["case"].get<std::string>();
+    if (c.below_case != "start" && c.below_case != "lobe" && c.below_case != "never" && c.below_case != "zero")
+      throw malformed("below.case must be start, lobe, zero or never");
+    c.below_has_lobe = !b["lobe"].is_null();
+    if (c.below_has_lobe) c.below_lobe = lobe_field(b["lobe"], "below.lobe");
+    c.level_root = optional_bracket(b["level_root"], "below.level_root", max_len);
+    c.delta = optional_bracket(b["delta"], "below.delta", max_len);
+    c.below_root = optional_bracket(b["root"], "below.root", max_len);
+    c.crossing = optional_bracket(b["crossing"], "below.crossing", max_len);
+    c.t_below = optional_bracket(b["t_below"], "below.t_below", max_len);
+  }
   return c;
 }
 
@@ -693,6 +788,158 @@ int check_at(const certificate& c, const rotation& R, const exact_facts& X, cons
          check_claim(c.t_min, t, c.digits, false, "t_min", prec);
 }
 
+// ---- The first time below a level E (horizon-theorem item 5; "What a certificate needs", First
+// time below a level): the case from the level, the lobe by this file's FirstHit, the crossing.
+int cmp_decimal(const std::string& a, const std::string& b, const std::string& name) {
+  Qx x, y;
+  exact_of(a, x, name);
+  exact_of(b, y, name);
+  return fmpq_cmp(x.v, y.v);
+}
+QD qd_of(const std::string& decimal, const std::string& name) {
+  Qx q;
+  exact_of(decimal, q, name);
+  QD a;
+  fmpz_set(a.p.v, fmpq_numref(q.v));
+  fmpz_set(a.r.v, fmpq_denref(q.v));
+  return a;
+}
+template <class T> const T& need(const std::optional<T>& v, const std::string& name) {
+  if (!v) throw fails(name + " is needed in this case");
+  return *v;
+}
+// t = 2 (k pi + [c_lo, c_hi])/S, with R(k pi + c_lo) > 2E > R(k pi + c_hi).
+int check_crossing(const certificate& c, const constants& K, const B& level, const Z& k, B& t) {
+  const bracket& cr = need(c.crossing, "below.crossing");
+  if (cmp_decimal(cr.lo, cr.hi, "below.crossing") >= 0) throw fails("below.crossing must have lo < hi");
+  B lo = ball_of(cr.lo, K.prec), hi = ball_of(cr.hi, K.prec), a, b;
+  arb_mul_fmpz(a.v, K.pi.v, k.v, K.prec);
+  arb_add(b.v, a.v, hi.v, K.prec);
+  arb_add(a.v, a.v, lo.v, K.prec);
+  const B ra = R_at(K, a), rb = R_at(K, b);
+  if (arb_le(ra.v, level.v) || arb_ge(rb.v, level.v)) throw fails("below.crossing does not bracket R = 2E (R(lo) > 2E > R(hi) is false)");
+  if (!arb_gt(ra.v, level.v) || !arb_lt(rb.v, level.v)) return 0;
+  arb_union(t.v, a.v, b.v, K.prec);
+  arb_mul_2exp_si(t.v, t.v, 1);
+  arb_div(t.v, t.v, K.s.v, K.prec);
+  return 1;
+}
+void check_lobe_integers(const rotation& R, const lobe_data& l, const Z& k, const std::string& name) {
+  if (!fmpz_equal(l.k.v, k.v)) throw fails(name + ".k is " + text_of(l.k) + ", but the first lobe reaching the level is " + text_of(k));
+  const lobe_exact e = lobe_of(R, k);
+  if (!fmpz_equal(l.j.v, e.j.v)) throw fails(name + ".j is not floor(k x)");
+  if (l.side != (fmpz_is_zero(k.v) ? 1 : e.side)) throw fails(name + ".side is not the side of the lobe's first minimiser");
+}
+
+int check_below(const certificate& c, const rotation& R, long prec) {
+  const constants K = constants_of(c, R, prec);
+  const field& F = R.F;
+  Z twoE;
+  fmpz_mul_ui(twoE.v, c.En.v, 2);
+  B level = ratio(twoE, c.Ed, prec);
+  const std::string& kase = c.below_case;
+  const bool lobe_case = kase == "lobe" || kase == "zero";
+  if (lobe_case != c.below_has_lobe)
+    throw fails("below.lobe must be given exactly in the cases lobe and zero (below.case is " + kase + ")");
+  if (fmpz_cmp(twoE.v, c.Ed.v) >= 0) {  // 2E >= 1 = R(0)
+    if (kase != "start") throw fails("below.case must be start: H_q(0) = 1/2 <= E");
+    return check_claim(need(c.t_below, "below.t_below"), B(), c.digits, true, "below.t_below", prec);
+  }
+  if (kase == "start") throw fails("below.case start needs E >= 1/2");
+  B t;
+  if (fmpz_is_zero(c.En.v)) {  // R = 0 exactly: a lobe with nu = 0, at its centre (degenerate pairs only)
+    std::optional<Z> hit;
+    if (fmpz_is_zero(F.D.v)) hit = first_lobe_at_most(F, R.x, QD(), R.x.r);  // period: the denominator of x
+    if (!hit) {
+      if (kase != "never") throw fails("below.case must be never: no lobe has nu = 0");
+      return 1;
+    }
+    if (kase != "zero") throw fails("below.case must be zero: lobe " + text_of(*hit) + " reaches H_q = 0");
+    check_lobe_integers(R, c.below_lobe, *hit, "below.lobe");
+    arb_mul_fmpz(t.v, K.pi.v, hit->v, prec);
+    arb_mul_2exp_si(t.v, t.v, 1);
+    arb_div(t.v, t.v, K.s.v, prec);
+    return check_claim(need(c.t_below, "below.t_below"), t, c.digits, false, "below.t_below", prec);
+  }
+  if (kase == "zero") throw fails("below.case zero needs E = 0");
+  if (kase == "lobe" && fmpz_is_zero(c.below_lobe.k.v)) {
+    // Lobe 0: 2E >= V(1/2) = G(u0) with u0 = H^{-1}(pi/2); the branch [0, u0].
+    B lo, hi;
+    if (!check_root(K, R, rational(1, 2), need(c.below_root, "below.root"), "below.root", lo, hi)) return 0;
+    const B g = G(K, hi);
+    if (arb_ge(g.v, level.v)) throw fails("below.lobe.k = 0 needs 2E > V(1/2) (G(root hi) < 2E is false)");
+    if (!arb_lt(g.v, level.v)) return 0;
+    check_lobe_integers(R, c.below_lobe, Z(0), "below.lobe");
+    const bracket& cr = need(c.crossing, "below.crossing");
+    if (cmp_decimal(cr.lo, "0", "below.crossing") < 0 || cmp_decimal(cr.hi, c.below_root->lo, "below.crossing") > 0)
+      throw fails("below.crossing must lie in lobe 0's descending branch [0, u0]");
+    if (!check_crossing(c, K, level, Z(0), t)) return 0;
+    return check_claim(need(c.t_below, "below.t_below"), t, c.digits, false, "below.t_below", prec);
+  }
+  // 0 < 2E < V(1/2): delta = H(G^{-1}(2E))/pi in (d_lo, d_hi), d_hi < 1/2.
+  if (kase == "lobe" && (!c.level_root || !c.delta))
+    throw fails("below.lobe.k = " + text_of(c.below_lobe.k) + " (not 0) needs below.level_root and below.delta");
+  const bracket& lr = need(c.level_root, "below.level_root");
+  const bracket& d = need(c.delta, "below.delta");
+  if (cmp_decimal(lr.lo, "0", "below.level_root") < 0 || cmp_decimal(lr.lo, lr.hi, "below.level_root") >= 0)
+    throw fails("below.level_root must have 0 <= lo < hi");
+  if (cmp_decimal(d.lo, "0", "below.delta") < 0 || cmp_decimal(d.lo, d.hi, "below.delta") >= 0 ||
+      cmp_decimal(d.hi, "0.5", "below.delta") >= 0)
+    throw fails("below.delta must have 0 <= lo < hi < 1/2");
+  B glo = ball_of(lr.lo, prec), ghi = ball_of(lr.hi, prec), half_pi, Gl, Gh, Hl, Hh, dl, dh;
+  arb_mul_2exp_si(half_pi.v, K.pi.v, -1);
+  if (arb_ge(ghi.v, half_pi.v)) throw fails("below.level_root must lie below pi/2");
+  if (!arb_lt(ghi.v, half_pi.v)) return 0;
+  Gl = G(K, glo);
+  Gh = G(K, ghi);
+  if (arb_ge(Gl.v, level.v) || arb_le(Gh.v, level.v)) throw fails("below.level_root does not bracket G^{-1}(2E)");
+  if (!arb_lt(Gl.v, level.v) || !arb_gt(Gh.v, level.v)) return 0;
+  Hl = H(K, glo);
+  Hh = H(K, ghi);
+  arb_mul(dl.v, ball_of(d.lo, prec).v, K.pi.v, prec);
+  arb_mul(dh.v, ball_of(d.hi, prec).v, K.pi.v, prec);
+  if (arb_gt(dl.v, Hl.v) || arb_lt(dh.v, Hh.v)) throw fails("below.delta does not bracket H(G^{-1}(2E))/pi");
+  if (!arb_lt(dl.v, Hl.v) || !arb_gt(dh.v, Hh.v)) return 0;
+  // The first lobe with nu_k <= d_hi: every earlier lobe misses (nu_k > d_hi > delta).
+  Z bound;
+  if (kase == "never") {
+    if (!fmpz_is_zero(F.D.v)) throw fails("below.case never needs a resonant coupling (x rational) when E > 0");
+    bound = R.x.r;  // nu_{k + a} = nu_k
+  } else bound = c.below_lobe.k;
+  const auto hit = first_lobe_at_most(F, R.x, qd_of(d.hi, "below.delta"), bound);
+  if (kase == "never") {
+    if (hit) throw fails("below.case is never, but lobe " + text_of(*hit) + " has nu_k <= delta");
+    return 1;
+  }
+  if (!hit) throw fails("below.lobe.k: no lobe k <= " + text_of(bound) + " has nu_k <= below.delta[1]");
+  check_lobe_integers(R, c.below_lobe, *hit, "below.lobe");
+  const lobe_exact e = lobe_of(R, *hit);
+  B lo, hi;
+  if (!check_root(K, R, e.nu, need(c.below_root, "below.root"), "below.root", lo, hi)) return 0;
+  // The hit itself: nu_k <= d_lo exactly, or V(nu_k) <= G(root hi) < 2E.
+  if (cmp(F, e.nu, qd_of(d.lo, "below.delta")) > 0) {
+    const B g = G(K, hi);
+    if (arb_ge(g.v, level.v)) throw fails("below.lobe: its minimum is not proved <= E");
+    if (!arb_lt(g.v, level.v)) return 0;
+  }
+  // The descending branch [max(u_g, -pi/2), u*]: c_lo >= -pi/2 and H(c_lo) > mu - pi/2; c_hi <= u*.
+  const bracket& cr = need(c.crossing, "below.crossing");
+  B clo = ball_of(cr.lo, prec), mu = ball_of_q2(F, sub(add(integer(e.j), rational(1, 2)), mul(F, integer(*hit), R.x)), prec);
+  arb_mul(mu.v, mu.v, K.pi.v, prec);
+  arb_sub(mu.v, mu.v, half_pi.v, prec);
+  B neg_half_pi;
+  arb_neg(neg_half_pi.v, half_pi.v);
+  const B hc = H(K, clo);
+  if (arb_lt(clo.v, neg_half_pi.v) || arb_le(hc.v, mu.v)) throw fails("below.crossing starts before the lobe's descending branch");
+  if (!arb_ge(clo.v, neg_half_pi.v) || !arb_gt(hc.v, mu.v)) return 0;
+  const int end = e.side > 0 ? cmp_decimal(cr.hi, c.below_root->lo, "below.crossing")
+                  : e.side < 0 ? (cmp_decimal(cr.hi, "-" + c.below_root->hi, "below.crossing"))
+                               : cmp_decimal(cr.hi, "0", "below.crossing");
+  if (end > 0) throw fails("below.crossing ends after the lobe's minimiser");
+  if (!check_crossing(c, K, level, *hit, t)) return 0;
+  return check_claim(need(c.t_below, "below.t_below"), t, c.digits, false, "below.t_below", prec);
+}
+
 }  // namespace
 
 verdict check_coupling_certificate(const std::string& json_text) {
@@ -706,14 +953,18 @@ verdict check_coupling_certificate(const std::string& json_text) {
     fmpz_sub_ui(K_not.v, c.cut_lobe.v, 1);
     std::size_t longest = 0;
     for (const auto* b : {&c.cut_root, &c.root, &c.h_min, &c.t_min}) longest = std::max({longest, b->lo.size(), b->hi.size()});
+    for (const auto& b : {c.level_root, c.delta, c.below_root, c.crossing, c.t_below})
+      if (b) longest = std::max({longest, b->lo.size(), b->hi.size()});
     long prec = long(3.33 * double(longest)) + 2 * bits_of(c.cut_lobe) + bits_of(c.Tn) + bits_of(c.Td) +
                 bits_of(c.P) + bits_of(c.Q) + 64;
+    if (c.has_below) prec += 2 * bits_of(c.below_lobe.k) + bits_of(c.En) + bits_of(c.Ed);
     exact_facts out;
     for (int round = 0; round < 5; ++round, prec *= 2)
-      if (check_at(c, R, X, K_reached, K_not, prec, out))
+      if (check_at(c, R, X, K_reached, K_not, prec, out) && (!c.has_below || check_below(c, R, prec)))
         return {0, std::string("certificate holds (horizon-theorem/1): min H_q over [0, T] ") +
-                       (c.at_end ? "at t = T" : "in lobe " + text_of(c.lobe.k)) + " to " + std::to_string(c.digits) +
-                       " digits"};
+                       (c.at_end ? "at t = T" : "in lobe " + text_of(c.lobe.k)) +
+                       (c.has_below ? "; first time below E: " + c.below_case : std::string()) + " to " +
+                       std::to_string(c.digits) + " digits"};
     return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
   } catch (const malformed& e) {
     return {2, std::string("malformed: ") + e.what()};

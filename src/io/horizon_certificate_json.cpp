@@ -25,16 +25,38 @@ json horizon_certificate_to_json(const horizon_certificate& c) {
                {"at_horizon_end", c.at_horizon_end},
                {"h_min", bracket_json(c.h_min)},
                {"t_min", bracket_json(c.t_min)}};
-  return json{{"format", c.format},     {"theorem", c.theorem},   {"n2", rational_str(c.n2)},
-              {"horizon", rational_str(c.horizon)}, {"digits", c.digits}, {"minimum", minimum}};
+  json below = nullptr;
+  if (c.below) {
+    const below_certificate& b = *c.below;
+    auto optional_bracket = [](const std::optional<decimal_bracket>& v) { return v ? bracket_json(*v) : json(nullptr); };
+    json blobe = nullptr, broot = nullptr;
+    if (b.lobe) {
+      blobe = json{{"k", b.lobe->k.str()}, {"j", b.lobe->j.str()}, {"side", b.lobe->side}};
+      if (b.kase == "lobe") broot = bracket_json(b.lobe->root);
+    }
+    below = json{{"level", rational_str(b.level)},
+                 {"case", b.kase},
+                 {"lobe", blobe},
+                 {"level_root", optional_bracket(b.level_root)},
+                 {"delta", optional_bracket(b.delta)},
+                 {"root", broot},
+                 {"crossing", optional_bracket(b.crossing)},
+                 {"t_below", optional_bracket(b.t_below)}};
+  }
+  return json{{"format", c.format},
+              {"theorem", c.theorem},
+              {"n2", rational_str(c.n2)},
+              {"horizon", rational_str(c.horizon)},
+              {"digits", c.digits},
+              {"minimum", minimum},
+              {"below", below}};
 }
 
 std::string coupling_certificate_text(const coupling_spec& c, const big_rational& horizon,
                                       const std::optional<big_rational>& level, unsigned digits) {
-  if (level)
-    throw usage_error("--certificate covers the minimum over [0, T] only: a certificate of --below is not "
-                      "part of gyrores-coupling-certificate/1 yet");
-  return json_dump(horizon_certificate_to_json(certify_horizon_minimum(c, horizon, digits))) + "\n";
+  horizon_certificate cert = certify_horizon_minimum(c, horizon, digits);
+  if (level) cert.below = certify_first_below(c, *level, digits);
+  return json_dump(horizon_certificate_to_json(cert)) + "\n";
 }
 
 }  // namespace gyrores

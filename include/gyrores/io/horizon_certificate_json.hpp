@@ -13,8 +13,8 @@ namespace gyrores {
 json horizon_certificate_to_json(const horizon_certificate& c);
 
 // The certificate text (JSON and a final newline) for `gyrores coupling N --horizon T
-// --certificate FILE`: min H_q over [0, T] of coupling c to `digits` digits. A level (--below)
-// is refused with a usage_error: its certificate is not part of this format version yet.
+// [--below E] --certificate FILE`: min H_q over [0, T] of coupling c to `digits` digits, and the
+// first time H_q <= E when a level is given ("below": null otherwise).
 std::string coupling_certificate_text(const coupling_spec& c, const big_rational& horizon,
                                       const std::optional<big_rational>& level, unsigned digits);
 

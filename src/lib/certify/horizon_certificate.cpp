@@ -8,6 +8,7 @@
 #include <arb.h>
 
 #include <algorithm>
+#include <functional>
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
@@ -70,48 +71,125 @@ std::string decimal_of(const arf_t v, unsigned digits, bool up, slong prec) {
   return format_scientific(static_cast<mpfr_srcptr>(m), digits, up ? MPFR_RNDU : MPFR_RNDD);
 }
 
-// A decimal bracket of u0 = H^{-1}(pi nu) in [0, pi/2), relative width about 10^-(digits + 12).
-decimal_bracket root_bracket(const quadratic_number& x, const quadratic_number& nu, unsigned digits) {
-  if (nu.sign() == 0) return {"0", "0"};
+// f(u), negative before the root and positive after it (on the interval searched), at `prec` bits.
+using root_fn = std::function<void(arb_t, const arb_t, slong)>;
+// The two exact start points lo < hi of a search, at `prec` bits.
+using ends_fn = std::function<void(arb_t, arb_t, slong)>;
+
+// A decimal bracket of the root of f, relative width about 10^-(digits + 12): bisection on exact
+// midpoints, then the proof f(lo) < 0 < f(hi) on the decimals as written (what the checker reads).
+decimal_bracket bracket_root(const root_fn& f, const ends_fn& ends, unsigned digits, slong extra_bits) {
   const unsigned text_digits = digits + 15;
   const slong target_bits = slong(3.33 * (digits + 12));
-  for (slong prec = slong(3.33 * text_digits) + 64; prec <= (slong(1) << 17); prec *= 2) {
-    ball xb, pi, target, half_pi, lo, hi, mid, h, w;
-    set_quadratic(xb.v, x, prec);
-    arb_const_pi(pi.v, prec);
-    set_quadratic(target.v, nu, prec);
-    arb_mul(target.v, target.v, pi.v, prec);
-    arb_mul_2exp_si(half_pi.v, pi.v, -1);
-    arb_zero(lo.v);
-    arf_t top;
-    arf_init(top);
-    arb_get_lbound_arf(top, half_pi.v, prec);
-    arb_set_arf(hi.v, top);
-    arf_clear(top);
-    // Bisection on exact midpoints: H(lo) < pi nu < H(hi) throughout (H increases, Step A).
+  for (slong prec = slong(3.33 * text_digits) + 64 + extra_bits; prec <= (slong(1) << 17); prec *= 2) {
+    ball lo, hi, mid, v, w, scale;
+    ends(lo.v, hi.v, prec);
+    f(v.v, lo.v, prec);
+    if (!arb_is_negative(v.v)) continue;
+    f(v.v, hi.v, prec);
+    if (!arb_is_positive(v.v)) continue;
     for (slong step = 0; step < 4 * prec; ++step) {
       arb_sub(w.v, hi.v, lo.v, prec);
       arb_mul_2exp_si(w.v, w.v, target_bits);
-      if (!arb_is_zero(lo.v) && arb_lt(w.v, lo.v)) break;
-      arb_add(mid.v, lo.v, hi.v, prec + 8);
+      arb_abs(scale.v, lo.v);
+      arb_abs(mid.v, hi.v);
+      arb_max(scale.v, scale.v, mid.v, prec);
+      if (arb_lt(w.v, scale.v)) break;
+      arb_add(mid.v, lo.v, hi.v, 2 * prec);
       arb_mul_2exp_si(mid.v, mid.v, -1);
-      H(h.v, xb.v, mid.v, prec);
-      if (arb_lt(h.v, target.v)) arb_swap(lo.v, mid.v);
-      else if (arb_gt(h.v, target.v)) arb_swap(hi.v, mid.v);
+      f(v.v, mid.v, prec);
+      if (arb_is_negative(v.v)) arb_swap(lo.v, mid.v);
+      else if (arb_is_positive(v.v)) arb_swap(hi.v, mid.v);
       else break;
     }
-    const decimal_bracket out{decimal_of(arb_midref(lo.v), text_digits, false, prec),
-                              decimal_of(arb_midref(hi.v), text_digits, true, prec)};
-    // The proof, on the decimals as written (what the checker reads).
-    ball dlo, dhi, hlo, hhi;
+    const decimal_bracket out{decimal_of(arb_midref(lo.v), text_digits, false, 2 * prec),
+                              decimal_of(arb_midref(hi.v), text_digits, true, 2 * prec)};
+    ball dlo, dhi, flo, fhi;
     if (arb_set_str(dlo.v, out.first.c_str(), prec) || arb_set_str(dhi.v, out.second.c_str(), prec)) continue;
-    H(hlo.v, xb.v, dlo.v, prec);
-    H(hhi.v, xb.v, dhi.v, prec);
-    if (arb_is_nonnegative(dlo.v) && arb_lt(dlo.v, dhi.v) && arb_lt(dhi.v, half_pi.v) && arb_lt(hlo.v, target.v) &&
-        arb_lt(target.v, hhi.v))
-      return out;
+    f(flo.v, dlo.v, prec);
+    f(fhi.v, dhi.v, prec);
+    if (arb_is_negative(flo.v) && arb_is_positive(fhi.v) && arb_lt(dlo.v, dhi.v)) return out;
   }
-  throw compute_error("coupling certificate: the lobe root was not bracketed within 2^17 bits");
+  throw compute_error("coupling certificate: a root was not bracketed within 2^17 bits");
+}
+
+// The coupling's x, x^2 = P/(P + 4Q) and S = sqrt(n^2 + 4) as balls.
+struct coupling_balls {
+  ball x, x2, s;
+  coupling_balls(const coupling_spec& c, const quadratic_number& xq, slong prec) {
+    set_quadratic(x.v, xq, prec);
+    arb_mul(x2.v, x.v, x.v, prec);
+    ball n2, d;
+    set_int(n2.v, c.P());
+    set_int(d.v, c.Q());
+    arb_div(n2.v, n2.v, d.v, prec);
+    arb_add_ui(s.v, n2.v, 4, prec);
+    arb_sqrt(s.v, s.v, prec);
+  }
+};
+
+// G(u) = (1 - x^2) x^2 sin^4 u/(cos^2 u + x^2 sin^2 u) (lattice-theorem.md Step C).
+void G(arb_t out, const coupling_balls& cb, const arb_t u, slong prec) {
+  ball s, c, e, t;
+  arb_sin_cos(s.v, c.v, u, prec);
+  arb_sqr(s.v, s.v, prec);
+  arb_sqr(c.v, c.v, prec);
+  arb_mul(e.v, cb.x2.v, s.v, prec);
+  arb_add(e.v, e.v, c.v, prec);
+  arb_sqr(t.v, s.v, prec);
+  arb_mul(t.v, t.v, cb.x2.v, prec);
+  arb_sub_ui(out, cb.x2.v, 1, prec);
+  arb_neg(out, out);
+  arb_mul(out, out, t.v, prec);
+  arb_div(out, out, e.v, prec);
+}
+
+// R at alpha (qdot0 = 1): (1 - x^2) sin^2 alpha cos^2 beta + (cos alpha cos beta - x sin alpha sin beta)^2.
+void R_at(arb_t out, const coupling_balls& cb, const arb_t alpha, slong prec) {
+  ball b, sa, ca, sb, cbeta, q, qd, t;
+  arb_mul(b.v, cb.x.v, alpha, prec);
+  arb_sin_cos(sa.v, ca.v, alpha, prec);
+  arb_sin_cos(sb.v, cbeta.v, b.v, prec);
+  arb_mul(q.v, sa.v, cbeta.v, prec);
+  arb_sqr(q.v, q.v, prec);
+  arb_sub_ui(t.v, cb.x2.v, 1, prec);
+  arb_neg(t.v, t.v);
+  arb_mul(q.v, q.v, t.v, prec);
+  arb_mul(qd.v, ca.v, cbeta.v, prec);
+  arb_mul(t.v, sa.v, sb.v, prec);
+  arb_mul(t.v, t.v, cb.x.v, prec);
+  arb_sub(qd.v, qd.v, t.v, prec);
+  arb_sqr(qd.v, qd.v, prec);
+  arb_add(out, q.v, qd.v, prec);
+}
+
+// [0, a point just below pi/2].
+void quarter_turn(arb_t lo, arb_t hi, slong prec) {
+  arb_zero(lo);
+  ball p;
+  arb_const_pi(p.v, prec);
+  arb_mul_2exp_si(p.v, p.v, -1);
+  arf_t top;
+  arf_init(top);
+  arb_get_lbound_arf(top, p.v, prec);
+  arb_set_arf(hi, top);
+  arf_clear(top);
+}
+
+// A decimal bracket of u0 = H^{-1}(pi nu) in [0, pi/2) (H increases, lattice-theorem.md Step A).
+decimal_bracket root_bracket(const quadratic_number& x, const quadratic_number& nu, unsigned digits) {
+  if (nu.sign() == 0) return {"0", "0"};
+  auto f = [&](arb_t out, const arb_t u, slong prec) {
+    ball xb, t;
+    set_quadratic(xb.v, x, prec);
+    set_quadratic(t.v, nu, prec);
+    ball pi;
+    arb_const_pi(pi.v, prec);
+    arb_mul(t.v, t.v, pi.v, prec);
+    H(out, xb.v, u, prec);
+    arb_sub(out, out, t.v, prec);
+  };
+  return bracket_root(f, quarter_turn, digits, 0);
 }
 
 }  // namespace
@@ -153,6 +231,145 @@ horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_ra
   out.h_min = r.h_min.enclosure;
   out.t_min = r.t_min.enclosure;
   if (!r.at_horizon_end && r.lobe && r.lobe->nu.sign() == 0) out.h_min = {"0", "0"};
+  return out;
+}
+
+
+namespace {
+
+// The lower (upper) end of the decimal `text` as an exact point: <= (>=) the decimal.
+void decimal_point(arb_t out, const std::string& text, bool upper, slong prec) {
+  ball b;
+  arb_set_str(b.v, text.c_str(), prec);
+  arf_t e;
+  arf_init(e);
+  if (upper) arb_get_ubound_arf(e, b.v, prec);
+  else arb_get_lbound_arf(e, b.v, prec);
+  arb_set_arf(out, e);
+  arf_clear(e);
+}
+
+// level_root (G^{-1}(2E)) and delta (H(G^{-1}(2E))/pi), both decimal brackets.
+void level_brackets(const coupling_spec& c, const quadratic_number& x, const big_rational& E, unsigned digits,
+                    below_certificate& out) {
+  auto f = [&](arb_t o, const arb_t u, slong prec) {
+    coupling_balls cb(c, x, prec);
+    G(o, cb, u, prec);
+    ball level;
+    set_int(level.v, big_int(2 * boost::multiprecision::numerator(E)));
+    ball d;
+    set_int(d.v, big_int(boost::multiprecision::denominator(E)));
+    arb_div(level.v, level.v, d.v, prec);
+    arb_sub(o, o, level.v, prec);
+  };
+  out.level_root = bracket_root(f, quarter_turn, digits, 0);
+  const slong prec = slong(3.33 * (digits + 20)) + 64;
+  ball xb, pi, u, h;
+  set_quadratic(xb.v, x, prec);
+  arb_const_pi(pi.v, prec);
+  decimal_bracket d;
+  arf_t e;
+  arf_init(e);
+  arb_set_str(u.v, out.level_root->first.c_str(), prec);
+  H(h.v, xb.v, u.v, prec);
+  arb_div(h.v, h.v, pi.v, prec);
+  arb_get_lbound_arf(e, h.v, prec);
+  d.first = decimal_of(e, digits + 15, false, prec);
+  arb_set_str(u.v, out.level_root->second.c_str(), prec);
+  H(h.v, xb.v, u.v, prec);
+  arb_div(h.v, h.v, pi.v, prec);
+  arb_get_ubound_arf(e, h.v, prec);
+  d.second = decimal_of(e, digits + 15, true, prec);
+  arf_clear(e);
+  out.delta = d;
+}
+
+// The crossing R = 2E on lobe k's descending branch [max(u_g, -pi/2), u*], u_g = -H^{-1}(pi/2 - mu).
+decimal_bracket crossing_bracket(const coupling_spec& c, const quadratic_number& x, const big_rational& E,
+                                 const certificate_lobe& lobe, const quadratic_number& nu, unsigned digits) {
+  const slong kbits = bits_of(lobe.k) + 8;
+  // The branch start: 0 in lobe 0; else just after u_g, or just after -pi/2 when u_g < -pi/2.
+  std::string start_text;
+  if (lobe.k > 0) {
+    const quadratic_number mu = nu * quadratic_number(lobe.side);  // mu_k/pi
+    if (mu + x / quadratic_number(2) > quadratic_number(0)) {  // mu > -x pi/2 (exact): u_g >= -pi/2
+      auto fg = [&](arb_t o, const arb_t u, slong prec) {
+        ball xb, t, pi;
+        set_quadratic(xb.v, x, prec);
+        set_quadratic(t.v, quadratic_number(1, 2) - mu, prec);
+        arb_const_pi(pi.v, prec);
+        arb_mul(t.v, t.v, pi.v, prec);
+        H(o, xb.v, u, prec);
+        arb_sub(o, o, t.v, prec);
+      };
+      start_text = "-" + bracket_root(fg, quarter_turn, digits, 0).first;  // -v_lo >= u_g
+    }
+  }
+  auto ends = [&](arb_t lo, arb_t hi, slong prec) {
+    if (lobe.k == 0) arb_zero(lo);
+    else if (!start_text.empty()) decimal_point(lo, start_text, true, prec);
+    else {
+      ball p;
+      arb_const_pi(p.v, prec);
+      arb_mul_2exp_si(p.v, p.v, -1);
+      arb_neg(p.v, p.v);
+      arf_t e;
+      arf_init(e);
+      arb_get_ubound_arf(e, p.v, prec);
+      arb_set_arf(lo, e);
+      arf_clear(e);
+    }
+    if (lobe.side > 0) decimal_point(hi, lobe.root.first, false, prec);
+    else if (lobe.side < 0) {
+      decimal_point(hi, lobe.root.second, true, prec);
+      arb_neg(hi, hi);
+    } else arb_zero(hi);
+  };
+  auto f = [&](arb_t o, const arb_t u, slong prec) {
+    coupling_balls cb(c, x, prec + kbits);
+    ball alpha, pi, level, d;
+    arb_const_pi(pi.v, prec + kbits);
+    set_int(alpha.v, lobe.k);
+    arb_mul(alpha.v, alpha.v, pi.v, prec + kbits);
+    arb_add(alpha.v, alpha.v, u, prec + kbits);
+    R_at(o, cb, alpha.v, prec + kbits);
+    set_int(level.v, big_int(2 * boost::multiprecision::numerator(E)));
+    set_int(d.v, big_int(boost::multiprecision::denominator(E)));
+    arb_div(level.v, level.v, d.v, prec);
+    arb_sub(o, level.v, o, prec);  // 2E - R: negative before the crossing, positive after
+  };
+  return bracket_root(f, ends, digits, kbits);
+}
+
+}  // namespace
+
+below_certificate certify_first_below(const coupling_spec& c, const big_rational& E, unsigned digits) {
+  const first_below_report r = prove_first_below(c, E, digits);
+  const quadratic_number x = coupling_rotation_number(c);
+  below_certificate out;
+  out.level = E;
+  if (2 * E >= 1) {
+    out.kase = "start";
+    out.t_below = decimal_bracket{"0", "0"};
+    return out;
+  }
+  if (E == 0) {
+    out.kase = r.never ? "never" : "zero";
+    if (!r.never) {
+      out.lobe = certificate_lobe_of(c, r.lobe->k, digits);
+      out.t_below = r.t_below.enclosure;
+    }
+    return out;
+  }
+  if (r.never || r.lobe->k > 0) level_brackets(c, x, E, digits, out);
+  if (r.never) {
+    out.kase = "never";
+    return out;
+  }
+  out.kase = "lobe";
+  out.lobe = certificate_lobe_of(c, r.lobe->k, digits);
+  out.crossing = crossing_bracket(c, x, E, *out.lobe, distance_to_half(x, r.lobe->k), digits);
+  out.t_below = r.t_below.enclosure;
   return out;
 }
 
