@@ -295,7 +295,7 @@ bool all_digits(const std::string& s, std::size_t from) {
 Z integer_field(const json& j, const std::string& name) {
   if (!j.is_string()) throw malformed(name + " must be a decimal string");
   const std::string s = j.get<std::string>();
-  if (s.size() > 1000 || !all_digits(s, 0) || (s[0] == '0' && s.size() > 1))
+  if (s.size() > 400 || !all_digits(s, 0) || (s[0] == '0' && s.size() > 1))
     throw malformed(name + " is not a non-negative integer: '" + s.substr(0, 40) + "'");
   Z z;
   fmpz_set_str(z.v, s.c_str(), 10);
@@ -307,7 +307,7 @@ void rational_field(const json& j, const std::string& name, Z& num, Z& den, bool
   const std::string s = j.get<std::string>();
   const auto slash = s.find('/');
   const std::string a = s.substr(0, slash), b = slash == std::string::npos ? "1" : s.substr(slash + 1);
-  if (s.size() > 2001 || !all_digits(a, 0) || !all_digits(b, 0) || (a[0] == '0' && a.size() > 1) || (b[0] == '0'))
+  if (s.size() > 801 || !all_digits(a, 0) || !all_digits(b, 0) || (a[0] == '0' && a.size() > 1) || (b[0] == '0'))
     throw malformed(name + " is not a rational p/q: '" + s.substr(0, 40) + "'");
   fmpz_set_str(num.v, a.c_str(), 10);
   fmpz_set_str(den.v, b.c_str(), 10);

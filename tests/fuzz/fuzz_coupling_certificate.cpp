@@ -1,7 +1,8 @@
 // Fuzz target: reading coupling certificates as `gyrores check` does (src/cli/cmd_certify.cpp):
 // the independent checker of "gyrores-coupling-certificate/1" (src/checker/horizon_checker.hpp)
 // answers every input with a verdict (0, 1, 2 and a one-line message), never a crash or an
-// exception. Integers are bounded at 1000 digits, so its recursion stays shallow.
+// exception. Integers are bounded at 400 digits, so its recursion stays shallow (at most
+// about 1330 calls deep, also under ASan).
 #include "fuzz_support.hpp"
 #include "horizon_checker.hpp"
 
