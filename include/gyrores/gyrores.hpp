@@ -28,6 +28,7 @@
 #include <gyrores/theorem/band.hpp>           // a band of couplings: worst and best minimum over [0, T], proved
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
+#include <gyrores/certify/horizon_certificate.hpp> // certificates of any coupling's horizon minimum ("gyrores-coupling-certificate/1")
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // the scan of every critical point over a horizon (a reference, and for figures)
 #include <gyrores/design/coupling_report.hpp>  // the coupling analysis, every number proved

@@ -11,6 +11,7 @@
 #include <gyrores/io/files.hpp>
 
 #include "certificate_checker.hpp"
+#include "horizon_checker.hpp"  // issue 23: coupling certificates
 #include "cli_options.hpp"
 #include "commands.hpp"
 
@@ -56,6 +57,11 @@ check_outcome check_file(const std::string& file) {
   const std::string text = read_file(file, certificate_read_limit, "a certificate");
   if (certificate_format_of(text) == retired_certificate_format)
     return {2, "gyrores check: " + retired_certificate_message()};
+  // issue 23: coupling certificates (horizon-theorem/1) have their own checker.
+  if (certificate_format_of(text) == gyrores_checker::coupling_certificate_format) {
+    auto h = gyrores_checker::check_coupling_certificate(text);
+    return {h.status, "gyrores check: " + h.message};
+  }
   auto v = gyrores_checker::check_theorem_certificate(text);
   return {v.status, "gyrores check: " + v.message};
 }

@@ -1,0 +1,79 @@
+// Certificates of a coupling's minimum of H_q over [0, T] ("gyrores-coupling-certificate/1";
+// proofs/horizon-theorem.md, id horizon-theorem/1; docs/formats.md): for any coupling n^2 = P/Q.
+//
+// What it states (qdot0 = 1, so H_q = R/2):
+//   n2, horizon       the coupling and T, exact rationals;
+//   cut_lobe          k_c, the lobe holding t = T;
+//   cut_root          decimals lo < hi with H(lo) < pi nu_{k_c} < H(hi): the cut lobe's minimiser
+//                     u* = side H^{-1}(pi nu_{k_c}), and cut_lobe_reached (k_c pi + u* <= alpha_T);
+//   lobe, root        the first lobe k_f with the smallest ||k x - 1/2|| over the admissible lobes
+//                     0..K_T (k, j = floor(k x), side) and the bracket of H^{-1}(pi nu*); null when
+//                     no lobe is admissible (K_T = -1);
+//   at_horizon_end    the minimum is R(T) at t = T (strictly below the lobe's value);
+//   h_min, t_min      decimal brackets of relative width <= 10^-digits.
+// The producer takes the decisions from theorem/horizon.hpp and proves every bracket in Arb; the
+// independent checker (src/checker/horizon_checker.hpp) re-derives the lobe with its own
+// continued-fraction recursion and re-proves every bracket.
+#pragma once
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <gyrores/core/integer.hpp>
+#include <gyrores/core/rational.hpp>
+#include <gyrores/model/coupling.hpp>
+
+namespace gyrores {
+
+inline constexpr const char* coupling_certificate_format = "gyrores-coupling-certificate/1";
+
+using decimal_bracket = std::pair<std::string, std::string>;
+
+struct certificate_lobe {
+  big_int k, j;  // the lobe and floor(k x)
+  int side = 1;  // the first minimiser is at u = side H^{-1}(pi nu) in the lobe
+  decimal_bracket root;
+};
+
+// The first time H_q <= E (horizon-theorem item 5), in one of four cases:
+//   start  2E >= 1: t = 0;
+//   zero   E = 0 reached at the centre of `lobe` (nu = 0, a degenerate pair), t = 2 k pi/S;
+//   never  E = 0 and no lobe has nu = 0, or a resonant coupling none of whose lobes reaches E
+//          (level_root, delta as below; the checker's FirstHit over one period finds none);
+//   lobe   the first lobe k* reaching E: for k* >= 1, level_root brackets G^{-1}(2E) and delta
+//          brackets delta = H(G^{-1}(2E))/pi (< 1/2), and k* is the first k with nu_k <= delta_hi;
+//          for k* = 0 the lobe's root shows 2E > V(1/2). crossing brackets the u of R = 2E on the
+//          lobe's descending branch, and t_below = 2 (k* pi + u)/S.
+struct below_certificate {
+  big_rational level;
+  std::string kase;                      // "start", "zero", "never", "lobe"
+  std::optional<certificate_lobe> lobe;  // in the cases zero and lobe (its root used in case lobe)
+  std::optional<decimal_bracket> level_root, delta, crossing, t_below;
+};
+
+struct horizon_certificate {
+  std::string format = coupling_certificate_format;
+  std::string theorem;
+  big_rational n2, horizon;
+  unsigned digits = 0;
+  big_int cut_lobe;
+  bool cut_lobe_reached = false, at_horizon_end = false;
+  decimal_bracket cut_root;
+  std::optional<certificate_lobe> lobe;  // none iff no lobe's minimiser lies in [0, T]
+  decimal_bracket h_min, t_min;
+  std::optional<below_certificate> below;  // the first time below a level, when asked
+};
+
+// Proves and writes the certificate of min H_q over [0, T] with `digits` correct digits in each
+// claim. Throws usage_error for T <= 0 or digits outside [1, report_digits_max]; otherwise as
+// prove_horizon_minimum.
+horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_rational& horizon, unsigned digits);
+
+// The first time below E >= 0 (Throws as prove_first_below).
+below_certificate certify_first_below(const coupling_spec& c, const big_rational& level, unsigned digits);
+
+// The entry of one lobe k (its j, side and root bracket), for any k >= 0: the certificate's
+// lobe, and a tool for tests that build a wrong lobe on purpose.
+certificate_lobe certificate_lobe_of(const coupling_spec& c, const big_int& k, unsigned digits);
+
+}  // namespace gyrores

@@ -1,0 +1,326 @@
+// Coupling certificates ("gyrores-coupling-certificate/1", certify/horizon_certificate.hpp) and
+// their independent checker (src/checker/horizon_checker.hpp):
+//   * random couplings (n as decimals, n^2 as fractions, resonant and not) and horizons from
+//     T < 1 to 10^100: every certificate is accepted, and its lobe is the plain loop's smallest
+//     argmin of ||k x - 1/2|| over the admissible lobes (an oracle independent of both the
+//     producer's and the checker's O(log K) recursions) whenever K_T is small;
+//   * the tamper catalogue: every field changed in turn, each refused with one line naming it;
+//   * wrong but self-consistent: a genuine other lobe (with its own true j, side and bracket), a
+//     tie of a resonant coupling's mirror lobes (same h_min) that is not the first: refused.
+#include <catch2/catch.hpp>
+
+#include <gyrores/certify/horizon_certificate.hpp>
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/io/horizon_certificate_json.hpp>
+#include <gyrores/model/rotation.hpp>
+
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "horizon_checker.hpp"
+
+using namespace gyrores;
+
+namespace {
+
+gyrores_checker::verdict check(const json& j) { return gyrores_checker::check_coupling_certificate(json_dump(j)); }
+
+json certificate_json(const coupling_spec& c, const big_rational& T, unsigned digits) {
+  return horizon_certificate_to_json(certify_horizon_minimum(c, T, digits));
+}
+
+// The plain loop: the smallest argmin of ||k x - 1/2|| over 0 <= k <= K (exact comparisons).
+big_int loop_argmin(const quadratic_number& x, const big_int& K) {
+  big_int best = 0;
+  quadratic_number v = distance_to_half(x, 0);
+  for (big_int k = 1; k <= K; ++k) {
+    const quadratic_number w = distance_to_half(x, k);
+    if (w < v) {
+      v = w;
+      best = k;
+    }
+  }
+  return best;
+}
+
+struct case_spec {
+  std::string name;
+  coupling_spec c;
+  big_rational T;
+};
+
+std::vector<case_spec> cases() {
+  std::vector<case_spec> out;
+  auto dec = [](const std::string& s) { return parse_rational(s, "n"); };
+  // Named: resonant (n^2 = 1/12: (4,3), x = 1/7; n = 3/2: W1/W2 = 4; n^2 = 4/99: (11,9), degenerate),
+  // not resonant (n = 2, 0.1832, 0.001, 30), horizons inside lobe 0 and cut lobes.
+  for (const auto& [n2, T] : std::vector<std::pair<std::string, std::string>>{
+           {"1/12", "2.5"}, {"1/12", "40"}, {"4/99", "200"}, {"4/99", "0.3"}, {"9/4", "7"}, {"9/4", "1e30"}})
+    out.push_back({"n^2 = " + n2 + ", T = " + T, coupling_spec::from_n2(dec(n2)), dec(T)});
+  for (const auto& [n, T] : std::vector<std::pair<std::string, std::string>>{
+           {"2", "0.5"}, {"2", "37"}, {"2", "1e100"}, {"0.1832", "1000"}, {"0.001", "5000"}, {"30", "12.75"},
+           {"0.2886751345948", "1e12"}})
+    out.push_back({"n = " + n + ", T = " + T, coupling_spec::from_n(dec(n)), dec(T)});
+  std::mt19937_64 rng(20261125);
+  for (int i = 0; i < 24; ++i) {
+    const big_rational T = big_rational(long(rng() % 100000) + 1, long(rng() % 997) + 1);
+    if (i % 2 == 0) {
+      const big_rational n2(long(rng() % 5000) + 1, long(rng() % 500) + 1);
+      out.push_back({"random n^2 = " + rational_str(n2) + ", T = " + rational_str(T), coupling_spec::from_n2(n2), T});
+    } else {
+      const big_rational n(long(rng() % 30000) + 1, 1000);
+      out.push_back({"random n = " + rational_str(n) + ", T = " + rational_str(T), coupling_spec::from_n(n), T});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("coupling certificates of random couplings and horizons are accepted", "[certificate][horizon]") {
+  for (const auto& k : cases()) {
+    INFO(k.name);
+    const horizon_certificate cert = certify_horizon_minimum(k.c, k.T, 20);
+    const auto v = check(horizon_certificate_to_json(cert));
+    INFO(v.message);
+    CHECK(v.status == 0);
+    // The lobe against the plain loop over k (independent of both recursions).
+    const big_int K_T = cert.cut_lobe_reached ? cert.cut_lobe : big_int(cert.cut_lobe - 1);
+    CHECK(cert.lobe.has_value() == (K_T >= 0));
+    if (cert.lobe && K_T <= 20000) CHECK(cert.lobe->k == loop_argmin(coupling_rotation_number(k.c), K_T));
+  }
+}
+
+TEST_CASE("the certificate text for the CLI; T <= 0 is refused", "[certificate][horizon]") {
+  const auto c = coupling_spec::from_n(parse_rational("2", "n"));
+  const std::string text = coupling_certificate_text(c, parse_rational("37", "T"), std::nullopt, 15);
+  CHECK(text.back() == '\n');
+  CHECK(gyrores_checker::check_coupling_certificate(text).status == 0);
+  const std::string with_level = coupling_certificate_text(c, 37, big_rational(1, 100), 15);
+  CHECK(gyrores_checker::check_coupling_certificate(with_level).status == 0);
+  CHECK(with_level.find("\"case\": \"lobe\"") != std::string::npos);
+  CHECK_THROWS_AS(certify_horizon_minimum(c, 0, 15), usage_error);
+}
+
+namespace {
+
+using tamper = std::function<void(json&)>;
+
+std::string plus_one(const json& v) { return (big_int(v.get<std::string>()) + 1).str(); }
+
+// One end of a bracket replaced by the other end moved by 10^-6 across it (lo above hi, or hi
+// below lo): the bracket is then reversed, or no longer holds its value.
+void swap_in(json& bracket, int end) {
+  const big_rational other = parse_rational(bracket[1 - end].get<std::string>(), "end");
+  const big_rational step = other == 0 ? big_rational(1, 1000000) : abs(other) / 1000000;
+  const big_rational moved = end == 0 ? big_rational(other + step) : big_rational(other - step);
+  bracket[end] = format_rational_scientific(moved, 30);
+}
+
+// Every field of the certificate, changed in turn, with the word the refusal must name.
+std::vector<std::tuple<std::string, std::string, tamper>> catalogue(const json& cert) {
+  std::vector<std::tuple<std::string, std::string, tamper>> t;
+  auto add = [&](std::string what, std::string names, tamper f) { t.emplace_back(std::move(what), std::move(names), std::move(f)); };
+  add("format", "format", [](json& j) { j["format"] = "gyrores-coupling-certificate/2"; });
+  add("theorem", "theorem", [](json& j) { j["theorem"] = "horizon-theorem/2"; });
+  add("n2 numerator + 1", "", [](json& j) {
+    const big_rational n2 = parse_rational(j["n2"].get<std::string>(), "n2") * big_rational(1000001, 1000000);
+    j["n2"] = rational_str(n2);
+  });
+  add("horizon x 2", "", [](json& j) {
+    j["horizon"] = rational_str(parse_rational(j["horizon"].get<std::string>(), "T") * 2);
+  });
+  add("horizon not a rational", "horizon", [](json& j) { j["horizon"] = "1e5"; });
+  add("digits + 8", "wider", [](json& j) { j["digits"] = j["digits"].get<int>() + 8; });
+  add("cut_lobe + 1", "cut_lobe", [](json& j) { j["minimum"]["cut_lobe"] = plus_one(j["minimum"]["cut_lobe"]); });
+  add("cut_lobe_reached flipped", "cut_lobe_reached",
+      [](json& j) { j["minimum"]["cut_lobe_reached"] = !j["minimum"]["cut_lobe_reached"].get<bool>(); });
+  add("cut_root[0] = cut_root[1]", "cut_root", [](json& j) { swap_in(j["minimum"]["cut_root"], 0); });
+  add("cut_root[1] = cut_root[0]", "cut_root", [](json& j) { swap_in(j["minimum"]["cut_root"], 1); });
+  add("at_horizon_end flipped", "at_horizon_end",
+      [](json& j) { j["minimum"]["at_horizon_end"] = !j["minimum"]["at_horizon_end"].get<bool>(); });
+  add("h_min[0] = h_min[1]", "h_min", [](json& j) { swap_in(j["minimum"]["h_min"], 0); });
+  add("h_min[1] = h_min[0]", "h_min", [](json& j) { swap_in(j["minimum"]["h_min"], 1); });
+  add("t_min[0] = t_min[1]", "t_min", [](json& j) { swap_in(j["minimum"]["t_min"], 0); });
+  add("t_min[1] = t_min[0]", "t_min", [](json& j) { swap_in(j["minimum"]["t_min"], 1); });
+  add("unknown field", "unknown field", [](json& j) { j["minimum"]["note"] = "x"; });
+  add("missing field", "missing field", [](json& j) { j.erase("digits"); });
+  if (!cert["minimum"]["lobe"].is_null()) {
+    add("lobe.k + 1", "lobe.k", [](json& j) { j["minimum"]["lobe"]["k"] = plus_one(j["minimum"]["lobe"]["k"]); });
+    add("lobe.j + 1", "lobe.j", [](json& j) { j["minimum"]["lobe"]["j"] = plus_one(j["minimum"]["lobe"]["j"]); });
+    add("lobe.side changed", "lobe.side",
+        [](json& j) { j["minimum"]["lobe"]["side"] = j["minimum"]["lobe"]["side"].get<int>() == 1 ? -1 : 1; });
+    add("lobe null", "lobe", [](json& j) { j["minimum"]["lobe"] = nullptr; j["minimum"]["root"] = nullptr; });
+    add("root[0] = root[1]", "root", [](json& j) { swap_in(j["minimum"]["root"], 0); });
+    add("root[1] = root[0]", "root", [](json& j) { swap_in(j["minimum"]["root"], 1); });
+    add("root moved above u0", "root", [](json& j) {
+      const std::string hi = j["minimum"]["root"][1].get<std::string>();
+      j["minimum"]["root"] = json::array({hi, format_rational_scientific(parse_rational(hi, "u") * 2, 40)});
+    });
+  } else {
+    add("a lobe where none is admissible", "lobe", [](json& j) {
+      j["minimum"]["lobe"] = json{{"k", "0"}, {"j", "0"}, {"side", 1}};
+      j["minimum"]["root"] = j["minimum"]["cut_root"];
+    });
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("the tamper catalogue: every field changed is refused with one line naming it", "[certificate][horizon]") {
+  // A lobe minimum (n = 2, T = 37), the end point (the cut lobe not reached, R(T) lower), no
+  // admissible lobe (T inside lobe 0's descent), a resonant coupling, a huge horizon.
+  for (const auto& [n2, T] : std::vector<std::pair<std::string, std::string>>{
+           {"4", "37"}, {"4", "2.2"}, {"4", "0.5"}, {"1/12", "40"}, {"9/4", "1e30"}}) {
+    const json cert = certificate_json(coupling_spec::from_n2(parse_rational(n2, "n2")), parse_rational(T, "T"), 20);
+    INFO("n^2 = " << n2 << ", T = " << T << ", end " << cert["minimum"]["at_horizon_end"]);
+    REQUIRE(check(cert).status == 0);
+    for (const auto& [what, names, change] : catalogue(cert)) {
+      json j = cert;
+      change(j);
+      const auto v = check(j);
+      INFO(what << ": " << v.message);
+      CHECK(v.status != 0);
+      CHECK(v.message.find('\n') == std::string::npos);
+      // Changing the coupling or the horizon makes some derived field false; the others are named.
+      if (!names.empty()) CHECK(v.message.find(names) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("wrong but self-consistent claims are refused", "[certificate][horizon]") {
+  SECTION("a genuine lobe that is not the minimum") {
+    const auto c = coupling_spec::from_n2(4);
+    json cert = certificate_json(c, 37, 20);
+    const big_int k = big_int(cert["minimum"]["lobe"]["k"].get<std::string>());
+    const certificate_lobe other = certificate_lobe_of(c, k == 1 ? big_int(2) : big_int(1), 20);
+    cert["minimum"]["lobe"] = json{{"k", other.k.str()}, {"j", other.j.str()}, {"side", other.side}};
+    cert["minimum"]["root"] = json::array({other.root.first, other.root.second});
+    const auto v = check(cert);
+    INFO(v.message);
+    CHECK(v.status == 1);
+    CHECK(v.message.find("lobe.k") != std::string::npos);
+  }
+  SECTION("a resonant coupling's later tie (the same h_min, a later lobe)") {
+    // n^2 = 1/12: x = 1/7, nu_k depends on k mod 7 and nu_k = nu_{7-k}: lobes k and 7 - k tie.
+    const auto c = coupling_spec::from_n2(big_rational(1, 12));
+    json cert = certificate_json(c, 60, 20);
+    const big_int k = big_int(cert["minimum"]["lobe"]["k"].get<std::string>());
+    const quadratic_number x = coupling_rotation_number(c);
+    big_int later = -1;
+    for (big_int m = k + 1; m <= k + 7; ++m)
+      if (distance_to_half(x, m) == distance_to_half(x, k)) later = m;
+    REQUIRE(later > k);
+    const certificate_lobe other = certificate_lobe_of(c, later, 20);
+    CHECK(other.root == certificate_lobe_of(c, k, 20).root);  // the same value: only the index lies
+    cert["minimum"]["lobe"] = json{{"k", other.k.str()}, {"j", other.j.str()}, {"side", other.side}};
+    const auto v = check(cert);
+    INFO(v.message);
+    CHECK(v.status == 1);
+    CHECK(v.message.find("lobe.k") != std::string::npos);
+  }
+}
+
+namespace {
+
+struct below_case {
+  std::string n2, E;
+};
+
+// Levels in every case: t = 0 (2E >= 1), lobe 0 (V(1/2) <= 2E < 1), a later lobe, E = 0 on a
+// degenerate pair (zero) and on others (never), a resonant coupling whose H_min exceeds E (never).
+std::vector<below_case> below_cases() {
+  std::vector<below_case> out{{"4", "1/2"},      {"4", "0.3"},       {"4", "1/100"},     {"4", "1e-6"},
+                              {"4/99", "0"},     {"1/12", "0"},      {"4", "0"},         {"1/12", "1e-6"},
+                              {"1/12", "0.01"},  {"9/4", "0.001"},   {"0.000001", "0.1"}, {"900", "0.001"},
+                              {"1/3", "1e-30"},  {"4/99", "1e-9"}};
+  std::mt19937_64 rng(23);
+  for (int i = 0; i < 16; ++i)
+    out.push_back({rational_str(big_rational(long(rng() % 9000) + 1, long(rng() % 900) + 1)),
+                   rational_str(big_rational(1, long(rng() % 100000) + 3))});
+  return out;
+}
+
+json below_json(const std::string& n2, const std::string& E, unsigned digits) {
+  const auto c = coupling_spec::from_n2(parse_rational(n2, "n2"));
+  return json::parse(coupling_certificate_text(c, 10, parse_rational(E, "E"), digits));
+}
+
+}  // namespace
+
+TEST_CASE("first time below a level: certificates in every case are accepted", "[certificate][horizon]") {
+  for (const auto& b : below_cases()) {
+    const json j = below_json(b.n2, b.E, 20);
+    const auto v = check(j);
+    INFO("n^2 = " << b.n2 << ", E = " << b.E << ": " << json_dump(j["below"], -1) << "\n" << v.message);
+    CHECK(v.status == 0);
+  }
+}
+
+
+TEST_CASE("first time below a level: every field tampered is refused, naming it", "[certificate][horizon]") {
+  // A later lobe (n = 2, E = 10^-6: lobe 12), lobe 0 (E = 0.3), never (n^2 = 1/12, E = 10^-6),
+  // zero (n^2 = 4/99, E = 0), start (E = 1/2).
+  for (const auto& [n2, E] : std::vector<std::pair<std::string, std::string>>{
+           {"4", "1e-6"}, {"4", "0.3"}, {"1/12", "1e-6"}, {"4/99", "0"}, {"4", "1/2"}, {"9/4", "0.001"}}) {
+    const json cert = below_json(n2, E, 20);
+    REQUIRE(check(cert).status == 0);
+    const json& b = cert["below"];
+    std::vector<std::tuple<std::string, std::string, tamper>> t;
+    auto add = [&](std::string what, std::string names, tamper f) { t.emplace_back(std::move(what), std::move(names), std::move(f)); };
+    add("level / 2", "", [](json& j) {
+      const big_rational E = parse_rational(j["below"]["level"].get<std::string>(), "E");
+      j["below"]["level"] = rational_str(E == 0 ? big_rational(1, 1000) : E / 2);
+    });
+    add("case changed", "below.case",
+        [](json& j) { j["below"]["case"] = j["below"]["case"] == "never" ? "lobe" : "never"; });
+    add("case unknown", "below.case", [](json& j) { j["below"]["case"] = "sometimes"; });
+    if (!b["lobe"].is_null()) {
+      add("below.lobe.k + 1", "below.lobe", [](json& j) { j["below"]["lobe"]["k"] = plus_one(j["below"]["lobe"]["k"]); });
+      add("below.lobe.j + 1", "below.lobe.j", [](json& j) { j["below"]["lobe"]["j"] = plus_one(j["below"]["lobe"]["j"]); });
+      add("below.lobe.side changed", "below.lobe.side",
+          [](json& j) { j["below"]["lobe"]["side"] = j["below"]["lobe"]["side"].get<int>() == 1 ? -1 : 1; });
+    }
+    for (const std::string f : {"level_root", "delta", "root", "crossing", "t_below"}) {
+      if (b[f].is_null()) continue;
+      const std::string name = "below." + f;
+      if (b[f][0] == b[f][1]) {  // an exact value (t = 0): any other is refused
+        add(name + " moved", name, [f](json& j) { j["below"][f] = json::array({"1e-3", "1e-3"}); });
+        continue;
+      }
+      add(name + "[0] above [1]", name, [f](json& j) { swap_in(j["below"][f], 0); });
+      add(name + "[1] below [0]", name, [f](json& j) { swap_in(j["below"][f], 1); });
+      add(name + " null", name, [f](json& j) { j["below"][f] = nullptr; });
+    }
+    for (const auto& [what, names, change] : t) {
+      json j = cert;
+      change(j);
+      const auto v = check(j);
+      INFO("n^2 = " << n2 << ", E = " << E << ", " << what << ": " << v.message);
+      CHECK(v.status != 0);
+      CHECK(v.message.find('\n') == std::string::npos);
+      if (!names.empty()) CHECK(v.message.find(names) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("first time below a level: a later lobe that also reaches E is refused", "[certificate][horizon]") {
+  // n = 2, E = 10^-6: lobe 12 is the first; a later lobe with nu_k <= delta exists (irrational x).
+  const auto c = coupling_spec::from_n2(4);
+  json cert = below_json("4", "1e-6", 20);
+  const big_int first(cert["below"]["lobe"]["k"].get<std::string>());
+  const big_rational d_lo = parse_rational(cert["below"]["delta"][0].get<std::string>(), "delta");
+  const quadratic_number x = coupling_rotation_number(c);
+  big_int later = first + 1;
+  while (!(distance_to_half(x, later) <= quadratic_number(d_lo))) ++later;
+  const certificate_lobe other = certificate_lobe_of(c, later, 20);
+  cert["below"]["lobe"] = json{{"k", other.k.str()}, {"j", other.j.str()}, {"side", other.side}};
+  cert["below"]["root"] = json::array({other.root.first, other.root.second});
+  const auto v = check(cert);
+  INFO("later lobe " << later << ": " << v.message);
+  CHECK(v.status == 1);
+  CHECK(v.message.find("below.lobe.k") != std::string::npos);
+}
