@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <unistd.h>
 #include <numeric>
 
 #include <gyrores/design/coupling.hpp>
@@ -287,6 +289,15 @@ TEST_CASE("cli coupling: any horizon and any coupling size answer (the horizon t
   const auto huge = cli_run("coupling 1e308 --json --convergents 1");
   CHECK(huge.status == 0);
   CHECK(huge.out.find("\"theorem\": \"horizon-theorem/1\"") != std::string::npos);
+  // --certificate: the independent checker accepts what coupling wrote.
+  const std::string cert = (std::filesystem::temp_directory_path() / ("gyrores-coupling-cert-" + std::to_string(::getpid()) + ".json")).string();
+  std::filesystem::remove(cert);
+  CHECK(cli_run("coupling 0.1832 --horizon 1e30 --below 1% --convergents 0 --certificate " + cert).status == 0);
+  const auto checked = cli_run("check " + cert);
+  CHECK(checked.status == 0);
+  CHECK(checked.out.find("horizon-theorem/1") != std::string::npos);
+  std::filesystem::remove(cert);
+  check_rejected("coupling 2 --horizon 100pi --certificate " + cert);
   // Bands: the worst and best minimum over [0, T], and a degenerate pair inside (11, 9).
   const auto band = cli_json("coupling --band 0.18:0.19 --horizon 20 --band-digits 4 --json");
   CHECK(band["band"]["worst_h_min"]["converged"] == true);

@@ -8,6 +8,8 @@
 
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/theorem/band.hpp>
+#include <gyrores/io/files.hpp>
+#include <gyrores/io/horizon_certificate_json.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 
@@ -19,7 +21,7 @@ namespace gyrores::cli {
 namespace {
 
 struct coupling_args {
-  std::string n, n2, horizon = "100", below, band, tolerance;
+  std::string n, n2, horizon = "100", below, band, tolerance, certificate;
   int band_digits = 6;
   std::int64_t band_evaluations = 4000;
   int digits = 12;
@@ -186,6 +188,7 @@ std::string run_coupling(const coupling_args& a) {
   }
   if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
   check_digits_flag(a.digits, 1, 1000);
+  if (!a.certificate.empty()) check_output_path(a.certificate);  // before the work
   check_flag_range(a.convergents, 0, 60, "--convergents");
   coupling_spec spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2"))
                                    : coupling_spec::from_n(parse_rational(a.n, "N"));
@@ -195,6 +198,10 @@ std::string run_coupling(const coupling_args& a) {
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   const coupling_report r = analyse_coupling(spec, opt);
+  if (!a.certificate.empty()) {
+    if (opt.horizon.times_pi) throw usage_error("--certificate needs a rational horizon (not a multiple of pi), got " + a.horizon);
+    write_file_atomically(a.certificate, coupling_certificate_text(spec, opt.horizon.value, opt.below, unsigned(a.digits)));
+  }
   std::optional<band_report> b;
   if (band) {
     check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
@@ -217,6 +224,7 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
   sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
   sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
+  sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE: gyrores check FILE");
   sub.add("--band", a->band, "a band of couplings N1:N2: worst and best min of H_q over [0, T], proved (N optional)");
   sub.add("--tolerance", a->tolerance, "the band N (1 -+ P%) around N, e.g. 1%");
   sub.add("--band-digits", a->band_digits, "relative width asked of the band's enclosures: 10^-D (1..12)", show::with_default);
