@@ -21,31 +21,8 @@
 namespace gyrores::python {
 namespace {
 
-// T: a decimal, scientific or fraction, optionally times pi ("100pi", "100*pi", "1e30").
-horizon_time horizon_of(std::string text, const std::string& what) {
-  const std::string given = text;
-  bool pi = false;
-  if (text.size() > 2 && text.compare(text.size() - 2, 2, "pi") == 0) {
-    pi = true;
-    text.resize(text.size() - 2);
-    while (!text.empty() && (text.back() == '*' || text.back() == ' ')) text.pop_back();
-  }
-  horizon_time t(parse_rational(text, what), pi);
-  if (t.value < 0) throw usage_error(what + " must be >= 0, got " + given);
-  return t;
-}
-
-// E: an energy (H_q(0) = 1/2), or a percentage of the initial energy ("1%" is 1/200).
-big_rational level_of(std::string text) {
-  const std::string given = text;
-  big_rational e;
-  if (!text.empty() && text.back() == '%') {
-    text.pop_back();
-    e = parse_rational(text, "below") / 200;
-  } else e = parse_rational(text, "below");
-  if (e < 0) throw usage_error("below must be >= 0, got " + given);
-  return e;
-}
+horizon_time horizon_of(const std::string& text, const std::string& what) { return parse_horizon_time(text, what); }
+big_rational level_of(const std::string& text) { return parse_energy_level(text, "below"); }
 
 coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& what) {
   return is_n2 ? coupling_spec::from_n2(parse_rational(text, what)) : coupling_spec::from_n(parse_rational(text, what));

@@ -961,11 +961,8 @@ verdict check_coupling_certificate(const std::string& json_text) {
     exact_facts out;
     for (int round = 0; round < 5; ++round, prec *= 2)
       if (check_at(c, R, X, K_reached, K_not, prec, out) && (!c.has_below || check_below(c, R, prec)))
-        return {0, std::string("certificate holds (horizon-theorem/1): min H_q over [0, T] ") +
-                       (c.at_end ? "at t = T" : "in lobe " + text_of(c.lobe.k)) +
-                       (c.has_below ? "; first time below E: " + c.below_case +
-                                          (c.below_case == "lobe" ? " " + text_of(c.below_lobe.k) : std::string())
-                                    : std::string()) +
+        return {0, "certificate holds (horizon-theorem/1): min H_q over [0, T] " + (c.at_end ? "at t = T" : "in lobe " + text_of(c.lobe.k)) +
+                       (c.has_below ? "; first time below E: " + c.below_case + (c.below_case == "lobe" ? " " + text_of(c.below_lobe.k) : "") : "") +
                        "; every claim to " + std::to_string(c.digits) + " digits"};
     return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
   } catch (const malformed& e) {

@@ -90,30 +90,6 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
   return os.str();
 }
 
-// T: a decimal, scientific or fraction, optionally times pi ("100pi", "1e30").
-horizon_time parse_horizon(std::string text) {
-  bool pi = false;
-  if (text.size() > 2 && text.compare(text.size() - 2, 2, "pi") == 0) {
-    pi = true;
-    text.resize(text.size() - 2);
-    if (!text.empty() && text.back() == '*') text.pop_back();
-  }
-  horizon_time t(parse_rational(text, "--horizon"), pi);
-  if (t.value < 0) throw usage_error("--horizon must be >= 0, got " + text);
-  return t;
-}
-
-// E: an energy (H_q(0) = 1/2), or a percentage of the initial energy ("1%" is 0.005).
-big_rational parse_level(std::string text) {
-  big_rational e;
-  if (!text.empty() && text.back() == '%') {
-    text.pop_back();
-    e = parse_rational(text, "--below") / 200;
-  } else e = parse_rational(text, "--below");
-  if (e < 0) throw usage_error("--below must be >= 0, got " + text);
-  return e;
-}
-
 std::string extreme_text(const band_extreme& e, unsigned digits) {
   std::string out = e.value.empty() ? std::string("in [") + format_rational_scientific(e.lo, digits) + ", " +
                                           format_rational_scientific(e.hi, digits) + "]"
@@ -182,7 +158,7 @@ std::string run_coupling(const coupling_args& a) {
     band_options bo;
     bo.digits = unsigned(a.band_digits);
     bo.max_evaluations = std::size_t(a.band_evaluations);
-    const band_report b = prove_band(band->first, band->second, parse_horizon(a.horizon), bo);
+    const band_report b = prove_band(band->first, band->second, parse_horizon_time(a.horizon, "--horizon"), bo);
     if (!a.json) return band_text(a, b);
     return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_json(b)}}) + "\n";
   }
@@ -193,8 +169,8 @@ std::string run_coupling(const coupling_args& a) {
   coupling_spec spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2"))
                                    : coupling_spec::from_n(parse_rational(a.n, "N"));
   coupling_report_options opt;
-  opt.horizon = parse_horizon(a.horizon);
-  if (!a.below.empty()) opt.below = parse_level(a.below);
+  opt.horizon = parse_horizon_time(a.horizon, "--horizon");
+  if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below");
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   const coupling_report r = analyse_coupling(spec, opt);

@@ -33,6 +33,14 @@ struct horizon_time {
   std::string str() const { return rational_str(value) + (times_pi ? " pi" : ""); }
 };
 
+// T as text: a decimal, scientific or fraction, optionally times pi ("100pi", "100*pi", "1e30");
+// usage_error naming `what` for anything else or a negative T.
+horizon_time parse_horizon_time(const std::string& text, const std::string& what);
+
+// E as text: an energy (H_q(0) = qdot0^2/2 = 1/2), or a percentage of the initial energy
+// ("1%" is 1/200); usage_error naming `what` for anything else or E < 0.
+big_rational parse_energy_level(const std::string& text, const std::string& what);
+
 // Which lobe the minimum over [0, T] comes from (the integers a certificate carries).
 struct horizon_lobe {
   big_int k;                 // the lobe

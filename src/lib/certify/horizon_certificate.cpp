@@ -16,50 +16,21 @@
 #include <gyrores/model/rotation.hpp>
 #include <gyrores/theorem/horizon.hpp>
 
+#include "../theorem/arb_ball.hpp"
+
 namespace gyrores {
 namespace {
 
-struct ball {
-  arb_t v;
-  ball() { arb_init(v); }
-  ~ball() { arb_clear(v); }
-  ball(const ball&) = delete;
-  ball& operator=(const ball&) = delete;
-};
-
-void set_int(arb_t out, const big_int& z) {
-  fmpz_t f;
-  fmpz_init(f);
-  fmpz_set_mpz(f, z.backend().data());
-  arb_set_fmpz(out, f);
-  fmpz_clear(f);
-}
+using namespace arb_support;
 
 slong bits_of(const big_int& z) { return z == 0 ? 0 : slong(boost::multiprecision::msb(z < 0 ? big_int(-z) : z)) + 1; }
-
-// (p + q sqrt d)/r to `prec` bits: the norm p^2 - q^2 d is a non-zero integer, so the sum is never
-// smaller than 1/(|p| + |q| sqrt d) and twice their bit length more suffices against cancellation.
-void set_quadratic(arb_t out, const quadratic_number& v, slong prec) {
-  const slong work = prec + 2 * std::max(bits_of(v.p()), bits_of(v.q()) + bits_of(v.d()) / 2 + 1) + 16;
-  ball t, q;
-  set_int(out, v.p());
-  if (!v.is_rational()) {
-    set_int(t.v, v.d());
-    arb_sqrt(t.v, t.v, work);
-    set_int(q.v, v.q());
-    arb_mul(t.v, t.v, q.v, work);
-    arb_add(out, out, t.v, work);
-  }
-  set_int(t.v, v.r());
-  arb_div(out, out, t.v, prec);
-}
 
 // H(u) = x u + atan2(x sin u, cos u) (lattice-theorem.md Step A), |u| < pi/2.
 void H(arb_t out, const arb_t x, const arb_t u, slong prec) {
   ball s, c;
-  arb_sin_cos(s.v, c.v, u, prec);
-  arb_mul(s.v, s.v, x, prec);
-  arb_atan2(out, s.v, c.v, prec);
+  arb_sin_cos(s.get(), c.get(), u, prec);
+  arb_mul(s.get(), s.get(), x, prec);
+  arb_atan2(out, s.get(), c.get(), prec);
   arb_addmul(out, x, u, prec);
 }
 
@@ -83,32 +54,32 @@ decimal_bracket bracket_root(const root_fn& f, const ends_fn& ends, unsigned dig
   const slong target_bits = slong(3.33 * (digits + 12));
   for (slong prec = slong(3.33 * text_digits) + 64 + extra_bits; prec <= (slong(1) << 17); prec *= 2) {
     ball lo, hi, mid, v, w, scale;
-    ends(lo.v, hi.v, prec);
-    f(v.v, lo.v, prec);
-    if (!arb_is_negative(v.v)) continue;
-    f(v.v, hi.v, prec);
-    if (!arb_is_positive(v.v)) continue;
+    ends(lo.get(), hi.get(), prec);
+    f(v.get(), lo.get(), prec);
+    if (!arb_is_negative(v.get())) continue;
+    f(v.get(), hi.get(), prec);
+    if (!arb_is_positive(v.get())) continue;
     for (slong step = 0; step < 4 * prec; ++step) {
-      arb_sub(w.v, hi.v, lo.v, prec);
-      arb_mul_2exp_si(w.v, w.v, target_bits);
-      arb_abs(scale.v, lo.v);
-      arb_abs(mid.v, hi.v);
-      arb_max(scale.v, scale.v, mid.v, prec);
-      if (arb_lt(w.v, scale.v)) break;
-      arb_add(mid.v, lo.v, hi.v, 2 * prec);
-      arb_mul_2exp_si(mid.v, mid.v, -1);
-      f(v.v, mid.v, prec);
-      if (arb_is_negative(v.v)) arb_swap(lo.v, mid.v);
-      else if (arb_is_positive(v.v)) arb_swap(hi.v, mid.v);
+      arb_sub(w.get(), hi.get(), lo.get(), prec);
+      arb_mul_2exp_si(w.get(), w.get(), target_bits);
+      arb_abs(scale.get(), lo.get());
+      arb_abs(mid.get(), hi.get());
+      arb_max(scale.get(), scale.get(), mid.get(), prec);
+      if (arb_lt(w.get(), scale.get())) break;
+      arb_add(mid.get(), lo.get(), hi.get(), 2 * prec);
+      arb_mul_2exp_si(mid.get(), mid.get(), -1);
+      f(v.get(), mid.get(), prec);
+      if (arb_is_negative(v.get())) arb_swap(lo.get(), mid.get());
+      else if (arb_is_positive(v.get())) arb_swap(hi.get(), mid.get());
       else break;
     }
-    const decimal_bracket out{decimal_of(arb_midref(lo.v), text_digits, false, 2 * prec),
-                              decimal_of(arb_midref(hi.v), text_digits, true, 2 * prec)};
+    const decimal_bracket out{decimal_of(arb_midref(lo.get()), text_digits, false, 2 * prec),
+                              decimal_of(arb_midref(hi.get()), text_digits, true, 2 * prec)};
     ball dlo, dhi, flo, fhi;
-    if (arb_set_str(dlo.v, out.first.c_str(), prec) || arb_set_str(dhi.v, out.second.c_str(), prec)) continue;
-    f(flo.v, dlo.v, prec);
-    f(fhi.v, dhi.v, prec);
-    if (arb_is_negative(flo.v) && arb_is_positive(fhi.v) && arb_lt(dlo.v, dhi.v)) return out;
+    if (arb_set_str(dlo.get(), out.first.c_str(), prec) || arb_set_str(dhi.get(), out.second.c_str(), prec)) continue;
+    f(flo.get(), dlo.get(), prec);
+    f(fhi.get(), dhi.get(), prec);
+    if (arb_is_negative(flo.get()) && arb_is_positive(fhi.get()) && arb_lt(dlo.get(), dhi.get())) return out;
   }
   throw compute_error("coupling certificate: a root was not bracketed within 2^17 bits");
 }
@@ -117,61 +88,61 @@ decimal_bracket bracket_root(const root_fn& f, const ends_fn& ends, unsigned dig
 struct coupling_balls {
   ball x, x2, s;
   coupling_balls(const coupling_spec& c, const quadratic_number& xq, slong prec) {
-    set_quadratic(x.v, xq, prec);
-    arb_mul(x2.v, x.v, x.v, prec);
+    set_quadratic(x.get(), xq, prec);
+    arb_mul(x2.get(), x.get(), x.get(), prec);
     ball n2, d;
-    set_int(n2.v, c.P());
-    set_int(d.v, c.Q());
-    arb_div(n2.v, n2.v, d.v, prec);
-    arb_add_ui(s.v, n2.v, 4, prec);
-    arb_sqrt(s.v, s.v, prec);
+    set_int(n2.get(), c.P());
+    set_int(d.get(), c.Q());
+    arb_div(n2.get(), n2.get(), d.get(), prec);
+    arb_add_ui(s.get(), n2.get(), 4, prec);
+    arb_sqrt(s.get(), s.get(), prec);
   }
 };
 
 // G(u) = (1 - x^2) x^2 sin^4 u/(cos^2 u + x^2 sin^2 u) (lattice-theorem.md Step C).
 void G(arb_t out, const coupling_balls& cb, const arb_t u, slong prec) {
   ball s, c, e, t;
-  arb_sin_cos(s.v, c.v, u, prec);
-  arb_sqr(s.v, s.v, prec);
-  arb_sqr(c.v, c.v, prec);
-  arb_mul(e.v, cb.x2.v, s.v, prec);
-  arb_add(e.v, e.v, c.v, prec);
-  arb_sqr(t.v, s.v, prec);
-  arb_mul(t.v, t.v, cb.x2.v, prec);
-  arb_sub_ui(out, cb.x2.v, 1, prec);
+  arb_sin_cos(s.get(), c.get(), u, prec);
+  arb_sqr(s.get(), s.get(), prec);
+  arb_sqr(c.get(), c.get(), prec);
+  arb_mul(e.get(), cb.x2.get(), s.get(), prec);
+  arb_add(e.get(), e.get(), c.get(), prec);
+  arb_sqr(t.get(), s.get(), prec);
+  arb_mul(t.get(), t.get(), cb.x2.get(), prec);
+  arb_sub_ui(out, cb.x2.get(), 1, prec);
   arb_neg(out, out);
-  arb_mul(out, out, t.v, prec);
-  arb_div(out, out, e.v, prec);
+  arb_mul(out, out, t.get(), prec);
+  arb_div(out, out, e.get(), prec);
 }
 
 // R at alpha (qdot0 = 1): (1 - x^2) sin^2 alpha cos^2 beta + (cos alpha cos beta - x sin alpha sin beta)^2.
 void R_at(arb_t out, const coupling_balls& cb, const arb_t alpha, slong prec) {
   ball b, sa, ca, sb, cbeta, q, qd, t;
-  arb_mul(b.v, cb.x.v, alpha, prec);
-  arb_sin_cos(sa.v, ca.v, alpha, prec);
-  arb_sin_cos(sb.v, cbeta.v, b.v, prec);
-  arb_mul(q.v, sa.v, cbeta.v, prec);
-  arb_sqr(q.v, q.v, prec);
-  arb_sub_ui(t.v, cb.x2.v, 1, prec);
-  arb_neg(t.v, t.v);
-  arb_mul(q.v, q.v, t.v, prec);
-  arb_mul(qd.v, ca.v, cbeta.v, prec);
-  arb_mul(t.v, sa.v, sb.v, prec);
-  arb_mul(t.v, t.v, cb.x.v, prec);
-  arb_sub(qd.v, qd.v, t.v, prec);
-  arb_sqr(qd.v, qd.v, prec);
-  arb_add(out, q.v, qd.v, prec);
+  arb_mul(b.get(), cb.x.get(), alpha, prec);
+  arb_sin_cos(sa.get(), ca.get(), alpha, prec);
+  arb_sin_cos(sb.get(), cbeta.get(), b.get(), prec);
+  arb_mul(q.get(), sa.get(), cbeta.get(), prec);
+  arb_sqr(q.get(), q.get(), prec);
+  arb_sub_ui(t.get(), cb.x2.get(), 1, prec);
+  arb_neg(t.get(), t.get());
+  arb_mul(q.get(), q.get(), t.get(), prec);
+  arb_mul(qd.get(), ca.get(), cbeta.get(), prec);
+  arb_mul(t.get(), sa.get(), sb.get(), prec);
+  arb_mul(t.get(), t.get(), cb.x.get(), prec);
+  arb_sub(qd.get(), qd.get(), t.get(), prec);
+  arb_sqr(qd.get(), qd.get(), prec);
+  arb_add(out, q.get(), qd.get(), prec);
 }
 
 // [0, a point just below pi/2].
 void quarter_turn(arb_t lo, arb_t hi, slong prec) {
   arb_zero(lo);
   ball p;
-  arb_const_pi(p.v, prec);
-  arb_mul_2exp_si(p.v, p.v, -1);
+  arb_const_pi(p.get(), prec);
+  arb_mul_2exp_si(p.get(), p.get(), -1);
   arf_t top;
   arf_init(top);
-  arb_get_lbound_arf(top, p.v, prec);
+  arb_get_lbound_arf(top, p.get(), prec);
   arb_set_arf(hi, top);
   arf_clear(top);
 }
@@ -181,13 +152,13 @@ decimal_bracket root_bracket(const quadratic_number& x, const quadratic_number& 
   if (nu.sign() == 0) return {"0", "0"};
   auto f = [&](arb_t out, const arb_t u, slong prec) {
     ball xb, t;
-    set_quadratic(xb.v, x, prec);
-    set_quadratic(t.v, nu, prec);
+    set_quadratic(xb.get(), x, prec);
+    set_quadratic(t.get(), nu, prec);
     ball pi;
-    arb_const_pi(pi.v, prec);
-    arb_mul(t.v, t.v, pi.v, prec);
-    H(out, xb.v, u, prec);
-    arb_sub(out, out, t.v, prec);
+    arb_const_pi(pi.get(), prec);
+    arb_mul(t.get(), t.get(), pi.get(), prec);
+    H(out, xb.get(), u, prec);
+    arb_sub(out, out, t.get(), prec);
   };
   return bracket_root(f, quarter_turn, digits, 0);
 }
@@ -240,11 +211,11 @@ namespace {
 // The lower (upper) end of the decimal `text` as an exact point: <= (>=) the decimal.
 void decimal_point(arb_t out, const std::string& text, bool upper, slong prec) {
   ball b;
-  arb_set_str(b.v, text.c_str(), prec);
+  arb_set_str(b.get(), text.c_str(), prec);
   arf_t e;
   arf_init(e);
-  if (upper) arb_get_ubound_arf(e, b.v, prec);
-  else arb_get_lbound_arf(e, b.v, prec);
+  if (upper) arb_get_ubound_arf(e, b.get(), prec);
+  else arb_get_lbound_arf(e, b.get(), prec);
   arb_set_arf(out, e);
   arf_clear(e);
 }
@@ -256,29 +227,29 @@ void level_brackets(const coupling_spec& c, const quadratic_number& x, const big
     coupling_balls cb(c, x, prec);
     G(o, cb, u, prec);
     ball level;
-    set_int(level.v, big_int(2 * boost::multiprecision::numerator(E)));
+    set_int(level.get(), big_int(2 * boost::multiprecision::numerator(E)));
     ball d;
-    set_int(d.v, big_int(boost::multiprecision::denominator(E)));
-    arb_div(level.v, level.v, d.v, prec);
-    arb_sub(o, o, level.v, prec);
+    set_int(d.get(), big_int(boost::multiprecision::denominator(E)));
+    arb_div(level.get(), level.get(), d.get(), prec);
+    arb_sub(o, o, level.get(), prec);
   };
   out.level_root = bracket_root(f, quarter_turn, digits, 0);
   const slong prec = slong(3.33 * (digits + 20)) + 64;
   ball xb, pi, u, h;
-  set_quadratic(xb.v, x, prec);
-  arb_const_pi(pi.v, prec);
+  set_quadratic(xb.get(), x, prec);
+  arb_const_pi(pi.get(), prec);
   decimal_bracket d;
   arf_t e;
   arf_init(e);
-  arb_set_str(u.v, out.level_root->first.c_str(), prec);
-  H(h.v, xb.v, u.v, prec);
-  arb_div(h.v, h.v, pi.v, prec);
-  arb_get_lbound_arf(e, h.v, prec);
+  arb_set_str(u.get(), out.level_root->first.c_str(), prec);
+  H(h.get(), xb.get(), u.get(), prec);
+  arb_div(h.get(), h.get(), pi.get(), prec);
+  arb_get_lbound_arf(e, h.get(), prec);
   d.first = decimal_of(e, digits + 15, false, prec);
-  arb_set_str(u.v, out.level_root->second.c_str(), prec);
-  H(h.v, xb.v, u.v, prec);
-  arb_div(h.v, h.v, pi.v, prec);
-  arb_get_ubound_arf(e, h.v, prec);
+  arb_set_str(u.get(), out.level_root->second.c_str(), prec);
+  H(h.get(), xb.get(), u.get(), prec);
+  arb_div(h.get(), h.get(), pi.get(), prec);
+  arb_get_ubound_arf(e, h.get(), prec);
   d.second = decimal_of(e, digits + 15, true, prec);
   arf_clear(e);
   out.delta = d;
@@ -295,12 +266,12 @@ decimal_bracket crossing_bracket(const coupling_spec& c, const quadratic_number&
     if (mu + x / quadratic_number(2) > quadratic_number(0)) {  // mu > -x pi/2 (exact): u_g >= -pi/2
       auto fg = [&](arb_t o, const arb_t u, slong prec) {
         ball xb, t, pi;
-        set_quadratic(xb.v, x, prec);
-        set_quadratic(t.v, quadratic_number(1, 2) - mu, prec);
-        arb_const_pi(pi.v, prec);
-        arb_mul(t.v, t.v, pi.v, prec);
-        H(o, xb.v, u, prec);
-        arb_sub(o, o, t.v, prec);
+        set_quadratic(xb.get(), x, prec);
+        set_quadratic(t.get(), quadratic_number(1, 2) - mu, prec);
+        arb_const_pi(pi.get(), prec);
+        arb_mul(t.get(), t.get(), pi.get(), prec);
+        H(o, xb.get(), u, prec);
+        arb_sub(o, o, t.get(), prec);
       };
       start_text = "-" + bracket_root(fg, quarter_turn, digits, 0).first;  // -v_lo >= u_g
     }
@@ -310,12 +281,12 @@ decimal_bracket crossing_bracket(const coupling_spec& c, const quadratic_number&
     else if (!start_text.empty()) decimal_point(lo, start_text, true, prec);
     else {
       ball p;
-      arb_const_pi(p.v, prec);
-      arb_mul_2exp_si(p.v, p.v, -1);
-      arb_neg(p.v, p.v);
+      arb_const_pi(p.get(), prec);
+      arb_mul_2exp_si(p.get(), p.get(), -1);
+      arb_neg(p.get(), p.get());
       arf_t e;
       arf_init(e);
-      arb_get_ubound_arf(e, p.v, prec);
+      arb_get_ubound_arf(e, p.get(), prec);
       arb_set_arf(lo, e);
       arf_clear(e);
     }
@@ -328,15 +299,15 @@ decimal_bracket crossing_bracket(const coupling_spec& c, const quadratic_number&
   auto f = [&](arb_t o, const arb_t u, slong prec) {
     coupling_balls cb(c, x, prec + kbits);
     ball alpha, pi, level, d;
-    arb_const_pi(pi.v, prec + kbits);
-    set_int(alpha.v, lobe.k);
-    arb_mul(alpha.v, alpha.v, pi.v, prec + kbits);
-    arb_add(alpha.v, alpha.v, u, prec + kbits);
-    R_at(o, cb, alpha.v, prec + kbits);
-    set_int(level.v, big_int(2 * boost::multiprecision::numerator(E)));
-    set_int(d.v, big_int(boost::multiprecision::denominator(E)));
-    arb_div(level.v, level.v, d.v, prec);
-    arb_sub(o, level.v, o, prec);  // 2E - R: negative before the crossing, positive after
+    arb_const_pi(pi.get(), prec + kbits);
+    set_int(alpha.get(), lobe.k);
+    arb_mul(alpha.get(), alpha.get(), pi.get(), prec + kbits);
+    arb_add(alpha.get(), alpha.get(), u, prec + kbits);
+    R_at(o, cb, alpha.get(), prec + kbits);
+    set_int(level.get(), big_int(2 * boost::multiprecision::numerator(E)));
+    set_int(d.get(), big_int(boost::multiprecision::denominator(E)));
+    arb_div(level.get(), level.get(), d.get(), prec);
+    arb_sub(o, level.get(), o, prec);  // 2E - R: negative before the crossing, positive after
   };
   return bracket_root(f, ends, digits, kbits);
 }
