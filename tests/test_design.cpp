@@ -344,6 +344,9 @@ TEST_CASE("cli design: proxy choice that violates the exact time is flagged", "[
   CHECK(j["chosen_t_first_exceeds_tmax"] == true);
   // exact: no delta = 6 pair reaches zero by t = 20
   check_rejected("design absorb --tmax 20 --beat 10 --delta 6", 3, "no resonant pair");
+  // --delta 0 and negative deltas are refused, not ignored.
+  check_rejected("design absorb --tmax 20 --delta 0", 2, "--delta must be >= 1");
+  check_rejected("design absorb --tmax 20 --delta -3", 2, "--delta must be >= 1");
 }
 
 TEST_CASE("cli design: infeasible exits 3, bad input exits 2, nothing on stdout", "[design][cli]") {

@@ -2,6 +2,7 @@
 //                                [--delta D] [--proxy] [--candidates K] [--digits D] [--json]
 // The paper's design problems (eqs. design-absorb, design-contain) over resonant pairs up to
 // order M: see include/gyrores/design/design.hpp. No feasible pair: one line on stderr, exit 3.
+#include <limits>
 #include <sstream>
 
 #include <gyrores/design/design.hpp>
@@ -17,9 +18,12 @@
 namespace gyrores::cli {
 namespace {
 
+// --delta not given (any value the user can give is checked, 0 included).
+constexpr std::int64_t delta_unset = std::numeric_limits<std::int64_t>::min();
+
 struct design_args {
   std::string problem, tmax, beat, tolerance, level, horizon;
-  std::int64_t max_order = 200, exclude_low = 0, delta = 0, candidates = 5;
+  std::int64_t max_order = 200, exclude_low = 0, delta = delta_unset, candidates = 5;
   int digits = 10;
   bool proxy = false, json = false;
 };
@@ -51,10 +55,10 @@ design_options design_options_of(const design_args& a) {
   o.tmax = parse_positive_flag(a.tmax, "--tmax");
   if (!a.beat.empty()) o.filter.beat_min = parse_positive_flag(a.beat, "--beat");
   if (a.exclude_low < 0) throw usage_error("--exclude-low must be >= 0");
-  if (a.delta < 0) throw usage_error("--delta must be >= 1");
+  if (a.delta != delta_unset && a.delta < 1) throw usage_error("--delta must be >= 1, got " + std::to_string(a.delta));
   check_flag_range(a.candidates, 0, 1000, "--candidates");
   o.filter.exclude_low = a.exclude_low;
-  if (a.delta > 0) o.filter.delta = a.delta;
+  if (a.delta != delta_unset) o.filter.delta = a.delta;
   o.time = a.proxy ? design_time::proxy : design_time::first_hit;
   o.max_order = a.max_order;
   o.candidates = std::size_t(a.candidates);
