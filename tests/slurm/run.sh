@@ -6,7 +6,7 @@
 #   tests/slurm/run.sh GYRORES SOURCE_DIR
 #
 # 0. A trivial job must run (else skip: this environment cannot launch jobs).
-# 1. Shard 2 of 4 alone with --max-pairs 1000: the task stops with a resume state (exit 3), and
+# 1. Shard 2 of 4 alone with --max-pairs 1000: the task stops with a resume state (exit 4), and
 #    Slurm cancels the merge job (afterok never satisfied).
 # 2. The plain submission of all 4 shards (--max-order 300): shard 2 resumes, the others run, the
 #    merge job writes summary.json, which must equal a single local run of `gyrores sweep`.
