@@ -156,10 +156,16 @@ void unit_floor(arb_t out, const arb_t u) {
 // monotone elsewhere, only this sign pattern holds: the callers prove it), enclosed in a ball:
 // safeguarded Newton on exact midpoints, then the ends of a tiny bracket [a, b] are decided:
 // g(a) < 0 < g(b) proves a < root < b. False when this precision cannot decide (raise it).
+// A bracket that contradicts that pattern (ends in the wrong order, or g certainly of the wrong
+// sign at an end) is a bug, not a lack of precision: compute_error at once, not 2^20 bits later.
 bool prove_root(const ball_fn& g, const ball_fn& dg, const arb_t lo_in, const arb_t hi_in, slong prec, arb_t out) {
   ball lo, hi, u, gu, du, step, next, width;
   arb_get_mid_arb(lo, lo_in);
   arb_get_mid_arb(hi, hi_in);
+  g(gu, lo);
+  g(du, hi);
+  if (arb_gt(lo, hi) || arb_is_positive(gu) || arb_is_negative(du))
+    throw compute_error("horizon: a root's bracket contradicts the sign pattern the theorem proves (a bug)");
   arb_add(u, lo, hi, prec);
   arb_mul_2exp_si(u, u, -1);
   arb_get_mid_arb(u, u);
