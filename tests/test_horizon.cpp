@@ -111,6 +111,25 @@ TEST_CASE("horizon: a plain loop over every lobe agrees up to T = 10^6", "[horiz
   }
 }
 
+TEST_CASE("horizon: tiny couplings answer (x below the working precision's spacing)", "[horizon_precision]") {
+  // x ~ n/2: H(pi/2) = (1 + x) pi/2 exceeds pi/2 by less than the first precision can see, so
+  // the first brackets are refused and the precision rises (a refusal must not be an error).
+  // (Not tagged [horizon]: the mutants, whose brackets fail at every precision, would spend
+  // minutes here on G's steep root before giving up.)
+  for (const char* n : {"1e-40", "1e-50", "3e-200"}) {
+    for (const char* T : {"10", "100", "1e6"}) {
+      INFO("n = " << n << ", T = " << T);
+      const horizon_minimum_report r =
+          prove_horizon_minimum(coupling_spec::from_n(parse_rational(n, "n")), horizon_time(parse_rational(T, "T")), 12);
+      // For n T << 1, R = q^2 + q'^2 = 1 - x^2 sin^2(t) + O(n T): H_q stays within 1e-30 of 1/2.
+      const double h = std::stod(r.h_min.value);
+      CHECK(h <= 0.5);
+      CHECK(h > 0.5 - 1e-12);
+    }
+    CHECK_FALSE(prove_first_below(coupling_spec::from_n(parse_rational(n, "n")), big_rational(1, 4), 12).never);
+  }
+}
+
 TEST_CASE("horizon: T up to 10^100 answers, and the lobe is exact", "[horizon]") {
   const coupling_spec c = coupling_spec::from_n(big_rational(2));
   const big_rational T(boost::multiprecision::pow(big_int(10), 100));

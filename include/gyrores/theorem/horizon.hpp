@@ -61,7 +61,8 @@ struct horizon_minimum_report {
 };
 
 // Throws usage_error for T < 0 or digits outside [1, report_digits_max]; compute_error when the
-// end point ties a lobe value within 2^20 bits; interrupted when `stop` is set.
+// end point ties a lobe value within 64 times the starting precision (at least 2^16 bits);
+// interrupted when `stop` is set.
 horizon_minimum_report prove_horizon_minimum(const coupling_spec& c, const horizon_time& horizon, unsigned digits,
                                              stop_token stop = {});
 

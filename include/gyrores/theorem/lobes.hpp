@@ -11,6 +11,8 @@
 // No theta formed in floating point is ever compared or reduced mod 2 pi.
 #pragma once
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <vector>
 
 #include <gyrores/core/integer.hpp>
@@ -52,11 +54,29 @@ template <class L> lobe_frame<L> lobe_frame_reduced(const lobe_frame<L>& f, cons
 // (its minimiser u = -u* lies just below 2 pi).
 template <class L> L lobe_order_key(const lobe_frame<L>& f, const L& a) { return f.k == 0 && f.m < 0 ? a : f.k; }
 
+// At most four lobe frames, in place (no allocation: the sweeps form one per pair).
+template <class L> class lobe_list {
+ public:
+  void push_back(const lobe_frame<L>& f) { items_[count_++] = f; }
+  std::size_t size() const { return count_; }
+  const lobe_frame<L>& operator[](std::size_t i) const { return items_[i]; }
+  const lobe_frame<L>& front() const { return items_[0]; }
+  lobe_frame<L>* begin() { return items_.data(); }
+  lobe_frame<L>* end() { return items_.data() + count_; }
+  const lobe_frame<L>* begin() const { return items_.data(); }
+  const lobe_frame<L>* end() const { return items_.data() + count_; }
+  std::vector<lobe_frame<L>> to_vector() const { return {begin(), end()}; }
+
+ private:
+  std::array<lobe_frame<L>, 4> items_{};
+  std::size_t count_ = 0;
+};
+
 // The lobes of the global minimisers over one period, k in [0, a), in increasing theta (item 4
 // of the theorem). Degenerate pairs (m_min = 0): the two lobes of the zeros pi/2 and 3 pi/2
 // (u = 0, m = 0).
-template <class L> std::vector<lobe_frame<L>> minimiser_lobes(const L& a, const L& b) {
-  std::vector<lobe_frame<L>> out;
+template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
+  lobe_list<L> out;
   if (theorem_m_min(a) == 0) {
     out.push_back(lobe_frame_of(a, b, L(a / 4), L((b - 2) / 4)));
     out.push_back(lobe_frame_of(a, b, L(3 * (a / 4)), L((3 * b - 2) / 4)));

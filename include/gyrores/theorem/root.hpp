@@ -22,6 +22,7 @@
 //     sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u, increasing in t:
 //     r_res = v sqrt(G(u*)) over T (theorem_radius).
 #pragma once
+#include <gyrores/core/double_double.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/integer.hpp>
 #include <gyrores/model/pair.hpp>
@@ -34,7 +35,25 @@ namespace gyrores {
 // if it does not converge); accurate to about an ulp. compute_error if neither converges.
 double theorem_root_double(double x, double mu);
 
-// The root of u + tan u = s in (-pi/2, pi/2) (TOMS 748 on u - arctan(s - u)), to about 4 ulp.
+// u* = H^{-1}(mu) as a double-double, with sin u* and cos u*: Newton in double from the upper
+// end mu/(2x) (H is convex), then Newton steps in double-double on the equivalent equation
+//   F(u) = x sin u cos w - cos u sin w = 0,   w = mu - x u,
+// (for 0 < u < pi/2 and 0 < mu < pi/2, |w| < pi/2 and F = cos u cos w (x tan u - tan w) has the
+// sign of H(u) - mu), F' = 2x cos u cos w + (1 + x^2) sin u sin w, which is x (cos w/cos u +
+// cos u/cos w) >= 2x at the root. Both terms of F are about x sin u there (cos u > 0.19: x tan u* =
+// tan w <= tan(pi/a) for mu <= pi/a), and each is formed from the sines and cosines of
+// core/double_double.hpp to a relative error below 2^-61 (w itself to 2^-100: w >= mu/2 near
+// the root), so a step's error is below 2^-60 x sin u/(2x) < 2^-61 u. Steps repeat until one is
+// below 2^-35 u (Newton's quadratic term is then below 2^-68 u). The result is within 2^-60 u*
+// of it, and sin u*, cos u* within 2^-60 of theirs. compute_error after 4 steps (u0 far off).
+// Preconditions (not checked): x = b/a and mu = pi m/(2a) of a pair, m = 1 or 2 (m_min).
+struct root_double_double {
+  double_double u, sin_u, cos_u;
+};
+root_double_double theorem_root_refined(const double_double& x, const double_double& mu);
+
+// The root of u + tan u = s in (-pi/2, pi/2): Newton on u - arctan(s - u), convex below s, from
+// an upper end (TOMS 748 if it does not settle), to a few ulp.
 double paper_root_double(double s);
 
 // ---- enclosures at an explicit precision ----

@@ -133,7 +133,7 @@ sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, const sweep_p
   sweep_proof pr;
   pr.quarter_R_scaled = sweep_quarter_R_scaled(a, b);
   pr.m_min = theorem_m_min(a);
-  pr.lobes = minimiser_lobes(int128(a), int128(b));
+  pr.lobes = minimiser_lobes(int128(a), int128(b)).to_vector();
   pr.has_asy = opt.asy && 2 * b < a;
   const resonant_pair<big_int> pb(big_int(p.tau()), big_int(p.sigma()), known_coprime);
   // One precision for both (at sweep orders the extra bits of the asy error cost no more limbs).

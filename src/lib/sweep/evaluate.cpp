@@ -63,10 +63,16 @@ double asy_difference(double x, double s) {
   double ua = paper_root_double(s);
   const double tan_a = std::tan(ua);
   ua -= (ua + tan_a - s) / (2 + tan_a * tan_a);
+  // The series' coefficients 1/(2n + 3), once; y2 < 0.2 needs fewer than 30 terms.
+  static const std::array<double, 64> inverse_odd = [] {
+    std::array<double, 64> c{};
+    for (std::size_t n = 0; n < c.size(); ++n) c[n] = 1.0 / double(2 * n + 3);
+    return c;
+  }();
   const double t = s - ua, y2 = (x * t) * (x * t);
   double sum = 0, power = 1;
-  for (int n = 0; n < 200; ++n) {
-    const double term = power / double(2 * n + 3);
+  for (std::size_t n = 0; n < inverse_odd.size(); ++n) {
+    const double term = power * inverse_odd[n];
     sum += n % 2 ? -term : term;
     if (term <= 0x1p-56 * sum) break;
     power *= y2;

@@ -18,7 +18,11 @@ namespace {
 
 using namespace arb_support;
 
-constexpr slong max_bits = slong(1) << 20;
+// The precision a proof may reach before it gives up (compute_error): 64 times its start, and
+// at least 2^16 bits. Only a tie (the end point R(T) equal to a lobe's minimum, a level equal
+// to one) needs more, and a tie is never decided.
+slong precision_cap(slong prec0) { return std::max<slong>(prec0 << 6, slong(1) << 16); }
+std::string bits_text(slong prec0) { return std::to_string(precision_cap(prec0)) + " bits"; }
 
 // The exact rational value of an arf (man 2^exp).
 big_rational arf_rational(const arf_t v) {
@@ -156,16 +160,17 @@ void unit_floor(arb_t out, const arb_t u) {
 // monotone elsewhere, only this sign pattern holds: the callers prove it), enclosed in a ball:
 // safeguarded Newton on exact midpoints, then the ends of a tiny bracket [a, b] are decided:
 // g(a) < 0 < g(b) proves a < root < b. False when this precision cannot decide (raise it).
-// A bracket that contradicts that pattern (ends in the wrong order, or g certainly of the wrong
-// sign at an end) is a bug, not a lack of precision: compute_error at once, not 2^20 bits later.
+// A bracket whose ends (midpoints at this precision) are in the wrong order or where g has the
+// wrong sign is refused at once (false, and the caller raises the precision): it happens when
+// the ends are closer than the precision can tell, or where g is steep (for a tiny x, H rises
+// from about 0 to pi/2 within x of pi/2).
 bool prove_root(const ball_fn& g, const ball_fn& dg, const arb_t lo_in, const arb_t hi_in, slong prec, arb_t out) {
   ball lo, hi, u, gu, du, step, next, width;
   arb_get_mid_arb(lo, lo_in);
   arb_get_mid_arb(hi, hi_in);
   g(gu, lo);
   g(du, hi);
-  if (arb_gt(lo, hi) || arb_is_positive(gu) || arb_is_negative(du))
-    throw compute_error("horizon: a root's bracket contradicts the sign pattern the theorem proves (a bug)");
+  if (arb_gt(lo, hi) || arb_is_positive(gu) || arb_is_negative(du)) return false;
   arb_add(u, lo, hi, prec);
   arb_mul_2exp_si(u, u, -1);
   arb_get_mid_arb(u, u);
@@ -315,12 +320,18 @@ horizon_lobe lobe_of(const quadratic_number& x, const big_int& k) {
   return l;
 }
 
+// log2 |v| rounded up, for v != 0 (0 for v = 0).
+slong magnitude_bits(const big_rational& v) {
+  const auto bits = [](big_int w) { return w == 0 ? slong(0) : slong(boost::multiprecision::msb(w < 0 ? big_int(-w) : w)) + 1; };
+  return v == 0 ? 0 : bits(boost::multiprecision::numerator(v)) - bits(boost::multiprecision::denominator(v)) + 1;
+}
+
 // The starting precision: the digits asked, plus twice the bits of the integer part of `scale`
-// (the phases reach about scale and must keep the digits after their integer part).
-slong start_bits(unsigned digits, const big_rational& scale) {
-  const auto bits = [](big_int v) { return v == 0 ? slong(0) : slong(boost::multiprecision::msb(v < 0 ? big_int(-v) : v)) + 1; };
-  const slong mag = std::max<slong>(0, bits(boost::multiprecision::numerator(scale)) - bits(boost::multiprecision::denominator(scale)) + 1);
-  return slong(digits * 3.33) + 64 + 2 * mag;
+// (the phases reach about scale and must keep the digits after their integer part), plus
+// log2(1/x) for a small coupling (H rises steeply within x of pi/2, and x pi/2 must show).
+slong start_bits(unsigned digits, const big_rational& scale, const coupling_spec& spec) {
+  return slong(digits * 3.33) + 64 + 2 * std::max<slong>(0, magnitude_bits(scale)) +
+         std::max<slong>(0, -magnitude_bits(spec.n2) / 2);
 }
 
 // alpha_T = s T/2 as a ball.
@@ -343,7 +354,8 @@ big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const 
     const quadratic_number s = int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
     return (s * quadratic_number(T.value / 2) + quadratic_number(1, 2)).floor();
   }
-  for (; prec <= max_bits; prec *= 2) {
+  const slong prec0 = prec;
+  for (; prec <= precision_cap(prec0); prec *= 2) {
     stop.throw_if_requested();
     coupling_balls cb(spec, x, prec);
     ball a, f, half;
@@ -355,7 +367,7 @@ big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const 
     fmpz_holder z;
     if (arb_get_unique_fmpz(z, f)) return z.value();
   }
-  throw compute_error("horizon: the lobe holding t = T was not decided within 2^20 bits");
+  throw compute_error("horizon: the lobe holding t = T was not decided within " + bits_text(prec0));
 }
 
 }  // namespace
@@ -392,13 +404,13 @@ horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const ho
   r.digits = digits;
   r.horizon = T;
   r.x = coupling_rotation_number(spec);
-  const slong prec0 = start_bits(digits, T.times_pi ? big_rational(T.value * 4) : T.value);
+  const slong prec0 = start_bits(digits, T.times_pi ? big_rational(T.value * 4) : T.value, spec);
   r.cut_lobe = cut_lobe_of(spec, r.x, T, prec0, stop);
   // The best full lobe (exact), and the cut lobe.
   std::optional<horizon_lobe> full;
   if (r.cut_lobe >= 1) full = lobe_of(r.x, min_distance_to_half(r.x, big_int(r.cut_lobe - 1)).k);
   const horizon_lobe cut = lobe_of(r.x, r.cut_lobe);
-  for (slong prec = prec0; prec <= max_bits; prec *= 2) {
+  for (slong prec = prec0; prec <= precision_cap(prec0); prec *= 2) {
     stop.throw_if_requested();
     coupling_balls cb(spec, r.x, prec);
     ball alpha_T;
@@ -453,7 +465,7 @@ horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const ho
     return r;
   }
   throw compute_error("horizon: the minimum over [0, " + T.str() +
-                      "] was not decided within 2^20 bits (the end point ties a lobe's minimum)");
+                      "] was not decided within " + bits_text(prec0) + " (the end point ties a lobe's minimum)");
 }
 
 namespace {
@@ -494,7 +506,8 @@ first_below_report prove_first_below(const coupling_spec& spec, const big_ration
       return r;
     }
     r.lobe = lobe_of(x, *k);
-    for (slong prec = start_bits(digits, big_rational(*k)); prec <= max_bits; prec *= 2) {
+    const slong zero_prec0 = start_bits(digits, big_rational(*k), spec);
+    for (slong prec = zero_prec0; prec <= precision_cap(zero_prec0); prec *= 2) {
       coupling_balls cb(spec, x, prec);
       lobe_point p;
       if (prove_lobe_point(cb, *r.lobe, p) && round_ball(p.t, digits, prec, r.t_below)) {
@@ -502,10 +515,10 @@ first_below_report prove_first_below(const coupling_spec& spec, const big_ration
         return r;
       }
     }
-    throw compute_error("first time below: not decided within 2^20 bits");
+    throw compute_error("first time below: not decided within " + bits_text(zero_prec0));
   }
-  const slong prec0 = start_bits(digits, 1);
-  for (slong prec = prec0; prec <= max_bits; prec *= 2) {
+  const slong prec0 = start_bits(digits, 1, spec);
+  for (slong prec = prec0; prec <= precision_cap(prec0); prec *= 2) {
     stop.throw_if_requested();
     coupling_balls cb(spec, x, prec);
     ball level;
@@ -580,7 +593,7 @@ first_below_report prove_first_below(const coupling_spec& spec, const big_ration
     r.reason = "lobe " + k_hi->str() + " is the first whose minimum reaches E; H_q crosses E once on its descending branch";
     return r;
   }
-  throw compute_error("first time below: not decided within 2^20 bits (E equals a lobe's minimum?)");
+  throw compute_error("first time below: not decided within " + bits_text(prec0) + " (E equals a lobe's minimum?)");
 }
 
 }  // namespace gyrores

@@ -37,11 +37,63 @@ double theorem_root_double(double x, double mu) {
       .root;
 }
 
+namespace {
+
+// The double start of theorem_root_refined: Newton on H from the upper end mu/(2x) (H is
+// increasing and convex on [0, pi/2): H'' = 2x (1 - x^2) sin u cos u/E^2 >= 0, so the iterates
+// decrease monotonically onto u*; mu/(1 + x) <= u* <= mu/(2x), the chord and the tangent at 0),
+// stopped once a step is below 2^-26 u: the step just made leaves an error of about 2^-52 u,
+// which the double-double steps then remove. theorem_root_double if that takes too long.
+double theorem_root_start(double x, double mu) {
+  const double lo = mu / (1 + x);
+  double u = mu / (2 * x);
+  for (int i = 0; i < 60; ++i) {
+    const double t = std::tan(u), xt = x * t;
+    const double du = (x * u + std::atan(xt) - mu) / (x + x * (1 + t * t) / (1 + xt * xt));
+    if (!(du > 0)) return u;  // at (or a rounding below) the root
+    u = std::fmax(u - du, lo);
+    if (du <= 0x1p-26 * u) return u;
+  }
+  return theorem_root_double(x, mu);
+}
+
+}  // namespace
+
+GYRORES_DD_FAST root_double_double theorem_root_refined(const double_double& x, const double_double& mu) {
+  const double x2 = x.hi * x.hi;
+  double_double u(theorem_root_start(x.hi, mu.hi));
+  for (int step = 0; step < 4; ++step) {
+    double_double su, cu, sw, cw;
+    dd_sin_cos(u, su, cu);
+    dd_sin_cos(dd::sub(mu, dd::mul(x, u)), sw, cw);
+    const double_double F = dd::sub(dd::mul(dd::mul(x, su), cw), dd::mul(cu, sw));
+    const double dF = 2 * x.hi * cu.hi * cw.hi + (1 + x2) * su.hi * sw.hi;
+    const double delta = -F.hi / dF;
+    if (std::fabs(delta) <= 0x1p-35 * u.hi) {
+      // sin and cos at u + delta: the first-order terms (the second are below 2^-70 of them).
+      return {dd::add(u, delta), dd::add(su, delta * cu.hi), dd::add(cu, -delta * su.hi)};
+    }
+    u = dd::add(u, delta);
+  }
+  throw compute_error("lattice theorem: the double-double Newton steps for x u + arctan(x tan u) = mu did not settle");
+}
+
 double paper_root_double(double s) {
   if (s == 0) return 0;
+  if (s < 0) return -paper_root_double(-s);  // the equation is odd
   constexpr double h = std::numbers::pi / 2;
-  // phi(u) = u - arctan(s - u): phi(-pi/2) < 0 < phi(pi/2) for every s, 1 < phi' <= 2.
+  // phi(u) = u - arctan(s - u) is increasing (1 < phi' <= 2) and convex below s (phi'' =
+  // 2 (s - u)/(1 + (s - u)^2)^2), and the root lies in (0, min(s/2, pi/2)] (phi(s/2) >= 0,
+  // phi(pi/2) > 0): Newton from that upper end decreases monotonically onto it.
   auto phi = [&](double u) { return u - std::atan(s - u); };
+  double u = std::min(s / 2, h);
+  for (int i = 0; i < 60; ++i) {
+    const double d = s - u, du = phi(u) / (1 + 1 / (1 + d * d));
+    if (!(du > 0)) return u;  // at (or a rounding below) the root
+    u -= du;
+    if (du <= 0x1p-30 * u) return u;  // the step just made leaves about an ulp
+  }
+  // TOMS 748 on the same bracket if Newton did not settle (it does for every s tested).
   const double floor = std::min(1.0, std::fabs(s) / 8);
   return root_bracketed(phi, -h, h, phi(-h), phi(h), root_tolerance<double>{4 * 0x1p-52, floor},
                         "paper: the root of u + tan u = s")

@@ -1,0 +1,131 @@
+// Double-double numbers: an unevaluated sum hi + lo of two doubles, |lo| <= ulp(hi)/2, about
+// 106 bits. The double path of the theorem (theorem/minimum.hpp) forms its last Newton step and
+// its outputs in them, so that a double it returns is within one ulp of the exact value (the
+// rounding of a double-double is hi, and everything before it is accurate to about 2^-100).
+//
+// The building blocks are the classical error-free transformations: two_sum (Knuth) and
+// two_prod (by a fused multiply-add), each exact for doubles away from overflow and underflow. The compound operations are those of
+// Joldes, Muller and Popescu, "Tight and rigorous error bounds for basic building blocks of
+// double-word arithmetic" (ACM TOMS 44, 2017), with u = 2^-53: add (their DWPlusDW, relative
+// error <= 3u^2), mul (DWTimesDW1, <= 7u^2), mul by a double (DWTimesFP1, <= 2u^2), div (DWDivDW2,
+// <= 15u^2 + 56u^3), and sqrt by one Newton step from the double square root (relative error
+// below 4u^2). Nothing here rounds to a chosen mode or reads global state; inputs are finite.
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include <gyrores/core/integer.hpp>
+
+// The hot functions built on these operations are compiled twice on x86-64, for processors
+// with FMA and without, and the dynamic loader picks one (GCC's and Clang's target_clones; the
+// attribute goes on the definition only, so that callers in other files call the resolved symbol).
+// The operations are always inlined, so that each clone gets its own code.
+#if defined(__x86_64__) && defined(__linux__)
+#define GYRORES_DD_FAST __attribute__((target_clones("fma", "default")))
+#else
+#define GYRORES_DD_FAST
+#endif
+#if defined(__GNUC__)
+#define GYRORES_DD_INLINE inline __attribute__((always_inline))
+#else
+#define GYRORES_DD_INLINE inline
+#endif
+
+namespace gyrores {
+
+struct double_double {
+  double hi = 0, lo = 0;
+  constexpr double_double() = default;
+  constexpr double_double(double h) : hi(h), lo(0) {}
+  constexpr double_double(double h, double l) : hi(h), lo(l) {}
+};
+
+namespace dd {
+
+// s + e = a + b exactly (|a| >= |b| not needed).
+GYRORES_DD_INLINE double_double two_sum(double a, double b) {
+  const double s = a + b, bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+// The same when |a| >= |b| (or a = 0).
+GYRORES_DD_INLINE double_double fast_two_sum(double a, double b) {
+  const double s = a + b;
+  return {s, b - (s - a)};
+}
+// p + e = a b exactly (no underflow of the low part): e = fma(a, b, -p). In a function compiled
+// for FMA (GYRORES_DD_FAST below) it is one instruction; elsewhere a call to the C library's
+// fma, which is exact too.
+GYRORES_DD_INLINE double_double two_prod(double a, double b) {
+  const double p = a * b;
+  return {p, __builtin_fma(a, b, -p)};
+}
+
+GYRORES_DD_INLINE double_double add(const double_double& x, const double_double& y) {
+  const double_double s = two_sum(x.hi, y.hi), t = two_sum(x.lo, y.lo);
+  const double_double v = fast_two_sum(s.hi, s.lo + t.hi);
+  return fast_two_sum(v.hi, t.lo + v.lo);
+}
+GYRORES_DD_INLINE double_double add(const double_double& x, double y) {
+  const double_double s = two_sum(x.hi, y);
+  return fast_two_sum(s.hi, x.lo + s.lo);
+}
+GYRORES_DD_INLINE double_double neg(const double_double& x) { return {-x.hi, -x.lo}; }
+GYRORES_DD_INLINE double_double sub(const double_double& x, const double_double& y) { return add(x, neg(y)); }
+
+GYRORES_DD_INLINE double_double mul(const double_double& x, const double_double& y) {
+  const double_double c = two_prod(x.hi, y.hi);
+  const double t = x.hi * y.lo + x.lo * y.hi;
+  return fast_two_sum(c.hi, c.lo + t);
+}
+GYRORES_DD_INLINE double_double mul(const double_double& x, double y) {
+  const double_double c = two_prod(x.hi, y);
+  return fast_two_sum(c.hi, c.lo + x.lo * y);
+}
+// x times a power of two f (exact, no overflow or underflow).
+GYRORES_DD_INLINE double_double scale(const double_double& x, double f) { return {x.hi * f, x.lo * f}; }
+
+GYRORES_DD_INLINE double_double div(const double_double& x, const double_double& y) {
+  const double q1 = x.hi / y.hi;
+  const double_double r = sub(x, mul(y, q1));
+  const double q2 = r.hi / y.hi;
+  const double_double s = sub(r, mul(y, q2));
+  const double q3 = s.hi / y.hi;
+  return add(fast_two_sum(q1, q2), q3);
+}
+GYRORES_DD_INLINE double_double div(const double_double& x, double y) { return div(x, double_double(y)); }
+// n/d for doubles (d != 0): the remainder n - q d is exact, so the quotient is good to 2^-104.
+GYRORES_DD_INLINE double_double quotient(double n, double d) {
+  const double q = n / d;
+  const double_double qd = two_prod(q, d);
+  return fast_two_sum(q, ((n - qd.hi) - qd.lo) / d);
+}
+
+// sqrt(x), x >= 0.
+GYRORES_DD_INLINE double_double sqrt(const double_double& x) {
+  if (x.hi <= 0) return {0, 0};
+  const double s = std::sqrt(x.hi);
+  const double_double r = sub(x, two_prod(s, s));
+  return fast_two_sum(s, r.hi / (2 * s));
+}
+
+// An integer |v| < 2^126: exactly up to 106 bits, else to 2^-106 relative.
+GYRORES_DD_INLINE double_double of_int(int128 v) {
+  const double hi = double(v);
+  return fast_two_sum(hi, double(v - int128(hi)));
+}
+GYRORES_DD_INLINE double_double of_int(std::int64_t v) {
+  if (v < (std::int64_t(1) << 53) && v > -(std::int64_t(1) << 53)) return {double(v), 0};
+  return of_int(int128(v));
+}
+
+// pi to about 2^-107 (hi = the double nearest pi).
+inline constexpr double_double pi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
+
+}  // namespace dd
+
+// sin and cos of x, |x| < 2: sin within 2^-63 |sin x|, cos within 2^-63 (src/lib/core/
+// double_double.cpp: a table of sin, cos at the multiples of 2^-7, formed once in MPFR, and
+// Taylor polynomials of the rest d, |d| < 2^-7).
+void dd_sin_cos(const double_double& x, double_double& s, double_double& c);
+
+}  // namespace gyrores

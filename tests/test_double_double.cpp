@@ -1,0 +1,221 @@
+// The double path's accuracy (core/double_double.hpp, theorem/root.hpp theorem_root_refined,
+// theorem/minimum.hpp theorem_minimum_double) against MPFR computed here at 200 bits and the
+// proved enclosures of prove_pair_values: sines and cosines within their stated bounds, u* within
+// 2^-60, and r_res, theta_first, t_first within one ulp of the exact value for every pair tried.
+#include <catch2/catch.hpp>
+
+#include <mpfr.h>
+
+#include <cmath>
+#include <random>
+#include <atomic>
+#include <thread>
+#include <vector>
+
+#include <gyrores/core/thread_caches.hpp>
+#include <gyrores/gyrores.hpp>
+
+using namespace gyrores;
+
+namespace {
+
+struct mp {
+  mpfr_t v;
+  mp() { mpfr_init2(v, 200); }
+  explicit mp(const double_double& x) : mp() {
+    mpfr_set_d(v, x.hi, MPFR_RNDN);
+    mpfr_add_d(v, v, x.lo, MPFR_RNDN);
+  }
+  ~mp() { mpfr_clear(v); }
+  mp(const mp&) = delete;
+  mp& operator=(const mp&) = delete;
+  operator mpfr_ptr() { return v; }
+};
+
+// |x - ref| as a multiple of 2^e |scale| (a double, enough to compare with bounds).
+double error_in(const double_double& x, mpfr_ptr ref, double scale) {
+  mp d(x);
+  mpfr_sub(d, d, ref, MPFR_RNDN);
+  return std::fabs(mpfr_get_d(d, MPFR_RNDN)) / scale;
+}
+
+// |value - ref| in ulps of ref (ref the exact value to 200 bits).
+double ulps(double value, mpfr_ptr ref) {
+  mp d;
+  mpfr_set_d(d, value, MPFR_RNDN);
+  mpfr_sub(d, d, ref, MPFR_RNDN);
+  const double r = mpfr_get_d(ref, MPFR_RNDN);
+  return std::fabs(mpfr_get_d(d, MPFR_RNDN)) / (std::nextafter(std::fabs(r), INFINITY) - std::fabs(r));
+}
+
+void set_decimal(mpfr_ptr out, const std::string& text) { mpfr_set_str(out, text.c_str(), 10, MPFR_RNDN); }
+
+}  // namespace
+
+TEST_CASE("double_double: sin and cos within 2^-63 for |x| < 2", "[double_double]") {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-2, 2), tiny(-40, 0);
+  double worst_s = 0, worst_c = 0;
+  for (int i = 0; i < 20000; ++i) {
+    double_double x;
+    if (i % 4 == 3) x = double_double(std::copysign(std::pow(2.0, tiny(rng)), unit(rng)));  // down to 2^-40
+    else if (i % 4 == 2) x = double_double(std::floor(unit(rng) * 128) / 128, 0x1p-60 * unit(rng));  // at the table's points
+    else x = dd::two_sum(unit(rng), 0x1p-54 * unit(rng));
+    if (std::fabs(x.hi) >= 2) continue;
+    double_double s, c;
+    dd_sin_cos(x, s, c);
+    mp X(x), S, C;
+    mpfr_sin_cos(S, C, X, MPFR_RNDN);
+    const double es = error_in(s, S, 0x1p-63 * std::fabs(mpfr_get_d(S, MPFR_RNDN)));
+    const double ec = error_in(c, C, 0x1p-63);
+    worst_s = std::max(worst_s, es);
+    worst_c = std::max(worst_c, ec);
+    INFO("x = " << x.hi << " + " << x.lo);
+    REQUIRE(es <= 1);
+    REQUIRE(ec <= 1);
+  }
+  // The bounds are not vacuous: the worst case uses a fair part of them, and 2^-90 would fail.
+  CHECK(worst_s > 0x1p-30);
+  CHECK(worst_c > 0x1p-30);
+  WARN("worst sin error " << worst_s << " x 2^-63 |sin x|, cos " << worst_c << " x 2^-63");
+}
+
+TEST_CASE("double_double: the arithmetic's error bounds", "[double_double]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.5, 2);
+  for (int i = 0; i < 20000; ++i) {
+    const double_double a = dd::two_sum(u(rng), 0x1p-53 * u(rng)), b = dd::two_sum(u(rng), 0x1p-54 * u(rng));
+    mp A(a), B(b), r;
+    mpfr_mul(r, A, B, MPFR_RNDN);
+    REQUIRE(error_in(dd::mul(a, b), r, 7 * 0x1p-106 * mpfr_get_d(r, MPFR_RNDN)) <= 1);
+    mpfr_div(r, A, B, MPFR_RNDN);
+    REQUIRE(error_in(dd::div(a, b), r, 16 * 0x1p-106 * mpfr_get_d(r, MPFR_RNDN)) <= 1);
+    mpfr_add(r, A, B, MPFR_RNDN);
+    REQUIRE(error_in(dd::add(a, b), r, 3 * 0x1p-106 * mpfr_get_d(r, MPFR_RNDN)) <= 1);
+    mpfr_sqrt(r, A, MPFR_RNDN);
+    REQUIRE(error_in(dd::sqrt(a), r, 4 * 0x1p-106 * mpfr_get_d(r, MPFR_RNDN)) <= 1);
+    const double n = std::floor(u(rng) * 1e15), d = std::floor(u(rng) * 1e15) + 1;
+    mpfr_set_d(r, n, MPFR_RNDN);
+    mpfr_div_d(r, r, d, MPFR_RNDN);
+    REQUIRE(error_in(dd::quotient(n, d), r, 0x1p-104 * mpfr_get_d(r, MPFR_RNDN)) <= 1);
+  }
+  mp p;
+  mpfr_const_pi(p, MPFR_RNDN);
+  CHECK(error_in(dd::pi, p, 0x1p-106) <= 1);
+  const std::int64_t big = (std::int64_t(1) << 62) + 12345;
+  const double_double b = dd::of_int(big);
+  CHECK(int128(b.hi) + int128(b.lo) == big);
+}
+
+TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root", "[double_double]") {
+  // The root by bisection in MPFR at 200 bits on x u + atan(x tan u) = pi m/(2a).
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 300; ++i) {
+    const std::int64_t a = 3 + std::int64_t(rng() % (i < 150 ? 1000 : (std::uint64_t(1) << 60)));
+    std::int64_t b = 1 + std::int64_t(rng() % std::uint64_t(a - 1));
+    if ((a - b) % 2) ++b;  // tau, sigma integers: a and b of one parity
+    if (b >= a) b -= 2;
+    if (b < 1 || std::gcd(a, b) > 2) continue;
+    const int m = theorem_m_min(a);
+    if (m == 0) continue;
+    const double_double x = dd::div(dd::of_int(b), dd::of_int(a));
+    const double_double mu = dd::div(dd::mul(dd::pi, double(m)), dd::of_int(2 * a));
+    const root_double_double r = theorem_root_refined(x, mu);
+    mp X, MU, lo, hi, mid, f, t;
+    mpfr_set_si(X, b, MPFR_RNDN);
+    mpfr_div_si(X, X, a, MPFR_RNDN);
+    mpfr_const_pi(MU, MPFR_RNDN);
+    mpfr_mul_si(MU, MU, m, MPFR_RNDN);
+    mpfr_div_si(MU, MU, 2 * a, MPFR_RNDN);
+    mpfr_set_ui(lo, 0, MPFR_RNDN);
+    mpfr_const_pi(hi, MPFR_RNDN);
+    mpfr_div_ui(hi, hi, 2, MPFR_RNDN);
+    for (int k = 0; k < 190; ++k) {
+      mpfr_add(mid, lo, hi, MPFR_RNDN);
+      mpfr_div_ui(mid, mid, 2, MPFR_RNDN);
+      mpfr_tan(t, mid, MPFR_RNDN);
+      mpfr_mul(t, t, X, MPFR_RNDN);
+      mpfr_atan(t, t, MPFR_RNDN);
+      mpfr_mul(f, X, mid, MPFR_RNDN);
+      mpfr_add(f, f, t, MPFR_RNDN);
+      if (mpfr_cmp(f, MU) < 0) mpfr_set(lo, mid, MPFR_RNDN);
+      else mpfr_set(hi, mid, MPFR_RNDN);
+    }
+    INFO("a = " << a << ", b = " << b);
+    REQUIRE(error_in(r.u, lo, 0x1p-60 * mpfr_get_d(lo, MPFR_RNDN)) <= 1);
+    mpfr_sin_cos(f, t, lo, MPFR_RNDN);
+    REQUIRE(error_in(r.sin_u, f, 0x1p-60 * mpfr_get_d(f, MPFR_RNDN)) <= 1);
+    REQUIRE(error_in(r.cos_u, t, 0x1p-60) <= 1);
+  }
+}
+
+namespace {
+
+// r_res, theta_first, t_first of theorem_minimum_double within one ulp of the proved 25-digit
+// values (whose own error is below 10^-24 relative, far below an ulp).
+void check_pair(const resonant_pair<std::int64_t>& p, double& worst) {
+  const minimum_double m = theorem_minimum_double(p);
+  const pair_report pr = prove_pair_values(resonant_pair<big_int>(big_int(p.tau()), big_int(p.sigma())), 25);
+  mp ref;
+  INFO(p.str());
+  for (auto [value, text] : {std::pair{m.r_res, pr.r_res.value}, std::pair{m.theta_first, pr.theta_first.value},
+                             std::pair{m.t_first, pr.t_first.value}}) {
+    set_decimal(ref, text);
+    if (mpfr_zero_p(ref.v)) {
+      REQUIRE(value == 0);
+      continue;
+    }
+    const double e = ulps(value, ref);
+    worst = std::max(worst, e);
+    REQUIRE(e <= 1);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("double_double: theorem_minimum_double within an ulp for every pair up to order 200 and large pairs",
+          "[double_double]") {
+  double worst = 0;
+  int n = 0;
+  for (const auto& p : coprime_pairs(3, 200)) check_pair(p, worst), ++n;
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 400; ++i) {
+    const int bits = 10 + int(rng() % 51);  // orders up to 2^61
+    const std::int64_t tau = std::int64_t(rng() >> (64 - bits)) + 2;
+    const std::int64_t sigma = 1 + std::int64_t(rng() % std::uint64_t(i % 3 == 0 ? 10 : tau - 1));
+    if (std::gcd(tau, sigma) != 1 || sigma >= tau) continue;
+    check_pair(resonant_pair<std::int64_t>(tau, sigma), worst), ++n;
+  }
+  CHECK(n > 6000);
+  WARN(n << " pairs, worst " << worst << " ulp");
+}
+
+// The done-when of the double path: every row of `gyrores sweep --max-order 3000` in double
+// (1.37e6 pairs) within one ulp of the --certified row's proved value (the midpoint of an
+// enclosure of relative width below 2^-80, so the correctly rounded double or next to it).
+// About a minute on 2 cores: run by ctest only with -DGYRORES_LONG_TESTS=ON (label long).
+TEST_CASE("double_double: sweep rows to order 3000 within an ulp of the certified rows", "[.long]") {
+  sweep_config plain, certified;
+  plain.max_order = certified.max_order = 3000;
+  certified.certified = true;
+  std::atomic<std::int64_t> pairs{0}, over{0};
+  auto work = [&](std::int64_t shard, std::int64_t shards) {
+    coprime_pairs all(3, 3000, shard, shards);
+    for (const auto& p : all) {
+      const sweep_row<double> d = sweep_evaluate<double>(p, plain), c = sweep_evaluate<double>(p, certified);
+      ++pairs;
+      for (auto [x, y] : {std::pair{d.r_res, c.r_res}, std::pair{d.theta_first, c.theta_first},
+                          std::pair{d.t_first, c.t_first}}) {
+        if (x == y) continue;
+        if (std::fabs(x - y) > std::nextafter(std::fabs(y), INFINITY) - std::fabs(y)) ++over;
+      }
+    }
+    release_thread_caches();
+  };
+  const unsigned n = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> threads;
+  for (unsigned i = 0; i < n; ++i) threads.emplace_back(work, i, n);
+  for (auto& t : threads) t.join();
+  CHECK(pairs == 1367845);
+  CHECK(over == 0);
+}
