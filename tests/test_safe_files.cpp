@@ -279,3 +279,29 @@ TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") 
   CHECK(has(bare.err, "Usage"));
   CHECK(has(bare.err, "Exit status"));
 }
+
+TEST_CASE("safe files: the lock files are paths of the command too", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  const std::string q = " --quiet --threads 1";
+  // A rows file named like a lock file would be truncated by the lock and removed at the end.
+  check_refused(run("sweep --max-order 60 --summary " + d / "a.json --out " + d / "a.json.lock" + q), 2, "are the same file");
+  check_refused(run("sweep --max-order 60 --state " + d / "s --out " + d / "s.lock" + q), 2, "are the same file");
+  CHECK_FALSE(path_exists(d / "a.json.lock"));
+  CHECK_FALSE(path_exists(d / "s.lock"));
+  // merge's lock on --summary OUT is OUT.lock: an input of that name is refused, not destroyed.
+  REQUIRE(run("sweep --max-order 60 --shard 0/2 --out " + d / "m.json.lock" + q).status == 0);
+  REQUIRE(run("sweep --max-order 60 --shard 1/2 --out " + d / "r1.csv" + q).status == 0);
+  const std::string shard0 = read_text(d / "m.json.lock");
+  check_refused(run("merge " + d / "m.json.lock " + d / "r1.csv --summary " + d / "m.json"), 2, "are the same file");
+  CHECK(read_text(d / "m.json.lock") == shard0);
+  // A file of the user's at PATH.lock is neither truncated nor removed; a stale lock file (a pid
+  // line left by a killed run) is taken over and removed at the end.
+  write_text(d / "n.json.lock", "my notes\n");
+  check_refused(run("sweep --max-order 60 --summary " + d / "n.json" + q), 2, "is not a gyrores lock file");
+  CHECK(read_text(d / "n.json.lock") == "my notes\n");
+  CHECK_FALSE(path_exists(d / "n.json"));
+  write_text(d / "o.json.lock", "12345\n");
+  REQUIRE(run("sweep --max-order 60 --summary " + d / "o.json" + q).status == 0);
+  CHECK_FALSE(path_exists(d / "o.json.lock"));
+}

@@ -244,12 +244,37 @@ std::string in_use_message(const std::string& path, int fd) {
 
 }  // namespace
 
+std::string path_lock_file(const std::string& path) { return path + ".lock"; }
+
+namespace {
+
+// A file already at PATH.lock is taken over only if it is what a gyrores run leaves there: a
+// regular file, empty or holding a pid line. Anything else is the user's (a rows file named
+// X.lock, say), which acquire() would otherwise truncate and remove at the end.
+bool looks_like_lock_file(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > 24) return false;
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf, 0);
+  if (n < 0) return false;
+  const std::string s(buf, std::size_t(n));
+  if (s.empty()) return true;
+  return s.back() == '\n' && s.size() >= 2 && s.find_first_not_of("0123456789") == s.size() - 1;
+}
+
+}  // namespace
+
 path_lock path_lock::acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy) {
-  const std::string lp = path + ".lock";
+  const std::string lp = path_lock_file(path);
   bool told = false;
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+    const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);
     if (fd < 0) fail("cannot create the lock file", lp, errno);
+    if (!looks_like_lock_file(fd)) {
+      ::close(fd);
+      throw usage_error("'" + lp + "' (the lock file of '" + path +
+                        "') exists and is not a gyrores lock file: move it away or choose other files");
+    }
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       int err = errno;
       if (err == EWOULDBLOCK) {

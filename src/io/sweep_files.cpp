@@ -92,7 +92,12 @@ void sweep_file_session::check_paths_and_lock() {
                                       {"the summary", files_.summary_path},
                                       {"the summary's values file", shard_values ? files_.summary_path + ".values" : ""},
                                       {"the resume state", state_},
-                                      {"the resume state's values", values_}};
+                                      {"the resume state's values", values_},
+                                      // The lock files are written and removed too: a rows file
+                                      // named SUMMARY.lock would be lost at the end of the run.
+                                      {"the resume state's lock file", path_lock_file(state_)},
+                                      {"the summary's lock file", files_.summary_path.empty() ? "" : path_lock_file(files_.summary_path)},
+                                      {"the rows file's lock file", rows_ ? path_lock_file(files_.rows_path) : std::string()}};
   check_distinct_paths(paths);
   for (const auto& p : paths)
     if (!p.path.empty()) check_output_path(p.path);

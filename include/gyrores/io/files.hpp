@@ -88,12 +88,16 @@ struct named_path {
 // before any work.
 void check_distinct_paths(const std::vector<named_path>& paths);
 
+// The lock file of PATH: PATH.lock (a command checks it against its other paths too).
+std::string path_lock_file(const std::string& path);
+
 // An exclusive advisory lock (flock) on PATH.lock, held until destruction, when the lock file
 // is removed. acquire() does not wait: if another process holds it, usage_error
 // "'PATH' is in use by another gyrores run (pid N)" -- unless `on_busy` is given, which is then
 // called once with that message and the lock waited for (a path the user did not name, shared
 // by default: see sweep_files::on_lock_wait). Locks taken by one process on distinct
-// paths nest. The lock file holds the owner's pid, for that message only.
+// paths nest. The lock file holds the owner's pid, for that message only. An existing PATH.lock
+// that is not such a file (not regular, or other content) is refused, never truncated or removed.
 class path_lock {
  public:
   path_lock() = default;
