@@ -13,6 +13,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gyrores/io/json.hpp>
@@ -131,6 +132,7 @@ TEST_CASE("safe files: a resume never pads, and a saved state is never discarded
   CHECK(read_text(d / "r.csv.resume") == state);
   // The .part shortened from outside: refused, never padded with zeros.
   const auto size = fs::file_size(d / "r.csv.part");
+  const std::string part = read_text(d / "r.csv.part");
   fs::resize_file(d / "r.csv.part", size / 2);
   check_refused(run(args + " --resume"), 2, "fewer than");
   CHECK(fs::file_size(d / "r.csv.part") == size / 2);
@@ -145,6 +147,24 @@ TEST_CASE("safe files: a resume never pads, and a saved state is never discarded
   dup.insert(1, "\"done\":0,");
   write_text(d / "r.csv.resume", dup);
   check_refused(run(args + " --resume"), 2, "appears twice");
+  // A state whose counts disagree (edited by hand): refused, never a wrong count. Before, a `done`
+  // below the summary's pairs repeated pairs (order 300: 15698 pairs reported of 13698, rows
+  // doubled, exit 0), and a `done` beyond the sweep's pairs ended it at once with exit 0.
+  write_text(d / "r.csv.part", part);
+  for (const auto& [key, value, message] : std::vector<std::tuple<std::string, std::uint64_t, std::string>>{
+           {"done", 300, "is inconsistent"},
+           {"values_count", 5, "is inconsistent"},
+           {"rows_bytes", 0, "do not end a line"}}) {
+    json edited = json::parse(state);
+    edited[key] = key == "rows_bytes" ? edited["rows_bytes"].get<std::uint64_t>() - 10 : value;
+    write_text(d / "r.csv.resume", edited.dump());
+    INFO(key);
+    check_refused(run(args + " --resume"), 2, message);
+  }
+  json beyond = json::parse(state);
+  beyond["done"] = beyond["summary"]["pairs"] = std::uint64_t(1000000);
+  write_text(d / "r.csv.resume", beyond.dump());
+  check_refused(run(args + " --resume"), 2, "but the sweep has");
   // --fresh discards it and gives the same rows as a lone run.
   REQUIRE(run(args + " --fresh").status == 0);
   REQUIRE(run("sweep --max-order 120 --quiet --threads 1 --out " + d / "lone.csv").status == 0);
