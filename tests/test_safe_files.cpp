@@ -118,6 +118,12 @@ TEST_CASE("safe files: symbolic links, devices and permission bits of outputs", 
   REQUIRE(::stat((d / "c.json").c_str(), &st) == 0);
   CHECK((st.st_mode & 0777) == 0600);
   CHECK(has(read_text(d / "c.json"), "\"digits\": 40"));
+  // So does a rows file, renamed from FILE.part at the end of a sweep (it became 644).
+  REQUIRE(run("sweep --max-order 40 --quiet --out " + d / "rows.csv").status == 0);
+  REQUIRE(::chmod((d / "rows.csv").c_str(), 0600) == 0);
+  REQUIRE(run("sweep --max-order 40 --quiet --out " + d / "rows.csv").status == 0);
+  REQUIRE(::stat((d / "rows.csv").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0600);
 }
 
 TEST_CASE("safe files: a resume never pads, and a saved state is never discarded silently", "[cli][files]") {

@@ -390,6 +390,18 @@ void truncate_file(const std::string& path, std::uint64_t size) {
   ::close(fd);
 }
 
+void keep_mode_of(const std::string& replaced, const std::string& path) {
+  struct stat old {};
+  if (::lstat(replaced.c_str(), &old) != 0 || !S_ISREG(old.st_mode)) return;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) fail("cannot change the mode of", path, errno);
+  struct stat st {};
+  const bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::fchmod(fd, old.st_mode & 07777) == 0;
+  const int err = errno;
+  ::close(fd);
+  if (!ok) fail("cannot change the mode of", path, err ? err : EINVAL);
+}
+
 void rename_file(const std::string& from, const std::string& to) {
   if (std::rename(from.c_str(), to.c_str()) != 0) fail("cannot rename", from, errno);
 }

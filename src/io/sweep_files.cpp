@@ -120,6 +120,7 @@ void sweep_file_session::start_fresh() {
   remove_file(values_);  // created when values first go there (short runs need no file)
   if (!rows_) return;
   rows_file_ = append_file(rows_part_, append_file::mode::create);
+  keep_mode_of(files_.rows_path, rows_part_);  // a mode-600 rows file is not readable by others meanwhile
   const std::string h = sweep_rows_header(run_, files_.rows_format);
   rows_file_.write(h);
   rows_bytes_ = h.size();
@@ -281,6 +282,7 @@ void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
   if (rows_) {
     rows_file_.write(sweep_rows_trailer(acc_.pairs, seconds, files_.rows_format));
     rows_file_.close();
+    keep_mode_of(files_.rows_path, rows_part_);
     rename_file(rows_part_, files_.rows_path);
   }
   remove_file(state_);

@@ -119,6 +119,11 @@ class path_lock {
 // Cuts a file to `size` bytes (used to drop what a resume does not trust).
 void truncate_file(const std::string& path, std::uint64_t size);
 
+// Gives `path` (a regular file) the permission bits of `replaced` when that exists as a regular
+// file, so that a file renamed over it keeps its mode as write_file_atomically's do (a mode-600
+// rows file stays 600). Nothing to do when `replaced` does not exist.
+void keep_mode_of(const std::string& replaced, const std::string& path);
+
 // Renames `from` over `to` (same file system: atomic).
 void rename_file(const std::string& from, const std::string& to);
 
