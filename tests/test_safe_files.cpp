@@ -283,6 +283,10 @@ TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") 
   check_refused(run("sweep --max-order 50 --min-order -5 --state " + d / "s"), 2, "--min-order");
   check_refused(run("sweep --max-order 50 --checkpoint nan --state " + d / "s"), 2, "--checkpoint");
   check_refused(run("sweep --max-order 50 --resume --fresh --state " + d / "s"), 2, "exclude");
+  // Out of range: refused, not an abort (too many threads) nor a wrapped-around count.
+  check_refused(run("sweep --max-order 50 --threads 100000 --state " + d / "s"), 2, "--threads must be in [0, 1024]");
+  check_refused(run("sweep --max-order 50 --max-pairs -5 --state " + d / "s"), 2, "--max-pairs must be >= 0");
+  check_refused(run("sweep --max-order 2 --state " + d / "s"), 2, "--max-order must be >= 3");
   CHECK_FALSE(path_exists(d / "s"));
   // What certify writes, check reads: a tau beyond the checker's digits is refused by certify.
   const std::string big = "1" + std::string(20000, '0') + "1";
