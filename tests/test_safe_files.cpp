@@ -272,6 +272,12 @@ TEST_CASE("safe files: directories, devices and oversized inputs", "[cli][files]
   c.insert(c.find('{') + 1, "\"tau\": \"7\", ");
   write_text(d / "dup.json", c);
   check_refused(run("check " + d / "dup.json"), 2, "appears twice");
+  // Likewise a coupling certificate (horizon-theorem/1), which its checker read with "last wins".
+  REQUIRE(run("coupling 2 --horizon 100 --certificate " + d / "cc.json").status == 0);
+  std::string cc = read_text(d / "cc.json");
+  cc.insert(cc.find('{') + 1, "\"digits\": 5, ");
+  write_text(d / "ccdup.json", cc);
+  check_refused(run("check " + d / "ccdup.json"), 2, "appears twice");
 }
 
 TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") {

@@ -25,6 +25,8 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace gyrores_checker {
 
@@ -391,10 +393,26 @@ lobe_data lobe_field(const json& j, const std::string& name) {
   return l;
 }
 
+// json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate
+// could otherwise show a reader one value and the checker another; docs/formats.md).
+json parse_without_duplicate_keys(const std::string& text) {
+  std::vector<std::set<std::string>> open;
+  const json::parser_callback_t on_event = [&](int, json::parse_event_t ev, json& parsed) {
+    if (ev == json::parse_event_t::object_start) open.emplace_back();
+    if (ev == json::parse_event_t::object_end && !open.empty()) open.pop_back();
+    if (ev == json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
+      throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
+    return true;
+  };
+  return json::parse(text, on_event);
+}
+
 certificate read(const std::string& text) {
   json j;
   try {
-    j = json::parse(text);
+    j = parse_without_duplicate_keys(text);
+  } catch (const malformed&) {
+    throw;
   } catch (const std::exception& e) {
     throw malformed(std::string("not JSON: ") + e.what());
   }
