@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -340,4 +341,51 @@ TEST_CASE("safe files: the lock files are paths of the command too", "[cli][file
   write_text(d / "o.json.lock", "12345\n");
   REQUIRE(run("sweep --max-order 60 --summary " + d / "o.json" + q).status == 0);
   CHECK_FALSE(path_exists(d / "o.json.lock"));
+}
+
+TEST_CASE("safe files: figures follow the same rules (plot, pareto --plot, report)", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  write_text(d / "victim", "precious\n");
+  // Checked before the work: a link, a directory, a link as the CSV of pareto.
+  fs::create_symlink(d / "victim", d / "link.svg");
+  check_refused(run("plot phase 6 5 --out " + d / "link.svg"), 2, "symbolic link");
+  CHECK(fs::is_symlink(d / "link.svg"));
+  fs::create_directory(d / "dir.svg");
+  check_refused(run("plot pareto --max-order 200 --out " + d / "dir.svg"), 2, "is a directory");  // was exit 0, no image
+  CHECK_FALSE(path_exists(d / "dir.dat"));
+  fs::create_symlink(d / "victim", d / "front.csv");
+  check_refused(run("pareto --max-order 200 --out " + d / "front.csv"), 2, "symbolic link");
+  fs::create_symlink(d / "victim", d / "g.svg");
+  check_refused(run("pareto --max-order 200 --plot " + d / "g.svg"), 2, "symbolic link");
+  fs::create_directory(d / "rep");
+  fs::create_directory(d / "rep/figures");
+  fs::create_symlink(d / "victim", d / "rep/figures/x.png");
+  check_refused(run("report --out " + d / "rep"), 2, "symbolic link");
+  CHECK_FALSE(path_exists(d / "rep/REPORT.md"));
+  CHECK(read_text(d / "victim") == "precious\n");
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return;  // the image needs gnuplot
+  // gnuplot wrote to the predictable STEM.tmpPID.svg and its stderr to STEM.gnuplot-stderr.tmpPID,
+  // following links: links planted there for the next pids made `plot --out q.svg` overwrite
+  // their target, and q.svg became a link to it. gnuplot now writes in a private directory.
+  std::ifstream last("/proc/sys/kernel/ns_last_pid");
+  long pid = 0;
+  if (last >> pid)
+    for (long p = pid + 1; p < pid + 200; ++p) {
+      fs::create_symlink(d / "victim", d / ("q.tmp" + std::to_string(p) + ".svg"));
+      fs::create_symlink(d / "victim", d / ("q.gnuplot-stderr.tmp" + std::to_string(p)));
+    }
+  REQUIRE(run("plot phase 6 5 --out " + d / "q.svg").status == 0);
+  CHECK(read_text(d / "victim") == "precious\n");
+  CHECK_FALSE(fs::is_symlink(d / "q.svg"));
+  CHECK(has(read_text(d / "q.svg"), "<svg"));
+  // A replaced image keeps its mode; no private directory is left behind.
+  REQUIRE(::chmod((d / "q.svg").c_str(), 0600) == 0);
+  REQUIRE(run("plot phase 6 5 --out " + d / "q.svg").status == 0);
+  struct stat st {};
+  REQUIRE(::stat((d / "q.svg").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0600);
+  int private_dirs = 0;
+  for (const auto& e : fs::directory_iterator(d.path())) private_dirs += has(e.path().filename().string(), ".gyrores-tmp");
+  CHECK(private_dirs == 0);
 }

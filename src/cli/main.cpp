@@ -19,6 +19,7 @@
 #include <gyrores/core/stop.hpp>
 
 #include "cli_options.hpp"
+#include "cli_process.hpp"
 #include "cli_output.hpp"
 #include "commands.hpp"
 
@@ -179,6 +180,7 @@ void reserve_standard_fds() {
 
 int main(int argc, char** argv) {
   reserve_standard_fds();
+  gyrores::cli::install_interrupt_handlers();  // SIGINT, SIGTERM: exit 130 (cli_process.hpp)
   int status = gyrores::cli::run(argc, argv, true);
   // The final flush and close: a full disk may only show here.
   if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && status == 0) status = gyrores::cli::cannot_write_stdout(errno);

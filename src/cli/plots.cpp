@@ -287,7 +287,17 @@ figure_spec figure_spec_from_out(const fs::path& out, const std::string& size, i
     s.height = h;
   }
   ensure_directory(s.dir);
+  check_figure_outputs(s);
   return s;
+}
+
+void check_figure_outputs(const figure_spec& s, const std::vector<named_path>& more) {
+  std::vector<named_path> paths{{"the figure's data", (s.dir / (s.stem + ".dat")).string()},
+                                {"the figure's script", (s.dir / (s.stem + ".gp")).string()}};
+  for (const auto& img : s.images) paths.push_back({"the figure", (s.dir / img).string()});
+  paths.insert(paths.end(), more.begin(), more.end());
+  check_distinct_paths(paths);
+  for (const auto& p : paths) check_output_path(p.path);
 }
 
 std::string num(double v) {

@@ -10,9 +10,11 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include <gyrores/core/error.hpp>
 
@@ -174,6 +176,55 @@ void write_file_atomically(const std::string& path, const std::function<void(con
     fail("cannot write", path, err);
   }
   // The rename itself durable (best effort: some file systems refuse fsync on a directory).
+  if (int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+}
+
+std::string make_private_directory(const std::string& near) {
+  std::string templ = directory_of(near) + "/.gyrores-tmp.XXXXXX";
+  std::vector<char> buf(templ.begin(), templ.end());
+  buf.push_back('\0');
+  if (::mkdtemp(buf.data()) == nullptr) fail("cannot create a temporary directory beside", near, errno);
+  return std::string(buf.data());
+}
+
+void remove_private_directory(const std::string& dir) noexcept {
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
+}
+
+void install_file(const std::string& tmp, const std::string& path) {
+  auto give_up = [&](int err) {
+    ::unlink(tmp.c_str());
+    fail("cannot write", path, err);
+  };
+  try {
+    check_output_path(path);
+  } catch (...) {
+    ::unlink(tmp.c_str());
+    throw;
+  }
+  const int fd = ::open(tmp.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) give_up(errno);
+  struct stat st {}, old {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    give_up(EINVAL);
+  }
+  if (::stat(path.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) {
+    const int err = errno;
+    ::close(fd);
+    give_up(err);
+  }
+  if (::fsync(fd) != 0) {
+    const int err = errno;
+    ::close(fd);
+    give_up(err);
+  }
+  ::close(fd);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) give_up(errno);
   if (int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
     ::fsync(dfd);
     ::close(dfd);

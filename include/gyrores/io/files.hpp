@@ -51,6 +51,19 @@ void check_output_path(const std::string& path);
 // removed and `path` is untouched.
 void write_file_atomically(const std::string& path, std::string_view content);
 
+// For files another program writes (gnuplot's images): a new directory, mode 700, in the
+// directory of `near` (so that a rename from it is atomic), named ".gyrores-tmp.XXXXXX" by
+// mkdtemp. Nobody else can create, replace or link anything in it, so the program may open
+// names in it freely. The caller removes it (remove_private_directory).
+std::string make_private_directory(const std::string& near);
+void remove_private_directory(const std::string& dir) noexcept;  // the directory and the files in it
+
+// Moves a finished file `tmp` (in a private directory on `path`'s file system) over `path` with
+// write_file_atomically's rules: check_output_path(path), the replaced file's permission bits,
+// fsync, rename, the directory fsync'ed. `tmp` must be a regular file (not followed if a link).
+// On failure `tmp` is removed and `path` is untouched.
+void install_file(const std::string& tmp, const std::string& path);
+
 // Removes the temporary files of write_file_atomically(path, ...) that a killed process left
 // behind: `path.tmp.PID[.RANDOM]` for a PID no longer running (never throws). Run before a
 // sweep starts.
