@@ -389,3 +389,52 @@ TEST_CASE("safe files: figures follow the same rules (plot, pareto --plot, repor
   for (const auto& e : fs::directory_iterator(d.path())) private_dirs += has(e.path().filename().string(), ".gyrores-tmp");
   CHECK(private_dirs == 0);
 }
+
+TEST_CASE("safe files: SIGINT and SIGTERM end every command with exit 130", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  // report: std::system ignored SIGINT in gyrores while gnuplot ran, so the signal was lost and
+  // the report went on to exit 0. Signalled as soon as it has started drawing.
+  const int pid = gyrores::test::cli_spawn("report --out " + d / "rep", d / "r.out", d / "r.err");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!path_exists(d / "rep/figures") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ::kill(pid, SIGINT);
+  const int status = gyrores::test::cli_wait(pid);
+  if (status == 0) {
+    WARN("the report ended before SIGINT reached it");
+  } else {
+    CHECK(status == 130);
+    CHECK(has(read_text(d / "r.err"), "interrupted"));
+    CHECK_FALSE(path_exists(d / "rep/REPORT.md"));
+    int private_dirs = 0;
+    for (const auto& e : fs::directory_iterator(d / "rep/figures")) private_dirs += has(e.path().filename().string(), ".gyrores-tmp");
+    CHECK(private_dirs == 0);
+  }
+  // SIGTERM killed the other commands (128 + 15 in a shell); now 130 as documented, like a sweep.
+  const int band = gyrores::test::cli_spawn("coupling 0.2 --tolerance 10% --horizon 1e6", d / "b.out", d / "b.err");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ::kill(band, SIGTERM);
+  CHECK(gyrores::test::cli_wait(band) == 130);
+  CHECK(read_text(d / "b.out").empty());
+}
+
+TEST_CASE("safe files: a long command shows progress on a terminal", "[cli][files]") {
+  if (!cli_available()) return;
+  if (std::system("command -v script >/dev/null 2>&1 && command -v timeout >/dev/null 2>&1") != 0) return;
+  // script(1) gives gyrores a terminal; timeout stops it with SIGINT after 3 s (band: ~10 s or more).
+  const std::string cmd = "script -qfec \"timeout -s INT 3 " + gyrores::test::cli_path() +
+                          " coupling 0.2 --tolerance 10% --horizon 1e6 >/dev/null\" /dev/null 2>&1";
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    ::pclose(p);
+  }
+  INFO(out);
+  CHECK(has(out, "gyrores coupling: proving the band's worst and best minimum"));
+  CHECK(has(out, "(Ctrl-C stops it)"));
+  CHECK(has(out, "gyrores: interrupted"));
+}

@@ -8,10 +8,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
+#include <thread>
 
 #include <gyrores/core/stop.hpp>
 #include <gyrores/io/files.hpp>
@@ -21,6 +26,7 @@ namespace {
 
 // What the handler cleans up: set before a helper starts, cleared after (async-signal-safe reads).
 volatile sig_atomic_t g_helper_pid = 0;
+volatile sig_atomic_t g_progress_drawn = 0;  // a progress line is on the terminal: erased first
 char g_private_dir[4096] = {};
 char g_private_file[4096] = {};
 
@@ -33,6 +39,10 @@ extern "C" void on_interrupt(int) {
   // unlink and rmdir are async-signal-safe; the private directory holds at most the one file.
   if (g_private_file[0]) ::unlink(g_private_file);
   if (g_private_dir[0]) ::rmdir(g_private_dir);
+  if (g_progress_drawn) {
+    static const char erase[] = "\r\x1b[K";
+    [[maybe_unused]] const ssize_t e = ::write(2, erase, sizeof erase - 1);
+  }
   static const char msg[] = "gyrores: interrupted\n";
   [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
   ::_exit(130);
@@ -136,6 +146,65 @@ int run_helper(const std::vector<std::string>& argv, const std::string& dir, con
     throw interrupted();
   }
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+// ---- progress line ----
+
+namespace {
+std::mutex g_stage_mutex;
+std::string g_stage;
+}  // namespace
+
+void progress_stage(const std::string& stage) {
+  std::lock_guard<std::mutex> lk(g_stage_mutex);
+  g_stage = stage;
+}
+
+struct progress_line::impl {
+  std::string command;
+  std::mutex m;
+  std::condition_variable cv;
+  bool done = false, drawn = false;
+  std::thread t;
+};
+
+progress_line::progress_line(std::string command) : p_(nullptr) {
+  if (::isatty(2) != 1) return;
+  p_ = new impl;
+  p_->command = std::move(command);
+  p_->t = std::thread([p = p_] {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::unique_lock<std::mutex> lk(p->m);
+    if (p->cv.wait_for(lk, std::chrono::seconds(2), [&] { return p->done; })) return;
+    for (;;) {
+      std::string stage;
+      {
+        std::lock_guard<std::mutex> sl(g_stage_mutex);
+        stage = g_stage;
+      }
+      const long secs = long(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      std::fprintf(stderr, "\rgyrores %s: %s%s%ld s (Ctrl-C stops it)\x1b[K", p->command.c_str(), stage.c_str(),
+                   stage.empty() ? "" : ", ", secs);
+      std::fflush(stderr);
+      p->drawn = true;
+      g_progress_drawn = 1;
+      if (p->cv.wait_for(lk, std::chrono::seconds(1), [&] { return p->done; })) break;
+    }
+    std::fputs("\r\x1b[K", stderr);  // erased: what the command prints next starts clean
+    std::fflush(stderr);
+    g_progress_drawn = 0;
+  });
+}
+
+progress_line::~progress_line() {
+  if (!p_) return;
+  {
+    std::lock_guard<std::mutex> lk(p_->m);
+    p_->done = true;
+  }
+  p_->cv.notify_all();
+  p_->t.join();
+  delete p_;
 }
 
 }  // namespace gyrores::cli

@@ -1,5 +1,5 @@
-// The CLI process as a whole: how SIGINT and SIGTERM end a command, and helper processes
-// (gnuplot) run without a shell.
+// The CLI process as a whole: how SIGINT and SIGTERM end a command, helper processes (gnuplot)
+// run without a shell, and the progress line of long commands on a terminal.
 //
 // Interrupts (docs/formats.md, "Exit statuses"): main() installs a handler that ends any
 // command with exit 130 ("gyrores: interrupted" on stderr), after stopping a helper process
@@ -26,5 +26,23 @@ int run_helper(const std::vector<std::string>& argv, const std::string& dir, con
 
 // True when an executable `name` is in PATH.
 bool program_in_path(const std::string& name);
+
+// The progress line: on a terminal (stderr), a command still running after 2 s shows
+// "gyrores CMD: STAGE, N s (Ctrl-C stops it)", redrawn every second and erased when it ends.
+// Nothing when stderr is not a terminal (logs stay clean). The sweep has its own (cmd_sweep.cpp).
+class progress_line {
+ public:
+  explicit progress_line(std::string command);
+  ~progress_line();
+  progress_line(const progress_line&) = delete;
+  progress_line& operator=(const progress_line&) = delete;
+
+ private:
+  struct impl;
+  impl* p_;
+};
+
+// What the running command is doing, for the progress line ("proving the band's extremes").
+void progress_stage(const std::string& stage);
 
 }  // namespace gyrores::cli

@@ -11,6 +11,7 @@
 #include <gyrores/io/files.hpp>
 
 #include "cli_options.hpp"
+#include "cli_process.hpp"
 #include "commands.hpp"
 #include "report/report.hpp"
 
@@ -56,13 +57,21 @@ std::string run_report(const report_args& a) {
   ensure_directory(c.figs.dir);
   check_report_outputs(c.dir);
   std::ostringstream md;
+  progress_stage("1/8 the paper's examples, Figure 1");
   md << report::intro_section(c.digits) << report::figure1_section(c);
+  progress_stage("2/8 the pair catalogue");
   c.catalogue = design_catalogue(std::max<std::int64_t>(a.pareto_order, 200));  // sections 2-5
+  progress_stage("3/8 case A");
   md << report::case_a_section(c);
+  progress_stage("4/8 case B");
   md << report::case_b_section(c);
+  progress_stage("5/8 design");
   md << report::design_section(c);
+  progress_stage("6/8 the Pareto front");
   md << report::pareto_section(c, a.pareto_order);
+  progress_stage("7/8 the validation sweep");
   md << report::sweep_section(a.sweep_order);
+  progress_stage("8/8 couplings");
   md << report::coupling_section(c) << report::files_section(c.figs) << footer(t_start);
   write_file_atomically(c.dir / "REPORT.md", md.str());
   std::string out = (c.dir / "REPORT.md").string() + "\n";

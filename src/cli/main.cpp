@@ -14,6 +14,7 @@
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/stop.hpp>
@@ -133,7 +134,13 @@ int run(int argc, char** argv, bool execute) {
 
   try {
     for (auto* sub : app.get_subcommands()) {
-      std::string out = runners.at(sub->get_name())();
+      std::string out;
+      {
+        // A command still running after 2 s says so on a terminal (the sweep draws its own bar).
+        std::optional<progress_line> progress;
+        if (sub->get_name() != "sweep") progress.emplace(sub->get_name());
+        out = runners.at(sub->get_name())();
+      }
       if (!print_stdout(out)) return cannot_write_stdout(errno);
     }
     return 0;

@@ -10,6 +10,7 @@
 #include <gyrores/core/real.hpp>
 #include <gyrores/io/files.hpp>
 
+#include "cli_process.hpp"
 #include "gnuplot.hpp"
 
 namespace gyrores::cli {
@@ -23,6 +24,7 @@ figure_output figure_finish(const figure_spec& s, const std::string& data, const
   write_file_atomically(o.data, data);
   write_file_atomically(o.script, script);
   for (const auto& img : s.images) {
+    progress_stage("drawing " + img + " with gnuplot");
     auto r = gnuplot_render(s.dir, s.stem + ".gp", img);
     if (r.rendered) o.images.push_back(s.dir / img);
     else if (o.message.empty()) o.message = r.message;
