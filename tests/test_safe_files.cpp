@@ -291,7 +291,7 @@ TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") 
   check_refused(run("sweep --max-order 50 --checkpoint nan --state " + d / "s"), 2, "--checkpoint");
   check_refused(run("sweep --max-order 50 --resume --fresh --state " + d / "s"), 2, "exclude");
   // Out of range: refused, not an abort (too many threads) nor a wrapped-around count.
-  check_refused(run("sweep --max-order 50 --threads 100000 --state " + d / "s"), 2, "--threads must be in [0, 1024]");
+  check_refused(run("sweep --max-order 50 --threads 100000 --state " + d / "s"), 2, "--threads must be in [0, 4096]");
   check_refused(run("sweep --max-order 50 --max-pairs -5 --state " + d / "s"), 2, "--max-pairs must be >= 0");
   check_refused(run("sweep --max-order 2 --state " + d / "s"), 2, "--max-order must be >= 3");
   CHECK_FALSE(path_exists(d / "s"));

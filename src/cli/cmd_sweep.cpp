@@ -64,7 +64,7 @@ struct sweep_args {
 };
 
 // More threads than this is a typo (the system refuses to start them: the sweep would abort).
-constexpr unsigned max_threads = 1024;
+constexpr unsigned max_threads = 4096;  // as the Python module's sweep()
 
 std::string with_commas(std::uint64_t v) {
   const std::string digits = std::to_string(v);
@@ -271,7 +271,7 @@ command_runner install_sweep(CLI::App& app) {
   sub.add("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
   sub.add("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
   sub.add("--summary", a->summary, "summary as JSON to FILE (a shard run also writes FILE.values for merge)");
-  sub.add("--threads", a->threads, "worker threads (0: all cores; at most 1024)", show::with_default);
+  sub.add("--threads", a->threads, "worker threads (0: all cores; at most 4096)", show::with_default);
   sub.add("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'",
           show::with_default);
   sub.flag("--certified", a->certified,
