@@ -279,6 +279,16 @@ TEST_CASE("safe files: directories, devices and oversized inputs", "[cli][files]
   cc.insert(cc.find('{') + 1, "\"digits\": 5, ");
   write_text(d / "ccdup.json", cc);
   check_refused(run("check " + d / "ccdup.json"), 2, "appears twice");
+  // A field holding a newline (JSON "\n") is quoted in the message on one line, escaped (it was
+  // printed as is: two lines).
+  std::string nl = read_text(d / "c.json");
+  nl.replace(nl.find("\"6\""), 3, "\"6\\n\"");
+  write_text(d / "nl.json", nl);
+  check_refused(run("check " + d / "nl.json"), 2, "is not an integer: '6\\n'");
+  std::string ccnl = read_text(d / "cc.json");
+  ccnl.replace(ccnl.find("\"4\""), 3, "\"4\\n\"");
+  write_text(d / "ccnl.json", ccnl);
+  check_refused(run("check " + d / "ccnl.json"), 2, "'4\\n'");
 }
 
 TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") {
