@@ -9,10 +9,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gyrores/io/json.hpp>
@@ -117,6 +119,12 @@ TEST_CASE("safe files: symbolic links, devices and permission bits of outputs", 
   REQUIRE(::stat((d / "c.json").c_str(), &st) == 0);
   CHECK((st.st_mode & 0777) == 0600);
   CHECK(has(read_text(d / "c.json"), "\"digits\": 40"));
+  // So does a rows file, renamed from FILE.part at the end of a sweep (it became 644).
+  REQUIRE(run("sweep --max-order 40 --quiet --out " + d / "rows.csv").status == 0);
+  REQUIRE(::chmod((d / "rows.csv").c_str(), 0600) == 0);
+  REQUIRE(run("sweep --max-order 40 --quiet --out " + d / "rows.csv").status == 0);
+  REQUIRE(::stat((d / "rows.csv").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0600);
 }
 
 TEST_CASE("safe files: a resume never pads, and a saved state is never discarded silently", "[cli][files]") {
@@ -131,6 +139,7 @@ TEST_CASE("safe files: a resume never pads, and a saved state is never discarded
   CHECK(read_text(d / "r.csv.resume") == state);
   // The .part shortened from outside: refused, never padded with zeros.
   const auto size = fs::file_size(d / "r.csv.part");
+  const std::string part = read_text(d / "r.csv.part");
   fs::resize_file(d / "r.csv.part", size / 2);
   check_refused(run(args + " --resume"), 2, "fewer than");
   CHECK(fs::file_size(d / "r.csv.part") == size / 2);
@@ -145,6 +154,24 @@ TEST_CASE("safe files: a resume never pads, and a saved state is never discarded
   dup.insert(1, "\"done\":0,");
   write_text(d / "r.csv.resume", dup);
   check_refused(run(args + " --resume"), 2, "appears twice");
+  // A state whose counts disagree (edited by hand): refused, never a wrong count. Before, a `done`
+  // below the summary's pairs repeated pairs (order 300: 15698 pairs reported of 13698, rows
+  // doubled, exit 0), and a `done` beyond the sweep's pairs ended it at once with exit 0.
+  write_text(d / "r.csv.part", part);
+  for (const auto& [key, value, message] : std::vector<std::tuple<std::string, std::uint64_t, std::string>>{
+           {"done", 300, "is inconsistent"},
+           {"values_count", 5, "is inconsistent"},
+           {"rows_bytes", 0, "do not end a line"}}) {
+    json edited = json::parse(state);
+    edited[key] = key == "rows_bytes" ? edited["rows_bytes"].get<std::uint64_t>() - 10 : value;
+    write_text(d / "r.csv.resume", edited.dump());
+    INFO(key);
+    check_refused(run(args + " --resume"), 2, message);
+  }
+  json beyond = json::parse(state);
+  beyond["done"] = beyond["summary"]["pairs"] = std::uint64_t(1000000);
+  write_text(d / "r.csv.resume", beyond.dump());
+  check_refused(run(args + " --resume"), 2, "but the sweep has");
   // --fresh discards it and gives the same rows as a lone run.
   REQUIRE(run(args + " --fresh").status == 0);
   REQUIRE(run("sweep --max-order 120 --quiet --threads 1 --out " + d / "lone.csv").status == 0);
@@ -246,6 +273,22 @@ TEST_CASE("safe files: directories, devices and oversized inputs", "[cli][files]
   c.insert(c.find('{') + 1, "\"tau\": \"7\", ");
   write_text(d / "dup.json", c);
   check_refused(run("check " + d / "dup.json"), 2, "appears twice");
+  // Likewise a coupling certificate (horizon-theorem/1), which its checker read with "last wins".
+  REQUIRE(run("coupling 2 --horizon 100 --certificate " + d / "cc.json").status == 0);
+  std::string cc = read_text(d / "cc.json");
+  cc.insert(cc.find('{') + 1, "\"digits\": 5, ");
+  write_text(d / "ccdup.json", cc);
+  check_refused(run("check " + d / "ccdup.json"), 2, "appears twice");
+  // A field holding a newline (JSON "\n") is quoted in the message on one line, escaped (it was
+  // printed as is: two lines).
+  std::string nl = read_text(d / "c.json");
+  nl.replace(nl.find("\"6\""), 3, "\"6\\n\"");
+  write_text(d / "nl.json", nl);
+  check_refused(run("check " + d / "nl.json"), 2, "is not an integer: '6\\n'");
+  std::string ccnl = read_text(d / "cc.json");
+  ccnl.replace(ccnl.find("\"4\""), 3, "\"4\\n\"");
+  write_text(d / "ccnl.json", ccnl);
+  check_refused(run("check " + d / "ccnl.json"), 2, "'4\\n'");
 }
 
 TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") {
@@ -257,6 +300,10 @@ TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") 
   check_refused(run("sweep --max-order 50 --min-order -5 --state " + d / "s"), 2, "--min-order");
   check_refused(run("sweep --max-order 50 --checkpoint nan --state " + d / "s"), 2, "--checkpoint");
   check_refused(run("sweep --max-order 50 --resume --fresh --state " + d / "s"), 2, "exclude");
+  // Out of range: refused, not an abort (too many threads) nor a wrapped-around count.
+  check_refused(run("sweep --max-order 50 --threads 100000 --state " + d / "s"), 2, "--threads must be in [0, 4096]");
+  check_refused(run("sweep --max-order 50 --max-pairs -5 --state " + d / "s"), 2, "--max-pairs must be >= 0");
+  check_refused(run("sweep --max-order 2 --state " + d / "s"), 2, "--max-order must be >= 3");
   CHECK_FALSE(path_exists(d / "s"));
   // What certify writes, check reads: a tau beyond the checker's digits is refused by certify.
   const std::string big = "1" + std::string(20000, '0') + "1";
@@ -278,4 +325,126 @@ TEST_CASE("safe files: bounded work, limits and exit statuses", "[cli][files]") 
   CHECK(bare.out.empty());
   CHECK(has(bare.err, "Usage"));
   CHECK(has(bare.err, "Exit status"));
+}
+
+TEST_CASE("safe files: the lock files are paths of the command too", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  const std::string q = " --quiet --threads 1";
+  // A rows file named like a lock file would be truncated by the lock and removed at the end.
+  check_refused(run("sweep --max-order 60 --summary " + d / "a.json --out " + d / "a.json.lock" + q), 2, "are the same file");
+  check_refused(run("sweep --max-order 60 --state " + d / "s --out " + d / "s.lock" + q), 2, "are the same file");
+  CHECK_FALSE(path_exists(d / "a.json.lock"));
+  CHECK_FALSE(path_exists(d / "s.lock"));
+  // merge's lock on --summary OUT is OUT.lock: an input of that name is refused, not destroyed.
+  REQUIRE(run("sweep --max-order 60 --shard 0/2 --out " + d / "m.json.lock" + q).status == 0);
+  REQUIRE(run("sweep --max-order 60 --shard 1/2 --out " + d / "r1.csv" + q).status == 0);
+  const std::string shard0 = read_text(d / "m.json.lock");
+  check_refused(run("merge " + d / "m.json.lock " + d / "r1.csv --summary " + d / "m.json"), 2, "are the same file");
+  CHECK(read_text(d / "m.json.lock") == shard0);
+  // A file of the user's at PATH.lock is neither truncated nor removed; a stale lock file (a pid
+  // line left by a killed run) is taken over and removed at the end.
+  write_text(d / "n.json.lock", "my notes\n");
+  check_refused(run("sweep --max-order 60 --summary " + d / "n.json" + q), 2, "is not a gyrores lock file");
+  CHECK(read_text(d / "n.json.lock") == "my notes\n");
+  CHECK_FALSE(path_exists(d / "n.json"));
+  write_text(d / "o.json.lock", "12345\n");
+  REQUIRE(run("sweep --max-order 60 --summary " + d / "o.json" + q).status == 0);
+  CHECK_FALSE(path_exists(d / "o.json.lock"));
+}
+
+TEST_CASE("safe files: figures follow the same rules (plot, pareto --plot, report)", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  write_text(d / "victim", "precious\n");
+  // Checked before the work: a link, a directory, a link as the CSV of pareto.
+  fs::create_symlink(d / "victim", d / "link.svg");
+  check_refused(run("plot phase 6 5 --out " + d / "link.svg"), 2, "symbolic link");
+  CHECK(fs::is_symlink(d / "link.svg"));
+  fs::create_directory(d / "dir.svg");
+  check_refused(run("plot pareto --max-order 200 --out " + d / "dir.svg"), 2, "is a directory");  // was exit 0, no image
+  CHECK_FALSE(path_exists(d / "dir.dat"));
+  fs::create_symlink(d / "victim", d / "front.csv");
+  check_refused(run("pareto --max-order 200 --out " + d / "front.csv"), 2, "symbolic link");
+  fs::create_symlink(d / "victim", d / "g.svg");
+  check_refused(run("pareto --max-order 200 --plot " + d / "g.svg"), 2, "symbolic link");
+  fs::create_directory(d / "rep");
+  fs::create_directory(d / "rep/figures");
+  fs::create_symlink(d / "victim", d / "rep/figures/x.png");
+  check_refused(run("report --out " + d / "rep"), 2, "symbolic link");
+  CHECK_FALSE(path_exists(d / "rep/REPORT.md"));
+  CHECK(read_text(d / "victim") == "precious\n");
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return;  // the image needs gnuplot
+  // gnuplot wrote to the predictable STEM.tmpPID.svg and its stderr to STEM.gnuplot-stderr.tmpPID,
+  // following links: links planted there for the next pids made `plot --out q.svg` overwrite
+  // their target, and q.svg became a link to it. gnuplot now writes in a private directory.
+  std::ifstream last("/proc/sys/kernel/ns_last_pid");
+  long pid = 0;
+  if (last >> pid)
+    for (long p = pid + 1; p < pid + 200; ++p) {
+      fs::create_symlink(d / "victim", d / ("q.tmp" + std::to_string(p) + ".svg"));
+      fs::create_symlink(d / "victim", d / ("q.gnuplot-stderr.tmp" + std::to_string(p)));
+    }
+  REQUIRE(run("plot phase 6 5 --out " + d / "q.svg").status == 0);
+  CHECK(read_text(d / "victim") == "precious\n");
+  CHECK_FALSE(fs::is_symlink(d / "q.svg"));
+  CHECK(has(read_text(d / "q.svg"), "<svg"));
+  // A replaced image keeps its mode; no private directory is left behind.
+  REQUIRE(::chmod((d / "q.svg").c_str(), 0600) == 0);
+  REQUIRE(run("plot phase 6 5 --out " + d / "q.svg").status == 0);
+  struct stat st {};
+  REQUIRE(::stat((d / "q.svg").c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0600);
+  int private_dirs = 0;
+  for (const auto& e : fs::directory_iterator(d.path())) private_dirs += has(e.path().filename().string(), ".gyrores-tmp");
+  CHECK(private_dirs == 0);
+}
+
+TEST_CASE("safe files: SIGINT and SIGTERM end every command with exit 130", "[cli][files]") {
+  if (!cli_available()) return;
+  temp_dir d("test_safe_files");
+  // report: std::system ignored SIGINT in gyrores while gnuplot ran, so the signal was lost and
+  // the report went on to exit 0. Signalled as soon as it has started drawing.
+  const int pid = gyrores::test::cli_spawn("report --out " + d / "rep", d / "r.out", d / "r.err");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!path_exists(d / "rep/figures") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ::kill(pid, SIGINT);
+  const int status = gyrores::test::cli_wait(pid);
+  if (status == 0) {
+    WARN("the report ended before SIGINT reached it");
+  } else {
+    CHECK(status == 130);
+    CHECK(has(read_text(d / "r.err"), "interrupted"));
+    CHECK_FALSE(path_exists(d / "rep/REPORT.md"));
+    int private_dirs = 0;
+    for (const auto& e : fs::directory_iterator(d / "rep/figures")) private_dirs += has(e.path().filename().string(), ".gyrores-tmp");
+    CHECK(private_dirs == 0);
+  }
+  // SIGTERM killed the other commands (128 + 15 in a shell); now 130 as documented, like a sweep.
+  const int band = gyrores::test::cli_spawn("coupling 0.2 --tolerance 10% --horizon 1e6", d / "b.out", d / "b.err");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ::kill(band, SIGTERM);
+  CHECK(gyrores::test::cli_wait(band) == 130);
+  CHECK(read_text(d / "b.out").empty());
+}
+
+TEST_CASE("safe files: a long command shows progress on a terminal", "[cli][files]") {
+  if (!cli_available()) return;
+  if (std::system("command -v script >/dev/null 2>&1 && command -v timeout >/dev/null 2>&1") != 0) return;
+  // script(1) gives gyrores a terminal; timeout stops it with SIGINT after 3 s (band: ~10 s or more).
+  const std::string cmd = "script -qfec \"timeout -s INT 3 " + gyrores::test::cli_path() +
+                          " coupling 0.2 --tolerance 10% --horizon 1e6 >/dev/null\" /dev/null 2>&1";
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    ::pclose(p);
+  }
+  INFO(out);
+  CHECK(has(out, "gyrores coupling: proving the band's worst and best minimum"));
+  CHECK(has(out, "(Ctrl-C stops it)"));
+  CHECK(has(out, "gyrores: interrupted"));
 }

@@ -349,6 +349,20 @@ int check_reals(const certificate& c, const Z& a, const Z& b, long prec) {
          check_claim(c.t_first, tf, c.digits, false, "t_first", prec);
 }
 
+// The verdict is one line: a field quoted in a message may hold a newline or other control
+// character from the file (a JSON string may hold one), shown escaped instead.
+std::string one_line(const std::string& s) {
+  static const char hex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n') out += "\\n";
+    else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    else out += ch;
+  }
+  return out;
+}
+
 }  // namespace
 
 verdict check_theorem_certificate(const std::string& json_text) {
@@ -368,9 +382,9 @@ verdict check_theorem_certificate(const std::string& json_text) {
                        decimal(c.sigma) + ") to " + std::to_string(c.digits) + " digits"};
     return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
   } catch (const malformed& e) {
-    return {2, std::string("malformed: ") + e.what()};
+    return {2, one_line(std::string("malformed: ") + e.what())};
   } catch (const fails& e) {
-    return {1, std::string("FAILS: ") + e.what()};
+    return {1, one_line(std::string("FAILS: ") + e.what())};
   }
 }
 

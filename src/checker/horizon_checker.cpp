@@ -25,6 +25,8 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace gyrores_checker {
 
@@ -391,10 +393,26 @@ lobe_data lobe_field(const json& j, const std::string& name) {
   return l;
 }
 
+// json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate
+// could otherwise show a reader one value and the checker another; docs/formats.md).
+json parse_without_duplicate_keys(const std::string& text) {
+  std::vector<std::set<std::string>> open;
+  const json::parser_callback_t on_event = [&](int, json::parse_event_t ev, json& parsed) {
+    if (ev == json::parse_event_t::object_start) open.emplace_back();
+    if (ev == json::parse_event_t::object_end && !open.empty()) open.pop_back();
+    if (ev == json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
+      throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
+    return true;
+  };
+  return json::parse(text, on_event);
+}
+
 certificate read(const std::string& text) {
   json j;
   try {
-    j = json::parse(text);
+    j = parse_without_duplicate_keys(text);
+  } catch (const malformed&) {
+    throw;
   } catch (const std::exception& e) {
     throw malformed(std::string("not JSON: ") + e.what());
   }
@@ -940,6 +958,20 @@ int check_below(const certificate& c, const rotation& R, long prec) {
   return check_claim(need(c.t_below, "below.t_below"), t, c.digits, false, "below.t_below", prec);
 }
 
+// The verdict is one line: a field quoted in a message may hold a newline or other control
+// character from the file (a JSON string may hold one), shown escaped instead.
+std::string one_line(const std::string& s) {
+  static const char hex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n') out += "\\n";
+    else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    else out += ch;
+  }
+  return out;
+}
+
 }  // namespace
 
 verdict check_coupling_certificate(const std::string& json_text) {
@@ -966,9 +998,9 @@ verdict check_coupling_certificate(const std::string& json_text) {
                        "; every claim to " + std::to_string(c.digits) + " digits"};
     return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
   } catch (const malformed& e) {
-    return {2, std::string("malformed: ") + e.what()};
+    return {2, one_line(std::string("malformed: ") + e.what())};
   } catch (const fails& e) {
-    return {1, std::string("FAILS: ") + e.what()};
+    return {1, one_line(std::string("FAILS: ") + e.what())};
   }
 }
 

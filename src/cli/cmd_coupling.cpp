@@ -14,6 +14,7 @@
 #include <gyrores/io/report_json.hpp>
 
 #include "cli_options.hpp"
+#include "cli_process.hpp"
 #include "commands.hpp"
 #include "pair_output.hpp"
 
@@ -158,6 +159,7 @@ std::string run_coupling(const coupling_args& a) {
     band_options bo;
     bo.digits = unsigned(a.band_digits);
     bo.max_evaluations = std::size_t(a.band_evaluations);
+    progress_stage("proving the band's worst and best minimum (at most " + std::to_string(bo.max_evaluations) + " evaluations each)");
     const band_report b = prove_band(band->first, band->second, parse_horizon_time(a.horizon, "--horizon"), bo);
     if (!a.json) return band_text(a, b);
     return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_json(b)}}) + "\n";
@@ -185,6 +187,7 @@ std::string run_coupling(const coupling_args& a) {
     band_options bo;
     bo.digits = unsigned(a.band_digits);
     bo.max_evaluations = std::size_t(a.band_evaluations);
+    progress_stage("proving the band's worst and best minimum (at most " + std::to_string(bo.max_evaluations) + " evaluations each)");
     b = prove_band(band->first, band->second, opt.horizon, bo);
   }
   if (!a.json) return coupling_text(a, r) + (b ? band_text(a, *b) : "");

@@ -26,7 +26,8 @@ std::string run_merge(const merge_args& a) {
   // files), and no other run writes it; the inputs are checked by sweep_merge.
   path_lock lock;
   if (!a.summary.empty()) {
-    std::vector<named_path> paths{{"--summary", a.summary}};
+    // The lock file too: merge writes and removes it (an input named OUT.lock would be lost).
+    std::vector<named_path> paths{{"--summary", a.summary}, {"the lock file of --summary", path_lock_file(a.summary)}};
     for (const auto& f : a.files) {
       paths.push_back({"input", f});
       paths.push_back({"the values file of input", f + ".values"});

@@ -10,6 +10,7 @@
 #include <gyrores/io/json.hpp>
 
 #include "cli_options.hpp"
+#include "cli_process.hpp"
 #include "commands.hpp"
 #include "pair_output.hpp"
 #include "plots.hpp"
@@ -110,10 +111,18 @@ std::string run_pareto(const pareto_args& a) {
   if (!a.out.empty() && fs::path(a.out).extension() != ".csv") throw usage_error("--out must end in .csv, got '" + a.out + "'");
   const design_time which = a.proxy ? design_time::proxy : design_time::first_hit;
   check_max_order_flag(a.max_order);
+  // Every output checked before the work (io/files.hpp), the CSV against the figure's files too.
+  if (!a.out.empty()) {
+    if (!fs::path(a.out).parent_path().empty()) ensure_directory(fs::path(a.out).parent_path());
+    if (spec) check_figure_outputs(*spec, {{"--out", a.out}});
+    else check_output_path(a.out);
+  }
+  progress_stage("evaluating every pair up to order " + std::to_string(a.max_order));
   for (const auto& p : design_catalogue(a.max_order))
     if (pair_filter_accepts(f, p)) r.pairs.push_back(p);
   if (r.pairs.empty()) throw compute_error("no resonant pair up to order " + std::to_string(a.max_order) + " passes the filters");
   r.front = pareto_front(r.pairs, r.orientation, which);
+  progress_stage("proving the values of the " + std::to_string(r.front.size()) + " front pairs");
   for (const auto& p : r.front) r.values.push_back(prove_pair_values(resonant_pair<big_int>(big_int(p.tau), big_int(p.sigma)), unsigned(a.digits)));
   if (!a.out.empty()) r.csv = write_front_csv(a.out, r);
   if (spec)

@@ -12,6 +12,7 @@
 #include <gyrores/model/resonant.hpp>
 
 #include "cli_options.hpp"
+#include "cli_process.hpp"
 #include "commands.hpp"
 #include "plots.hpp"
 
@@ -119,6 +120,7 @@ std::string run_pareto_plot(const plot_args& a) {
   const pareto_orientation o = parse_orientation_flag(a.orientation);
   auto spec = figure_spec_from_out(a.out.empty() ? "pareto.svg" : a.out, a.size, 900, 640);
   check_max_order_flag(a.max_order);
+  progress_stage("evaluating every pair up to order " + std::to_string(a.max_order));
   auto cat = design_catalogue(a.max_order);
   std::vector<design_point> pts;
   for (auto& p : cat)

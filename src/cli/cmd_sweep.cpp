@@ -60,8 +60,11 @@ struct sweep_args {
   std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t examples = 5;
   double checkpoint = 300;
-  std::uint64_t max_pairs = 0;
+  long max_pairs = 0;  // signed, so that a negative count is refused rather than wrapped around
 };
+
+// More threads than this is a typo (the system refuses to start them: the sweep would abort).
+constexpr unsigned max_threads = 4096;  // as the Python module's sweep()
 
 std::string with_commas(std::uint64_t v) {
   const std::string digits = std::to_string(v);
@@ -184,7 +187,11 @@ void check_sweep_size(const sweep_args& a, const sweep_config& cfg, const sweep_
 }
 
 sweep_config config_of(const sweep_args& a) {
+  if (a.max_order < 3) throw usage_error("--max-order must be >= 3 (the smallest pair (2, 1) has order 3), got " + std::to_string(a.max_order));
   if (a.max_order > (std::int64_t(1) << 40)) throw usage_error("--max-order must be <= 2^40 = 1099511627776");
+  if (a.threads > max_threads)
+    throw usage_error("--threads must be in [0, " + std::to_string(max_threads) + "] (0: all cores), got " + std::to_string(a.threads));
+  if (a.max_pairs < 0) throw usage_error("--max-pairs must be >= 0 (0: no limit), got " + std::to_string(a.max_pairs));
   if (a.min_order < 3 || a.min_order > a.max_order)
     throw usage_error("--min-order must be in [3, --max-order], got " + std::to_string(a.min_order));
   if (a.examples > 1000) throw usage_error("--examples must be <= 1000");
@@ -227,7 +234,7 @@ sweep_files files_of(const sweep_args& a) {
 sweep_report run_at_precision(const sweep_args& a, const sweep_config& cfg, const sweep_files& files) {
   sweep_engine_options eo;
   eo.threads = a.threads;
-  eo.max_pairs = a.max_pairs;
+  eo.max_pairs = std::uint64_t(a.max_pairs);
   eo.stop = &g_stop;
   if (a.digits <= 15) return run_typed<double>(cfg, files, eo, a.quiet);
   if (a.digits <= 30) return run_typed<float128>(cfg, files, eo, a.quiet);
@@ -264,7 +271,7 @@ command_runner install_sweep(CLI::App& app) {
   sub.add("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
   sub.add("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
   sub.add("--summary", a->summary, "summary as JSON to FILE (a shard run also writes FILE.values for merge)");
-  sub.add("--threads", a->threads, "worker threads (0: all cores)", show::with_default);
+  sub.add("--threads", a->threads, "worker threads (0: all cores; at most 4096)", show::with_default);
   sub.add("--shard", a->shard, "only part I of N (0-based) of the enumeration; combine with 'gyrores merge'",
           show::with_default);
   sub.flag("--certified", a->certified,

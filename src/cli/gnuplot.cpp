@@ -11,17 +11,11 @@
 #include <sstream>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/io/files.hpp>
+
+#include "cli_process.hpp"
 
 namespace gyrores::cli {
-
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
-  }
-  return out + "'";
-}
 
 std::string gnuplot_string(const std::string& s) {
   std::string out = "\"";
@@ -32,7 +26,7 @@ std::string gnuplot_string(const std::string& s) {
   return out + "\"";
 }
 
-bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+bool gnuplot_available() { return program_in_path("gnuplot"); }
 
 image_format image_format_of(const fs::path& p) {
   std::string e = p.extension().string();
@@ -76,34 +70,37 @@ render_result gnuplot_render(const fs::path& dir, const std::string& script, con
     r.message = "gnuplot not found (Debian: apt-get install gnuplot-nox); data and script written, image not drawn";
     return r;
   }
-  fs::path img(image);
-  std::string tmp = img.stem().string() + ".tmp" + std::to_string(::getpid()) + img.extension().string();
-  fs::path errf = dir / (img.stem().string() + ".gnuplot-stderr.tmp" + std::to_string(::getpid()));
-  std::string cmd = "cd " + shell_quote(dir.string()) + " && gnuplot -e " + shell_quote("outfile='" + tmp + "'") + " " +
-                    shell_quote(script) + " >/dev/null 2>" + shell_quote(errf.filename().string());
-  int st = std::system(cmd.c_str());
+  // gnuplot opens its output by name and follows links: it writes into a directory of our own
+  // (mode 700, beside the image), and the finished image is moved over IMAGE by io/files's
+  // rules (a link, device or directory there is refused, the replaced file's mode kept).
+  const fs::path target = dir / image;
+  const std::string priv = make_private_directory(target.string());
+  const std::string name = "image" + fs::path(image).extension().string();
+  const std::string tmp = (fs::path(priv) / name).string();
+  const std::string outfile = (fs::path(priv).filename() / name).string();  // relative to dir
   std::string err;
-  {
-    std::ifstream in(errf);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    err = ss.str();
+  int st = -1;
+  try {
+    st = run_helper({"gnuplot", "-e", "outfile=" + gnuplot_string(outfile), script}, dir.string(), priv, tmp, err);
+  } catch (...) {
+    remove_private_directory(priv);
+    throw;
   }
   std::error_code ec;
-  fs::remove(errf, ec);
-  if (st != 0 || !fs::exists(dir / tmp) || fs::file_size(dir / tmp, ec) == 0) {
-    fs::remove(dir / tmp, ec);
+  if (st != 0 || !fs::is_regular_file(fs::symlink_status(tmp, ec)) || fs::file_size(tmp, ec) == 0) {
+    remove_private_directory(priv);
     for (auto& c : err)
       if (c == '\n') c = ' ';
     r.message = "gnuplot failed on " + (dir / script).string() + (err.empty() ? "" : ": " + err.substr(0, 300));
     return r;
   }
-  fs::rename(dir / tmp, dir / image, ec);
-  if (ec) {
-    fs::remove(dir / tmp, ec);
-    r.message = "cannot rename the image to " + (dir / image).string();
-    return r;
+  try {
+    install_file(tmp, target.string());
+  } catch (...) {
+    remove_private_directory(priv);
+    throw;
   }
+  remove_private_directory(priv);
   r.rendered = true;
   return r;
 }

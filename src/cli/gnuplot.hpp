@@ -6,8 +6,10 @@
 // name's extension: .svg -> svg, .png -> pngcairo, .pdf -> pdfcairo, .eps -> epscairo, the
 // journal formats, at 100 pixels per inch) and the image. To restyle, edit NAME.gp and run
 //     cd DIR && gnuplot -e "outfile='NAME.svg'" NAME.gp
-// gnuplot is run the same way, writing to a temporary name that is renamed over the image when
-// gnuplot succeeds, so a failed or interrupted run never leaves a half-written image.
+// gnuplot is run the same way (no shell), writing into a private directory (mode 700, beside the
+// image); the finished image is moved over the final name by io/files.hpp's rules (never through
+// a link, onto a device or a directory; the replaced file's mode kept), so a failed or
+// interrupted run never leaves a half-written image and nothing planted beside it is written.
 // When gnuplot is missing (Debian: apt-get install gnuplot-nox), the data and script are still
 // written and the caller says so.
 #pragma once
@@ -18,8 +20,6 @@ namespace gyrores::cli {
 
 namespace fs = std::filesystem;
 
-// s in single quotes for /bin/sh.
-std::string shell_quote(const std::string& s);
 
 // gnuplot string literal in double quotes (backslash and quote escaped).
 std::string gnuplot_string(const std::string& s);
@@ -44,9 +44,11 @@ struct render_result {
   std::string message;  // why not, when not rendered
 };
 
-// Run `gnuplot -e "outfile='IMAGE.tmp'" SCRIPT` in `dir`, then rename the temporary image to
+// Run `gnuplot -e "outfile='PRIVATE/image.EXT'" SCRIPT` in `dir`, then install the image as
 // `image` (a file name in `dir`). Never throws for a gnuplot failure: the result says what
-// happened (the data and script stay, so the user can run it themselves).
+// happened (the data and script stay, so the user can run it themselves). Throws usage_error
+// when the image cannot be installed (io/files.hpp), `interrupted` when gnuplot was stopped by
+// SIGINT or SIGTERM.
 render_result gnuplot_render(const fs::path& dir, const std::string& script, const std::string& image);
 
 }  // namespace gyrores::cli

@@ -14,11 +14,13 @@
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/stop.hpp>
 
 #include "cli_options.hpp"
+#include "cli_process.hpp"
 #include "cli_output.hpp"
 #include "commands.hpp"
 
@@ -132,7 +134,13 @@ int run(int argc, char** argv, bool execute) {
 
   try {
     for (auto* sub : app.get_subcommands()) {
-      std::string out = runners.at(sub->get_name())();
+      std::string out;
+      {
+        // A command still running after 2 s says so on a terminal (the sweep draws its own bar).
+        std::optional<progress_line> progress;
+        if (sub->get_name() != "sweep") progress.emplace(sub->get_name());
+        out = runners.at(sub->get_name())();
+      }
       if (!print_stdout(out)) return cannot_write_stdout(errno);
     }
     return 0;
@@ -179,6 +187,7 @@ void reserve_standard_fds() {
 
 int main(int argc, char** argv) {
   reserve_standard_fds();
+  gyrores::cli::install_interrupt_handlers();  // SIGINT, SIGTERM: exit 130 (cli_process.hpp)
   int status = gyrores::cli::run(argc, argv, true);
   // The final flush and close: a full disk may only show here.
   if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && status == 0) status = gyrores::cli::cannot_write_stdout(errno);

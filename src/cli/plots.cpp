@@ -10,6 +10,7 @@
 #include <gyrores/core/real.hpp>
 #include <gyrores/io/files.hpp>
 
+#include "cli_process.hpp"
 #include "gnuplot.hpp"
 
 namespace gyrores::cli {
@@ -23,6 +24,7 @@ figure_output figure_finish(const figure_spec& s, const std::string& data, const
   write_file_atomically(o.data, data);
   write_file_atomically(o.script, script);
   for (const auto& img : s.images) {
+    progress_stage("drawing " + img + " with gnuplot");
     auto r = gnuplot_render(s.dir, s.stem + ".gp", img);
     if (r.rendered) o.images.push_back(s.dir / img);
     else if (o.message.empty()) o.message = r.message;
@@ -287,7 +289,17 @@ figure_spec figure_spec_from_out(const fs::path& out, const std::string& size, i
     s.height = h;
   }
   ensure_directory(s.dir);
+  check_figure_outputs(s);
   return s;
+}
+
+void check_figure_outputs(const figure_spec& s, const std::vector<named_path>& more) {
+  std::vector<named_path> paths{{"the figure's data", (s.dir / (s.stem + ".dat")).string()},
+                                {"the figure's script", (s.dir / (s.stem + ".gp")).string()}};
+  for (const auto& img : s.images) paths.push_back({"the figure", (s.dir / img).string()});
+  paths.insert(paths.end(), more.begin(), more.end());
+  check_distinct_paths(paths);
+  for (const auto& p : paths) check_output_path(p.path);
 }
 
 std::string num(double v) {

@@ -9,6 +9,7 @@
 
 #include <gyrores/design/design.hpp>
 #include <gyrores/design/figures.hpp>
+#include <gyrores/io/files.hpp>
 
 namespace gyrores::cli {
 
@@ -29,8 +30,13 @@ struct figure_output {
   bool complete() const { return message.empty(); }
 };
 
-// --out FILE.svg|png and --size WxH into a spec (the directory is created).
+// --out FILE.svg|png and --size WxH into a spec (the directory is created, and its outputs
+// checked: check_figure_outputs).
 figure_spec figure_spec_from_out(const fs::path& out, const std::string& size, int default_w, int default_h);
+
+// Before any work: the figure's files (NAME.dat, NAME.gp, the images) and `more` name distinct
+// files, and each can be written (io/files.hpp: no link, device or directory; usage_error).
+void check_figure_outputs(const figure_spec& s, const std::vector<named_path>& more = {});
 
 // %.10g: how figures and the report print doubles.
 std::string num(double v);

@@ -10,9 +10,11 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include <gyrores/core/error.hpp>
 
@@ -180,6 +182,55 @@ void write_file_atomically(const std::string& path, const std::function<void(con
   }
 }
 
+std::string make_private_directory(const std::string& near) {
+  std::string templ = directory_of(near) + "/.gyrores-tmp.XXXXXX";
+  std::vector<char> buf(templ.begin(), templ.end());
+  buf.push_back('\0');
+  if (::mkdtemp(buf.data()) == nullptr) fail("cannot create a temporary directory beside", near, errno);
+  return std::string(buf.data());
+}
+
+void remove_private_directory(const std::string& dir) noexcept {
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
+}
+
+void install_file(const std::string& tmp, const std::string& path) {
+  auto give_up = [&](int err) {
+    ::unlink(tmp.c_str());
+    fail("cannot write", path, err);
+  };
+  try {
+    check_output_path(path);
+  } catch (...) {
+    ::unlink(tmp.c_str());
+    throw;
+  }
+  const int fd = ::open(tmp.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) give_up(errno);
+  struct stat st {}, old {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    give_up(EINVAL);
+  }
+  if (::stat(path.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) {
+    const int err = errno;
+    ::close(fd);
+    give_up(err);
+  }
+  if (::fsync(fd) != 0) {
+    const int err = errno;
+    ::close(fd);
+    give_up(err);
+  }
+  ::close(fd);
+  if (::rename(tmp.c_str(), path.c_str()) != 0) give_up(errno);
+  if (int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+}
+
 void remove_stale_temporaries(const std::string& path) noexcept {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -244,12 +295,37 @@ std::string in_use_message(const std::string& path, int fd) {
 
 }  // namespace
 
+std::string path_lock_file(const std::string& path) { return path + ".lock"; }
+
+namespace {
+
+// A file already at PATH.lock is taken over only if it is what a gyrores run leaves there: a
+// regular file, empty or holding a pid line. Anything else is the user's (a rows file named
+// X.lock, say), which acquire() would otherwise truncate and remove at the end.
+bool looks_like_lock_file(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > 24) return false;
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf, 0);
+  if (n < 0) return false;
+  const std::string s(buf, std::size_t(n));
+  if (s.empty()) return true;
+  return s.back() == '\n' && s.size() >= 2 && s.find_first_not_of("0123456789") == s.size() - 1;
+}
+
+}  // namespace
+
 path_lock path_lock::acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy) {
-  const std::string lp = path + ".lock";
+  const std::string lp = path_lock_file(path);
   bool told = false;
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+    const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);
     if (fd < 0) fail("cannot create the lock file", lp, errno);
+    if (!looks_like_lock_file(fd)) {
+      ::close(fd);
+      throw usage_error("'" + lp + "' (the lock file of '" + path +
+                        "') exists and is not a gyrores lock file: move it away or choose other files");
+    }
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       int err = errno;
       if (err == EWOULDBLOCK) {
@@ -363,6 +439,18 @@ void truncate_file(const std::string& path, std::uint64_t size) {
     fail("cannot truncate", path, e);
   }
   ::close(fd);
+}
+
+void keep_mode_of(const std::string& replaced, const std::string& path) {
+  struct stat old {};
+  if (::lstat(replaced.c_str(), &old) != 0 || !S_ISREG(old.st_mode)) return;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) fail("cannot change the mode of", path, errno);
+  struct stat st {};
+  const bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::fchmod(fd, old.st_mode & 07777) == 0;
+  const int err = errno;
+  ::close(fd);
+  if (!ok) fail("cannot change the mode of", path, err ? err : EINVAL);
 }
 
 void rename_file(const std::string& from, const std::string& to) {

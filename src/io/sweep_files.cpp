@@ -92,7 +92,12 @@ void sweep_file_session::check_paths_and_lock() {
                                       {"the summary", files_.summary_path},
                                       {"the summary's values file", shard_values ? files_.summary_path + ".values" : ""},
                                       {"the resume state", state_},
-                                      {"the resume state's values", values_}};
+                                      {"the resume state's values", values_},
+                                      // The lock files are written and removed too: a rows file
+                                      // named SUMMARY.lock would be lost at the end of the run.
+                                      {"the resume state's lock file", path_lock_file(state_)},
+                                      {"the summary's lock file", files_.summary_path.empty() ? "" : path_lock_file(files_.summary_path)},
+                                      {"the rows file's lock file", rows_ ? path_lock_file(files_.rows_path) : std::string()}};
   check_distinct_paths(paths);
   for (const auto& p : paths)
     if (!p.path.empty()) check_output_path(p.path);
@@ -115,6 +120,7 @@ void sweep_file_session::start_fresh() {
   remove_file(values_);  // created when values first go there (short runs need no file)
   if (!rows_) return;
   rows_file_ = append_file(rows_part_, append_file::mode::create);
+  keep_mode_of(files_.rows_path, rows_part_);  // a mode-600 rows file is not readable by others meanwhile
   const std::string h = sweep_rows_header(run_, files_.rows_format);
   rows_file_.write(h);
   rows_bytes_ = h.size();
@@ -130,7 +136,11 @@ void sweep_file_session::restore() {
   start_ = st.at("done").get<std::uint64_t>();
   seconds_before_ = st.at("seconds").get<double>();
   acc_ = sweep_accumulator_from_json(st.at("summary"), cfg_.max_examples);
-  restore_values(st.at("values_count").get<std::uint64_t>());
+  // The counts must agree with each other: a state edited (or mixed up) outside gyrores would
+  // otherwise skip or repeat pairs and print a wrong count with exit 0.
+  const std::uint64_t values_count = st.at("values_count").get<std::uint64_t>();
+  check_state_counts(values_count);
+  restore_values(values_count);
   if (!rows_) return;
   rows_bytes_ = st.at("rows_bytes").get<std::uint64_t>();
   // A run stopped after renaming its finished rows file but before removing the state (the last
@@ -145,8 +155,44 @@ void sweep_file_session::restore() {
     throw usage_error("cannot resume: the rows file '" + rows_part_ + "' has " + std::to_string(have) +
                       " bytes, fewer than the " + std::to_string(rows_bytes_) +
                       " its state records (changed from outside?): start again with --fresh");
+  check_rows_boundary();
   truncate_file(rows_part_, rows_bytes_);
   rows_file_ = append_file(rows_part_, append_file::mode::append);
+}
+
+void sweep_file_session::check_state_counts(std::uint64_t values_count) const {
+  auto inconsistent = [&](const std::string& why) {
+    return usage_error("cannot resume: the state at '" + state_ + "' is inconsistent (" + why +
+                       "; changed from outside?): start again with --fresh");
+  };
+  const std::uint64_t pairs = acc_.pairs;
+  if (pairs != start_)
+    throw inconsistent("done = " + std::to_string(start_) + ", but its summary counts " + std::to_string(pairs) + " pairs");
+  if (total_ > 0 && start_ > total_)
+    throw inconsistent("done = " + std::to_string(start_) + ", but the sweep has " + std::to_string(total_) + " pairs");
+  if (acc_.degenerate > pairs || acc_.errors.violations > pairs)
+    throw inconsistent("more degenerate or failed pairs than pairs");
+  // One value per non-degenerate pair that did not fail (sweep/summary.hpp).
+  const std::uint64_t most = pairs - acc_.degenerate;
+  const std::uint64_t least = most > acc_.errors.violations ? most - acc_.errors.violations : 0;
+  if (values_count > most || values_count < least)
+    throw inconsistent("values_count = " + std::to_string(values_count) + " for " + std::to_string(most) +
+                       " non-degenerate pairs");
+}
+
+// The recorded length of the rows must end a line (the header or a row): a length from
+// elsewhere would leave half a row in the file.
+void sweep_file_session::check_rows_boundary() const {
+  const std::string header = sweep_rows_header(run_, files_.rows_format);
+  bool ends_line = rows_bytes_ >= header.size();
+  if (ends_line)
+    read_file_range(rows_part_, rows_bytes_ - 1, 1, 1, [&](const void* p, std::size_t) {
+      ends_line = *static_cast<const char*>(p) == '\n';
+    });
+  if (!ends_line)
+    throw usage_error("cannot resume: the state at '" + state_ + "' records " + std::to_string(rows_bytes_) +
+                      " bytes of rows, which do not end a line of '" + rows_part_ +
+                      "' (changed from outside?): start again with --fresh");
 }
 
 // The values file may hold more than recorded (a checkpoint interrupted before the state was
@@ -236,6 +282,7 @@ void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
   if (rows_) {
     rows_file_.write(sweep_rows_trailer(acc_.pairs, seconds, files_.rows_format));
     rows_file_.close();
+    keep_mode_of(files_.rows_path, rows_part_);
     rename_file(rows_part_, files_.rows_path);
   }
   remove_file(state_);

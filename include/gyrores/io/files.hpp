@@ -51,6 +51,19 @@ void check_output_path(const std::string& path);
 // removed and `path` is untouched.
 void write_file_atomically(const std::string& path, std::string_view content);
 
+// For files another program writes (gnuplot's images): a new directory, mode 700, in the
+// directory of `near` (so that a rename from it is atomic), named ".gyrores-tmp.XXXXXX" by
+// mkdtemp. Nobody else can create, replace or link anything in it, so the program may open
+// names in it freely. The caller removes it (remove_private_directory).
+std::string make_private_directory(const std::string& near);
+void remove_private_directory(const std::string& dir) noexcept;  // the directory and the files in it
+
+// Moves a finished file `tmp` (in a private directory on `path`'s file system) over `path` with
+// write_file_atomically's rules: check_output_path(path), the replaced file's permission bits,
+// fsync, rename, the directory fsync'ed. `tmp` must be a regular file (not followed if a link).
+// On failure `tmp` is removed and `path` is untouched.
+void install_file(const std::string& tmp, const std::string& path);
+
 // Removes the temporary files of write_file_atomically(path, ...) that a killed process left
 // behind: `path.tmp.PID[.RANDOM]` for a PID no longer running (never throws). Run before a
 // sweep starts.
@@ -88,12 +101,16 @@ struct named_path {
 // before any work.
 void check_distinct_paths(const std::vector<named_path>& paths);
 
+// The lock file of PATH: PATH.lock (a command checks it against its other paths too).
+std::string path_lock_file(const std::string& path);
+
 // An exclusive advisory lock (flock) on PATH.lock, held until destruction, when the lock file
 // is removed. acquire() does not wait: if another process holds it, usage_error
 // "'PATH' is in use by another gyrores run (pid N)" -- unless `on_busy` is given, which is then
 // called once with that message and the lock waited for (a path the user did not name, shared
 // by default: see sweep_files::on_lock_wait). Locks taken by one process on distinct
-// paths nest. The lock file holds the owner's pid, for that message only.
+// paths nest. The lock file holds the owner's pid, for that message only. An existing PATH.lock
+// that is not such a file (not regular, or other content) is refused, never truncated or removed.
 class path_lock {
  public:
   path_lock() = default;
@@ -114,6 +131,11 @@ class path_lock {
 
 // Cuts a file to `size` bytes (used to drop what a resume does not trust).
 void truncate_file(const std::string& path, std::uint64_t size);
+
+// Gives `path` (a regular file) the permission bits of `replaced` when that exists as a regular
+// file, so that a file renamed over it keeps its mode as write_file_atomically's do (a mode-600
+// rows file stays 600). Nothing to do when `replaced` does not exist.
+void keep_mode_of(const std::string& replaced, const std::string& path);
 
 // Renames `from` over `to` (same file system: atomic).
 void rename_file(const std::string& from, const std::string& to);

@@ -78,6 +78,8 @@ class sweep_file_session {
   void start_fresh();
   void restore();
   void restore_values(std::uint64_t count);
+  void check_state_counts(std::uint64_t values_count) const;
+  void check_rows_boundary() const;
   void spill_values();
   void finish_complete(unsigned threads, sweep_report& rep);
   double elapsed() const;

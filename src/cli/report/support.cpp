@@ -16,6 +16,7 @@ figure_spec figure_set::spec(const std::string& stem, int w, int h) const {
   s.width = w;
   s.height = h;
   s.images = {stem + ".png", stem + ".svg"};
+  check_figure_outputs(s);
   return s;
 }
 
