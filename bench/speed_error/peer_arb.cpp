@@ -163,7 +163,7 @@ std::string skip_arb(const bench_pair&, const precision& pr) {
     return "Arb is a multiprecision ball library; its fixed-precision counterpart is the double start itself";
   if (pr.name == "mp30")
     return "30 digits serve the certificate's comparisons (certificate, theorem_proved, theorem_report, "
-           "ref_lattice, one_eval)";
+           "ref_lattice, one_eval, the theorem-aware Arb peers)";
   return "";
 }
 

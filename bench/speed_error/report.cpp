@@ -114,8 +114,12 @@ void write_definitions(std::ostream& f, const run_context& ctx) {
        "from before the theorem, now the tests' independent references (tests/reference/): *ref_lattice* (lattice "
        "scout and Newton polish), *ref_toms748_local*, *ref_newton_polish*, *ref_global* (global search), and the "
        "paper's asymptotics *theta_asy*, *r_res_asy* (heuristics). Unit of work: *one_eval* (and Arb's "
-       "*arb_one_eval*). Peers: Boost.Odeint simulation, mpmath findroot, plain TOMS 748 on the naive formulation, "
-       "Arb's Newton refinement.\n\n";
+       "*arb_one_eval*). Theorem-aware peers, the limits the theorem's path is measured against (headlines L1, L2): "
+       "the lattice theorem implemented from its statement by an outsider, with none of gyrores' numerics "
+       "(bench/speed_error/peer_newton.hpp, peer_theorem.cpp): *peer_newton* (plain double Newton), *peer_arb_ball* "
+       "(Arb balls: Newton, interval Newton proof, the certificate's claims and the correct roundings) and "
+       "*peer_arb_calc* (Arb's arb_calc_refine_root_newton). Other peers: Boost.Odeint simulation, mpmath findroot, "
+       "plain TOMS 748 on the naive formulation, Arb's Newton refinement of the root alone.\n\n";
   f << "**Reference.** src/testing/high_precision_reference.hpp, independent of the library's numerics: the naive "
        "formulation (sin(tau theta) formed directly) at brute precision (digits + 2 log2(a) + 96 bits), bisection then "
        "Newton with precision doubling; all 4 tau critical points for orders <= 1e5, +-4 fast half-periods around a "
@@ -125,6 +129,9 @@ void write_definitions(std::ostream& f, const run_context& ctx) {
 
 void write_headlines(std::ostream& f, const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   f << "## Headline figures\n\n";
+  f << "L1 and L2: gyrores' paths as ratios to the theorem-aware peers, the limits. H1-H5: the theorem's path "
+       "against the methods from before it and the other peers, each also quoted against the theorem-aware "
+       "peers. Every ratio is of two rows of this run.\n\n";
   for (const auto& h : compute_headlines(rows, pairs)) {
     f << "**" << h.id << ". " << h.target << "**: " << verdict(h) << ".\n\n";
     if (!h.remark.empty()) f << h.remark << "\n\n";
