@@ -261,7 +261,7 @@ run_context describe_run(int argc, char** argv, const options& opt) {
 
 // ---- after the timing -----------------------------------------------------------------------
 
-// Peer (b): mpmath, in the same run (not in --quick, nor with --no-mpmath or a --methods list
+// The mpmath peer, in the same run (not in --quick, nor with --no-mpmath or a --methods list
 // without it). Its rows are appended to `rows`.
 void run_mpmath(const options& opt, const char* argv0, const std::vector<bench_pair>& pairs,
                 const std::vector<precision>& precisions, const std::map<std::string, reference>& refs,

@@ -220,7 +220,7 @@ void write_methods(std::ostream& f, const std::vector<method_def>& methods, cons
     }
     f << "| " << m.name << " | " << m.description << " |\n";
   }
-  f << "| mpmath_findroot | **peer (b)**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) at "
+  f << "| mpmath_findroot | **peer, mpmath**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) at "
        "`mp.dps` = digits, from theta_first rounded to ceil(log10 a) + 8 digits and a point 1e-4 half-periods away "
        "(bench/mpmath_peer.py); then r = rho0 |sin tau theta + sin sigma theta| |\n\n";
   f << "Precisions: `double`, `long_double` (x87, 64-bit mantissa), `float128` (Boost.Multiprecision, libquadmath), "
@@ -274,8 +274,9 @@ void write_skips(std::ostream& f, const std::vector<skip_note>& skips, const std
   }
   for (const auto& key : order)
     f << "- `" << key.first << "` at " << skip_where(by[key], pairs, precisions) << ": " << key.second << ".\n";
-  f << "- `mpmath_findroot` runs at mp50, mp100 and mp1000 only (the issue's precisions): mpmath is arbitrary "
-       "precision only, and pure-Python mpmath at 10000 digits is not a peer anyone would choose.\n\n";
+  f << "- `mpmath_findroot` runs at mp50, mp100 and mp1000 only: mpmath is arbitrary precision only, 30 digits "
+       "serve the certificate's comparisons, and pure-Python mpmath at 10000 digits is not a peer anyone would "
+       "choose.\n\n";
 }
 
 void write_notes(std::ostream& f, const std::vector<measurement>& rows) {
