@@ -332,8 +332,8 @@ std::string skip_theorem_double(const bench_pair& bp, const precision& pr) {
 // proved minimum at 16 digits is gyrores' double answer (headline L1).
 std::string skip_theorem_proved(const bench_pair& bp, const precision& pr) {
   if (pr.kind == real_kind::dbl && bp.fits64())
-    return "in double the theorem's path is theorem_double; the proved path runs at 19 digits (the long_double "
-           "row) and up, and in double for the pairs of order >= 2^62, which theorem_double does not take";
+    return "in double the theorem's path is theorem_double (the proved path runs in double only for the pairs of "
+           "order >= 2^62, and at 19 digits and up)";
   return "";
 }
 
