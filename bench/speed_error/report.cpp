@@ -363,7 +363,8 @@ void write_plot_script(const std::string& dir, const run_context& ctx, const std
   for (std::size_t fi = 0; fi < families.size(); ++fi)
     body << "set style line " << fi + 1 << " lc rgb '" << std::vector<std::string>{
         "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
-        "#17becf", "#000000", "#aa0000", "#00aa88", "#0000aa", "#aaaa00", "#aa00aa", "#555555"}[fi % 17]
+        "#17becf", "#000000", "#aa0000", "#00aa88", "#0000aa", "#aaaa00", "#aa00aa", "#555555", "#ff1493",
+        "#3cb44b", "#4363d8"}[fi % 20]
          << "' pt " << (fi % 13) + 1 << " ps 1.1 lw 1.5\n";
   body << "set logscale xy\nset xlabel 'median CPU time per call [s]'\nset ylabel 'correct digits'\n"
        << "set format x '10^{%L}'\nset grid\nset key outside right top font ',9'\nset yrange [0.25:20000]\n";
