@@ -297,7 +297,8 @@ headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>&
       "lobes, integers; peer_arb_ball also decides the correct roundings to the digits from its claims). For context, each value also gives, as ratios to "
       "peer_arb_ball: prove_minimum (theorem_proved: the enclosures of r_res and every minimiser, no decimal text), "
       "prove_pair (theorem_report: everything `gyrores pair` prints, every real correctly rounded) and "
-      "peer_arb_calc (Arb's arb_calc_refine_root_newton, the same claims).";
+      "peer_arb_calc (Arb's arb_calc_refine_root_newton, the same claims). Digits: the certificate is scored at its "
+      "claims' midpoints, peer_arb_ball on its roundings to the digits.";
   return h;
 }
 
