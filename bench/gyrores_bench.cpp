@@ -95,7 +95,8 @@ std::set<std::string> split_list(const std::string& s) {
 void add_options(CLI::App& app, options& o, std::string& methods, std::string& pairs, std::string& precisions) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_flag("--quick", o.quick,
-               "the check: double, 30, 1000 and 10000 digits on (6,5), (10^12+1,10^12), (1000,1), (10^30+1,10^30) (< 60 s)");
+               "the check: double, 30, 1000 and 10000 digits on (6,5), (10^12+1,10^12), (1000,1), (10^30+1,10^30) "
+               "(< 60 s)");
   app.add_option("--csv", o.csv,
                  "one row per (method, precision, pair): method,precision,pair,median_ns,correct_digits,evaluations")
       ->type_name("FILE");

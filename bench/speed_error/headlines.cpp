@@ -294,11 +294,12 @@ headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>&
   h.remark =
       "Like for like: both prove a bracket of u* and enclosures of r_res, theta_first and t_first of relative width "
       "<= 10^-(digits+1) and write them out as decimal claims (the certificate also lists the 2 or 4 minimiser "
-      "lobes, integers; peer_arb_ball also decides the correct roundings to the digits from its claims). For context, each value also gives, as ratios to "
-      "peer_arb_ball: prove_minimum (theorem_proved: the enclosures of r_res and every minimiser, no decimal text), "
-      "prove_pair (theorem_report: everything `gyrores pair` prints, every real correctly rounded) and "
-      "peer_arb_calc (Arb's arb_calc_refine_root_newton, the same claims). Digits: the certificate is scored at its "
-      "claims' midpoints, peer_arb_ball on its roundings to the digits.";
+      "lobes, integers; peer_arb_ball also decides the correct roundings to the digits from its claims). For "
+      "context, each value also gives, as ratios to peer_arb_ball: prove_minimum (theorem_proved: the enclosures "
+      "of r_res and every minimiser, no decimal text), prove_pair (theorem_report: everything `gyrores pair` "
+      "prints, every real correctly rounded) and peer_arb_calc (Arb's arb_calc_refine_root_newton, the same "
+      "claims). Digits: the certificate is scored at its claims' midpoints, peer_arb_ball on its roundings to the "
+      "digits.";
   return h;
 }
 
@@ -394,13 +395,15 @@ std::vector<headline> compute_headlines(const std::vector<measurement>& rows, co
   for (auto& h : out) {
     if (h.id == "H1")
       add_remark(h, peer_remark(rows, pairs, "peer_newton",
-                                {{"theorem_minimum_double", "theorem_double"}, {"theta_asy", "theta_asy"}}, {"double"}));
+                                {{"theorem_minimum_double", "theorem_double"}, {"theta_asy", "theta_asy"}},
+                                {"double"}));
     if (h.id == "H2a")
       add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",
                                 {{"prove_minimum", "theorem_proved"}, {"one evaluation", "one_eval"}}, {"mp1000"}));
     if (h.id == "H2b")
       add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",
-                                {{"naive TOMS 748", "naive_toms748"}, {"prove_minimum", "theorem_proved"}}, {"mp1000"}));
+                                {{"naive TOMS 748", "naive_toms748"}, {"prove_minimum", "theorem_proved"}},
+                                {"mp1000"}));
     if (h.id == "H3") add_remark(h, h3_peer_remark(rows, pairs));
     if (h.id == "H4")
       add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",

@@ -100,7 +100,8 @@ struct problem {
   int m_min = 0, sign = 1;
   ball x, mu, omx2, sqrt_ts, pi;
   std::uint64_t evaluations = 0;
-  problem(const big_int& tau, const big_int& sigma) : a(big_int(tau + sigma)), b(big_int(tau - sigma)), ts(big_int(tau * sigma)) {
+  problem(const big_int& tau, const big_int& sigma)
+      : a(big_int(tau + sigma)), b(big_int(tau - sigma)), ts(big_int(tau * sigma)) {
     m_min = int(fmpz_fdiv_ui(a, 4));
     m_min = m_min == 0 ? 0 : (m_min == 2 ? 2 : 1);
     if (m_min == 0) {  // r_res = 0 at theta = pi/2: key a/4, u = 0
@@ -415,7 +416,8 @@ bench_case peer_arb_calc_case(const bench_pair& bp, const precision& pr, const r
 }
 
 std::string skip_arb_peer(const bench_pair&, const precision& pr) {
-  if (!pr.is_mp()) return "the Arb peers take a number of decimal digits (mp30 to mp10000); in double the plain peer is peer_newton";
+  if (!pr.is_mp())
+    return "the Arb peers take a number of decimal digits (mp30 to mp10000); in double the plain peer is peer_newton";
   return "";
 }
 

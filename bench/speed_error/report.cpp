@@ -220,7 +220,8 @@ void write_methods(std::ostream& f, const std::vector<method_def>& methods, cons
     }
     f << "| " << m.name << " | " << m.description << " |\n";
   }
-  f << "| mpmath_findroot | **peer, mpmath**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) at "
+  f << "| mpmath_findroot | **peer, mpmath**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) "
+       "at "
        "`mp.dps` = digits, from theta_first rounded to ceil(log10 a) + 8 digits and a point 1e-4 half-periods away "
        "(bench/mpmath_peer.py); then r = rho0 |sin tau theta + sin sigma theta| |\n\n";
   f << "Precisions: `double`, `long_double` (x87, 64-bit mantissa), `float128` (Boost.Multiprecision, libquadmath), "
