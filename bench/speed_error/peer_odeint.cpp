@@ -176,7 +176,8 @@ method_def sim_method(const std::string& kind, double param) {
           ? "**peer, simulation**: Boost.Odeint runge_kutta_dopri5, adaptive (abs = rel = tol), dense output; "
             "minimum of H_q over the first period located on the dense output"
           : "**peer, simulation**: Boost.Odeint symplectic_rkn_sb3a_mclachlan, N fixed steps per oscillation, in "
-            "the Larmor frame (the symplectic steppers need a separable Hamiltonian); minimum located by partial re-steps";
+            "the Larmor frame (the symplectic steppers need a separable Hamiltonian); minimum located by partial "
+            "re-steps";
   return {nm, family, desc, skip_sim, [nm, kind, param](const bench_pair& bp, const precision& pr, const reference&) {
             return make_case(
                 nm, pr, bp, [=] { return run_sim(kind, param, bp); },
