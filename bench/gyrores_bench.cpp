@@ -1,14 +1,18 @@
 // gyrores-bench: speed against error for every way of computing the inscribed radius r_res and
 // its minimiser, at every precision, against the peers a user would otherwise use, in one run.
 // The main methods are the theorem's path (include/gyrores/theorem/: theorem_double in double,
-// theorem_proved and theorem_report as proved enclosures, certificate); the library's methods
-// from before the theorem (ref_*, the paper's asymptotics) are comparison methods.
+// theorem_proved and theorem_report as proved enclosures, certificate); its limits are the
+// theorem-aware peers (peer_newton, peer_arb_ball, peer_arb_calc: the theorem implemented without
+// gyrores); the library's methods from before the theorem (ref_*, the paper's asymptotics) are
+// comparison methods.
 //
 //   gyrores-bench --quick [--csv FILE]            the check (< 60 s): double and 1000 digits;
-//                                                 (6,5), (10^12+1,10^12), (1000,1); asymptotics,
-//                                                 theorem (double, proved), reference lattice,
-//                                                 naive TOMS 748, one evaluation, Arb; proved
-//                                                 and certificate at 30 digits
+//                                                 (6,5), (10^12+1,10^12), (1000,1),
+//                                                 (10^30+1,10^30); asymptotics, theorem (double,
+//                                                 proved, report, certificate), reference
+//                                                 lattice, naive TOMS 748, one evaluation, Arb,
+//                                                 the theorem-aware peers; the certified paths
+//                                                 and the Arb peers also at 30 and 10000 digits
 //   gyrores-bench [--csv FILE] [--report FILE] [--plot-dir DIR]
 //                                                 the full report (bench/run writes
 //                                                 bench/RESULTS.md, results.csv and the plot)
@@ -91,7 +95,8 @@ std::set<std::string> split_list(const std::string& s) {
 void add_options(CLI::App& app, options& o, std::string& methods, std::string& pairs, std::string& precisions) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.add_flag("--quick", o.quick,
-               "the check: double and 1000 digits on (6,5), (10^12+1,10^12), (1000,1) (< 60 s)");
+               "the check: double, 30, 1000 and 10000 digits on (6,5), (10^12+1,10^12), (1000,1), (10^30+1,10^30) "
+               "(< 60 s)");
   app.add_option("--csv", o.csv,
                  "one row per (method, precision, pair): method,precision,pair,median_ns,correct_digits,evaluations")
       ->type_name("FILE");
@@ -175,17 +180,20 @@ std::vector<Item> selected(const std::vector<Item>& all, bool quick, const std::
 
 std::vector<method_def> all_methods(const options& opt, const run_config& cfg) {
   std::vector<method_def> all = library_methods(cfg);
+  for (auto& m : theorem_peer_methods(cfg)) all.push_back(m);
   if (!opt.quick)
     for (auto& m : odeint_methods(cfg)) all.push_back(m);
   for (auto& m : arb_methods(cfg)) all.push_back(m);
   return all;
 }
 
-// Quick mode: 30 digits only for the certificate-against-proof pair of rows.
+// Quick mode: 30 and 10000 digits only for the certified paths and the Arb peers they are
+// measured against (headline L2).
 bool quick_excluded(const options& opt, const method_def& m, const precision& pr) {
   if (!opt.quick) return false;
-  if (pr.name == "mp30") return m.name != "certificate" && m.name != "theorem_proved";
-  if (m.name == "certificate") return pr.name != "mp30";
+  if (pr.name == "mp30" || pr.name == "mp10000")
+    return !std::set<std::string>{"certificate", "theorem_proved", "theorem_report", "peer_arb_ball", "peer_arb_calc"}
+                .count(m.name);
   return false;
 }
 
@@ -254,7 +262,7 @@ run_context describe_run(int argc, char** argv, const options& opt) {
 
 // ---- after the timing -----------------------------------------------------------------------
 
-// Peer (b): mpmath, in the same run (not in --quick, nor with --no-mpmath or a --methods list
+// The mpmath peer, in the same run (not in --quick, nor with --no-mpmath or a --methods list
 // without it). Its rows are appended to `rows`.
 void run_mpmath(const options& opt, const char* argv0, const std::vector<bench_pair>& pairs,
                 const std::vector<precision>& precisions, const std::map<std::string, reference>& refs,
@@ -292,21 +300,22 @@ void print_summary(const std::vector<measurement>& rows, const std::vector<bench
               ctx.load_before.c_str(), ctx.load_after.c_str());
 }
 
-// --check: the library's methods (the theorem's path and the references from before it) must
-// deliver their precision: digits >= nominal - 1.5 (certificates: at least the digits they
-// claim; a proved enclosure must also hold the reference). Prints each short row; returns their
-// count.
+// --check: the library's methods (the theorem's path and the references from before it) and the
+// theorem-aware peers must deliver their precision: digits >= nominal - 1.5 (certificates: at
+// least the digits they claim; a proved enclosure must also hold the reference, and the Arb
+// peers' roundings must be the reference's). Prints each short row; returns their count.
 int check_rows(const std::vector<measurement>& rows, const std::vector<precision>& precisions) {
   int bad = 0;
-  const std::set<std::string> library{"theorem_double", "theorem_proved", "theorem_report", "certificate",
-                                      "ref_lattice",    "ref_newton_polish", "ref_toms748_local", "ref_global"};
+  const std::set<std::string> checked{"theorem_double",    "theorem_proved",    "theorem_report", "certificate",
+                                      "ref_lattice",       "ref_newton_polish", "ref_toms748_local", "ref_global",
+                                      "peer_newton",       "peer_arb_ball",     "peer_arb_calc"};
   for (const auto& m : rows) {
-    if (!library.count(m.method)) continue;
+    if (!checked.count(m.method)) continue;
     double nominal = 0;
     for (const auto& pr : precisions)
       if (pr.name == m.precision) nominal = pr.digits;
     const double need = m.method == "certificate" ? nominal : nominal - 1.5;
-    if (m.note.find("ENCLOSURE MISSES") != std::string::npos) {
+    if (m.note.find("ENCLOSURE MISSES") != std::string::npos || m.note.find("DIFFERS") != std::string::npos) {
       std::printf("CHECK FAILED: %s %s %s: %s\n", m.method.c_str(), m.precision.c_str(), m.pair.c_str(),
                   m.note.c_str());
       ++bad;
@@ -318,7 +327,7 @@ int check_rows(const std::vector<measurement>& rows, const std::vector<precision
       ++bad;
     }
   }
-  std::printf("check: %d of the library's rows short of their precision\n", bad);
+  std::printf("check: %d of the library's and the theorem-aware peers' rows short of their precision\n", bad);
   return bad;
 }
 
@@ -342,12 +351,14 @@ int main(int argc, char** argv) {
   cfg.repetitions = 5;
 
   const std::vector<bench_pair> pairs =
-      selected(all_pairs(), opt.quick, {"(6,5)", "(10^12+1,10^12)", "(1000,1)"}, opt.pairs);
-  const std::vector<precision> precisions = selected(all_precisions(), opt.quick, {"double", "mp30", "mp1000"}, opt.precisions);
+      selected(all_pairs(), opt.quick, {"(6,5)", "(10^12+1,10^12)", "(1000,1)", "(10^30+1,10^30)"}, opt.pairs);
+  const std::vector<precision> precisions =
+      selected(all_precisions(), opt.quick, {"double", "mp30", "mp1000", "mp10000"}, opt.precisions);
   const std::vector<method_def> methods =
       selected(all_methods(opt, cfg), opt.quick,
-               {"theta_asy", "r_res_asy", "theorem_double", "theorem_proved", "ref_lattice", "naive_toms748", "one_eval",
-                "arb_newton", "certificate"},
+               {"theta_asy", "r_res_asy", "theorem_double", "theorem_proved", "theorem_report", "ref_lattice",
+                "naive_toms748", "one_eval", "arb_newton", "certificate", "peer_newton", "peer_arb_ball",
+                "peer_arb_calc"},
                opt.methods);
   const run_plan plan = plan_cases(pairs, precisions, methods, [&](const method_def& m, const precision& pr) {
     return quick_excluded(opt, m, pr);

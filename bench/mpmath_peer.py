@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Peer (b) of gyrores-bench: mpmath's findroot on the naive formulation.
+"""The mpmath peer of gyrores-bench: mpmath's findroot on the naive formulation.
 
 Run by gyrores-bench (bench/speed_error/peer_mpmath.cpp) in the same benchmark run; not meant
 to be used alone. Reads tasks from the file named on the command line, one per line:

@@ -1,5 +1,6 @@
-// speed_error/report.hpp: the headline figures (H1-H5, each about the theorem's path) and the
-// ratio to the best row, computed from the rows of one run.
+// speed_error/report.hpp: the headline figures (L1-L2: gyrores' paths against the theorem-aware
+// peers; H1-H5: the theorem's path against the methods from before it and the other peers) and
+// the ratio to the best row, computed from the rows of one run.
 #include <algorithm>
 #include <string>
 
@@ -222,6 +223,136 @@ headline h5(const std::vector<measurement>& rows, const std::vector<bench_pair>&
   return h;
 }
 
+// ---- the limits: gyrores' paths against the theorem-aware peers (peer_theorem.cpp) ----------
+
+std::string with_digits(const std::string& label, const measurement& m) {
+  return label + " " + format_time(m.median_ns) + ", " + format_digits(m.digits()) + " d";
+}
+
+// L1: gyrores' double path against peer_newton. Pairs beyond theorem_minimum_double's int64
+// (order >= 2^62) have no double path: their row is the proved minimum at 16 digits
+// (theorem_proved at double), what gyrores offers for them, and it counts against the target.
+headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  headline h{"L1",
+             "Exact double: gyrores' double path (theorem_minimum_double) takes at most 1.25x the plain "
+             "theorem-aware peer (peer_newton), for every pair",
+             {}, 0, 0, ""};
+  for (const auto& bp : pairs) {
+    const auto* d = find_row(rows, "peer_newton", "double", bp.name);
+    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
+    const auto* big = e ? nullptr : find_row(rows, "theorem_proved", "double", bp.name);
+    if (!d || !(e || big)) continue;
+    const measurement& n = e ? *e : *big;
+    const double r = n.median_ns / d->median_ns;
+    ++h.total;
+    if (r <= 1.25) ++h.met;
+    h.values.push_back(
+        {bp.name, ratio_text(r) + " (" +
+                      (e ? with_digits("theorem_minimum_double", n)
+                         : "no double path: theorem_minimum_double takes orders below 2^62; the proved minimum at 16 "
+                           "digits instead, " + with_digits("prove_minimum", n)) +
+                      "; " + with_digits("peer_newton", *d) + ")"});
+  }
+  h.remark = "theorem_minimum_double also forms every minimiser (2 or 4) and its lobe; peer_newton forms theta_first "
+             "alone. Both take u* by Newton on H from the same start (pi m_min/(4b)).";
+  return h;
+}
+
+// A ratio num/den of two rows at (prec, pair) as text, or "" when one is missing.
+std::string ratio_of(const std::vector<measurement>& rows, const std::string& num, const std::string& den,
+                     const std::string& prec, const std::string& pair) {
+  const auto* n = find_row(rows, num, prec, pair);
+  const auto* d = find_row(rows, den, prec, pair);
+  return n && d ? ratio_text(n->median_ns / d->median_ns) : "";
+}
+
+// L2: the certificate against peer_arb_ball, which proves the same claims and writes them (and
+// rounds them); prove_minimum, prove_pair and peer_arb_calc against the same peer, for context.
+headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  headline h{"L2",
+             "Certified: a certificate (certify_by_theorem, what `gyrores certify` computes) takes at most 1.3x the "
+             "Arb ball peer (peer_arb_ball), which proves and writes the same claims, at 30, 1000 and 10000 digits",
+             {}, 0, 0, ""};
+  for (const char* prec : {"mp30", "mp1000", "mp10000"})
+    for (const auto& bp : pairs) {
+      const auto* c = find_row(rows, "certificate", prec, bp.name);
+      const auto* d = find_row(rows, "peer_arb_ball", prec, bp.name);
+      if (!c || !d) continue;
+      const double r = c->median_ns / d->median_ns;
+      ++h.total;
+      if (r <= 1.3) ++h.met;
+      std::string more;
+      for (const auto& [label, method] : {std::pair<const char*, const char*>{"prove_minimum", "theorem_proved"},
+                                          {"prove_pair", "theorem_report"},
+                                          {"peer_arb_calc", "peer_arb_calc"}}) {
+        const std::string t = ratio_of(rows, method, "peer_arb_ball", prec, bp.name);
+        if (!t.empty()) more += "; " + std::string(label) + " " + t;
+      }
+      h.values.push_back({bp.name + " " + prec, ratio_text(r) + " (" + with_digits("certificate", *c) + "; " +
+                                                     with_digits("peer_arb_ball", *d) + more + ")"});
+    }
+  h.remark =
+      "Like for like: both prove a bracket of u* and enclosures of r_res, theta_first and t_first of relative width "
+      "<= 10^-(digits+1) and write them out as decimal claims (the certificate also lists the 2 or 4 minimiser "
+      "lobes, integers; peer_arb_ball also decides the correct roundings to the digits from its claims). For "
+      "context, each value also gives, as ratios to peer_arb_ball: prove_minimum (theorem_proved: the enclosures "
+      "of r_res and every minimiser, no decimal text), prove_pair (theorem_report: everything `gyrores pair` "
+      "prints, every real correctly rounded) and peer_arb_calc (Arb's arb_calc_refine_root_newton, the same "
+      "claims). Digits: the certificate is scored at its claims' midpoints, peer_arb_ball on its roundings to the "
+      "digits.";
+  return h;
+}
+
+// ---- every headline against the theorem-aware peers ------------------------------------------
+
+// "Against the theorem-aware peer <peer> (medians over the pairs): <label> <ratio>, ... at <prec>; ...",
+// the ratios time(method)/time(peer) at (prec, pair); "" when no pair has both rows.
+std::string peer_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs,
+                        const std::string& peer, const std::vector<std::pair<std::string, std::string>>& methods,
+                        const std::vector<std::string>& precs) {
+  std::vector<std::string> parts;
+  for (const auto& prec : precs) {
+    std::vector<std::string> items;
+    for (const auto& [label, method] : methods) {
+      std::vector<double> r;
+      for (const auto& bp : pairs) {
+        const auto* n = find_row(rows, method, prec, bp.name);
+        const auto* d = find_row(rows, peer, prec, bp.name);
+        if (n && d) r.push_back(n->median_ns / d->median_ns);
+      }
+      if (!r.empty()) items.push_back(label + " " + ratio_text(median(r)));
+    }
+    if (items.empty()) continue;
+    std::string part;
+    for (std::size_t i = 0; i < items.size(); ++i) part += (i ? ", " : "") + items[i];
+    parts.push_back(part + (precs.size() > 1 ? " at " + prec : ""));
+  }
+  if (parts.empty()) return "";
+  std::string out = "Against the theorem-aware peer " + peer + " (medians over the pairs): ";
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? "; " : "") + parts[i];
+  return out + ".";
+}
+
+// H3's simulations against peer_newton: the fastest reaching 1e-8 in r_res, per pair.
+std::string h3_peer_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
+  std::vector<double> r;
+  for (const auto& bp : pairs) {
+    bool any = false;
+    const auto* s = fastest_simulation(rows, bp.name, any);
+    const auto* d = find_row(rows, "peer_newton", "double", bp.name);
+    if (s && d) r.push_back(s->median_ns / d->median_ns);
+  }
+  std::string out = peer_remark(rows, pairs, "peer_newton", {{"theorem_minimum_double", "theorem_double"}}, {"double"});
+  if (!r.empty())
+    out += std::string(out.empty() ? "" : " ") + "The fastest simulation reaching 1e-8 takes " +
+           ratio_text(median(r)) + " peer_newton's time (median over the pairs).";
+  return out;
+}
+
+void add_remark(headline& h, const std::string& r) {
+  if (!r.empty()) h.remark += (h.remark.empty() ? "" : " ") + r;
+}
+
 }  // namespace
 
 std::map<const measurement*, double> ratios_to_best(const std::vector<measurement>& rows,
@@ -248,7 +379,7 @@ std::map<const measurement*, double> ratios_to_best(const std::vector<measuremen
 }
 
 std::vector<headline> compute_headlines(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  return {h1(rows, pairs),
+  std::vector<headline> out{l1(rows, pairs), l2(rows, pairs), h1(rows, pairs),
           ratio_headline("H2a",
                          "At 1000 digits, the theorem's proved r_res (prove_minimum) costs at most 4x one evaluation "
                          "of (q, q') at that precision",
@@ -260,6 +391,29 @@ std::vector<headline> compute_headlines(const std::vector<measurement>& rows, co
                          rows, pairs, {"mp1000", "naive_toms748", "theorem_proved", false, 5, ""},
                          naive_against_proved),
           h3(rows, pairs), h4(rows, pairs), h5(rows, pairs)};
+  // Every figure also as a ratio to the theorem-aware peers.
+  for (auto& h : out) {
+    if (h.id == "H1")
+      add_remark(h, peer_remark(rows, pairs, "peer_newton",
+                                {{"theorem_minimum_double", "theorem_double"}, {"theta_asy", "theta_asy"}},
+                                {"double"}));
+    if (h.id == "H2a")
+      add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",
+                                {{"prove_minimum", "theorem_proved"}, {"one evaluation", "one_eval"}}, {"mp1000"}));
+    if (h.id == "H2b")
+      add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",
+                                {{"naive TOMS 748", "naive_toms748"}, {"prove_minimum", "theorem_proved"}},
+                                {"mp1000"}));
+    if (h.id == "H3") add_remark(h, h3_peer_remark(rows, pairs));
+    if (h.id == "H4")
+      add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",
+                                {{"certificate", "certificate"}, {"prove_minimum", "theorem_proved"}}, {"mp30"}));
+    if (h.id == "H5")
+      add_remark(h, peer_remark(rows, pairs, "peer_arb_ball",
+                                {{"prove_minimum", "theorem_proved"}, {"Arb's root refinement alone", "arb_newton"}},
+                                {"mp1000", "mp10000"}));
+  }
+  return out;
 }
 
 }  // namespace gyrores::bench

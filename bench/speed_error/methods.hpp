@@ -17,6 +17,10 @@ std::vector<method_def> library_methods(const run_config& cfg);
 // several step sizes).
 std::vector<method_def> odeint_methods(const run_config& cfg);
 
+// The theorem-aware peers, written from proofs/lattice-theorem.md without gyrores' numerics
+// (peer_theorem.cpp): peer_newton in double, and with Arb peer_arb_ball and peer_arb_calc.
+std::vector<method_def> theorem_peer_methods(const run_config& cfg);
+
 // Arb/FLINT: arb_calc_refine_root_newton from the double start, and one Arb evaluation.
 // Empty when the harness was built without Arb (GYRORES_BENCH_HAVE_ARB).
 std::vector<method_def> arb_methods(const run_config& cfg);

@@ -1,4 +1,4 @@
-// Peer (d): Arb/FLINT (Debian 12: libflint-arb-dev, Arb 2.23 on FLINT 2.9), optional.
+// The Arb/FLINT peer (Debian 12: libflint-arb-dev, Arb 2.23 on FLINT 2.9), optional.
 //
 //  arb_newton: arb_calc_refine_root_newton (Newton in ball arithmetic with precision doubling)
 //    on q'(u) = cos u sin(mu - x u) - x sin u cos(mu - x u) in the first minimiser's lobe frame
@@ -163,7 +163,7 @@ std::string skip_arb(const bench_pair&, const precision& pr) {
     return "Arb is a multiprecision ball library; its fixed-precision counterpart is the double start itself";
   if (pr.name == "mp30")
     return "30 digits serve the certificate's comparisons (certificate, theorem_proved, theorem_report, "
-           "ref_lattice, one_eval)";
+           "ref_lattice, one_eval, the theorem-aware Arb peers)";
   return "";
 }
 
@@ -239,12 +239,12 @@ bench_case arb_one_eval_case(const bench_pair& bp, const precision& pr, const re
 std::vector<method_def> arb_methods(const run_config&) {
   return {
       {"arb_newton", "arb",
-       "**peer (d)**: Arb's arb_calc_refine_root_newton on q' in the first minimiser's lobe frame (local "
+       "**peer, Arb**: Arb's arb_calc_refine_root_newton on q' in the first minimiser's lobe frame (local "
        "coordinates; its root is the theorem's u*), from the theorem's double root (ball of relative radius 2^-40), "
        "convergence factor at 64 bits; the root alone, enclosed (a ball)",
        skip_arb, arb_newton_case},
       {"arb_one_eval", "arb_one_eval",
-       "**peer (d), unit of work**: one Arb evaluation of q' and its derivative (two arb_sin_cos) at the first "
+       "**peer, Arb, unit of work**: one Arb evaluation of q' and its derivative (two arb_sin_cos) at the first "
        "minimiser: Arb's counterpart of one_eval",
        skip_arb, arb_one_eval_case},
   };

@@ -1,4 +1,4 @@
-// Peer (b): mpmath's findroot (bench/mpmath_peer.py), run as a child process during the same
+// The mpmath peer: mpmath's findroot (bench/mpmath_peer.py), run as a child process during the same
 // benchmark run, timed inside Python (CPU time, median of repetitions). Optional: when python3
 // or mpmath is missing the rows are skipped with a note.
 #pragma once

@@ -1,4 +1,4 @@
-// Peer (a): time-domain simulation with Boost.Odeint, as a user without gyrores would do it.
+// The simulation peer: time-domain simulation with Boost.Odeint, as a user without gyrores would do it.
 //
 // The ODE q'' + n z' + q = 0, z'' - n q' + z = 0 from (q, q', z, z') = (0, 1, 0, 0) is integrated
 // over its first period t in [0, 2 pi sqrt(tau sigma)] (theta in [0, 2 pi)); every local minimum
@@ -173,10 +173,11 @@ method_def sim_method(const std::string& kind, double param) {
   const std::string family = kind == "dopri5" ? "odeint_dopri5" : "odeint_symplectic";
   const std::string desc =
       kind == "dopri5"
-          ? "**peer (a)**: Boost.Odeint runge_kutta_dopri5, adaptive (abs = rel = tol), dense output; minimum of H_q "
-            "over the first period located on the dense output"
-          : "**peer (a)**: Boost.Odeint symplectic_rkn_sb3a_mclachlan, N fixed steps per oscillation, in the Larmor "
-            "frame (the symplectic steppers need a separable Hamiltonian); minimum located by partial re-steps";
+          ? "**peer, simulation**: Boost.Odeint runge_kutta_dopri5, adaptive (abs = rel = tol), dense output; "
+            "minimum of H_q over the first period located on the dense output"
+          : "**peer, simulation**: Boost.Odeint symplectic_rkn_sb3a_mclachlan, N fixed steps per oscillation, in "
+            "the Larmor frame (the symplectic steppers need a separable Hamiltonian); minimum located by partial "
+            "re-steps";
   return {nm, family, desc, skip_sim, [nm, kind, param](const bench_pair& bp, const precision& pr, const reference&) {
             return make_case(
                 nm, pr, bp, [=] { return run_sim(kind, param, bp); },

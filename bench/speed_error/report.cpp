@@ -114,8 +114,12 @@ void write_definitions(std::ostream& f, const run_context& ctx) {
        "from before the theorem, now the tests' independent references (tests/reference/): *ref_lattice* (lattice "
        "scout and Newton polish), *ref_toms748_local*, *ref_newton_polish*, *ref_global* (global search), and the "
        "paper's asymptotics *theta_asy*, *r_res_asy* (heuristics). Unit of work: *one_eval* (and Arb's "
-       "*arb_one_eval*). Peers: Boost.Odeint simulation, mpmath findroot, plain TOMS 748 on the naive formulation, "
-       "Arb's Newton refinement.\n\n";
+       "*arb_one_eval*). Theorem-aware peers, the limits the theorem's path is measured against (headlines L1, L2): "
+       "the lattice theorem implemented from its statement by an outsider, with none of gyrores' numerics "
+       "(bench/speed_error/peer_newton.hpp, peer_theorem.cpp): *peer_newton* (plain double Newton), *peer_arb_ball* "
+       "(Arb balls: Newton, interval Newton proof, the certificate's claims and the correct roundings) and "
+       "*peer_arb_calc* (Arb's arb_calc_refine_root_newton). Other peers: Boost.Odeint simulation, mpmath findroot, "
+       "plain TOMS 748 on the naive formulation, Arb's Newton refinement of the root alone.\n\n";
   f << "**Reference.** src/testing/high_precision_reference.hpp, independent of the library's numerics: the naive "
        "formulation (sin(tau theta) formed directly) at brute precision (digits + 2 log2(a) + 96 bits), bisection then "
        "Newton with precision doubling; all 4 tau critical points for orders <= 1e5, +-4 fast half-periods around a "
@@ -125,6 +129,9 @@ void write_definitions(std::ostream& f, const run_context& ctx) {
 
 void write_headlines(std::ostream& f, const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   f << "## Headline figures\n\n";
+  f << "L1 and L2: gyrores' paths as ratios to the theorem-aware peers, the limits. H1-H5: the theorem's path "
+       "against the methods from before it and the other peers, each also quoted against the theorem-aware "
+       "peers. Every ratio is of two rows of this run.\n\n";
   for (const auto& h : compute_headlines(rows, pairs)) {
     f << "**" << h.id << ". " << h.target << "**: " << verdict(h) << ".\n\n";
     if (!h.remark.empty()) f << h.remark << "\n\n";
@@ -213,7 +220,8 @@ void write_methods(std::ostream& f, const std::vector<method_def>& methods, cons
     }
     f << "| " << m.name << " | " << m.description << " |\n";
   }
-  f << "| mpmath_findroot | **peer (b)**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) at "
+  f << "| mpmath_findroot | **peer, mpmath**: `mpmath.findroot(f, (x0, x1))` (default secant) on the naive q'(theta) "
+       "at "
        "`mp.dps` = digits, from theta_first rounded to ceil(log10 a) + 8 digits and a point 1e-4 half-periods away "
        "(bench/mpmath_peer.py); then r = rho0 |sin tau theta + sin sigma theta| |\n\n";
   f << "Precisions: `double`, `long_double` (x87, 64-bit mantissa), `float128` (Boost.Multiprecision, libquadmath), "
@@ -267,8 +275,9 @@ void write_skips(std::ostream& f, const std::vector<skip_note>& skips, const std
   }
   for (const auto& key : order)
     f << "- `" << key.first << "` at " << skip_where(by[key], pairs, precisions) << ": " << key.second << ".\n";
-  f << "- `mpmath_findroot` runs at mp50, mp100 and mp1000 only (the issue's precisions): mpmath is arbitrary "
-       "precision only, and pure-Python mpmath at 10000 digits is not a peer anyone would choose.\n\n";
+  f << "- `mpmath_findroot` runs at mp50, mp100 and mp1000 only: mpmath is arbitrary precision only, 30 digits "
+       "serve the certificate's comparisons, and pure-Python mpmath at 10000 digits is not a peer anyone would "
+       "choose.\n\n";
 }
 
 void write_notes(std::ostream& f, const std::vector<measurement>& rows) {
@@ -355,7 +364,8 @@ void write_plot_script(const std::string& dir, const run_context& ctx, const std
   for (std::size_t fi = 0; fi < families.size(); ++fi)
     body << "set style line " << fi + 1 << " lc rgb '" << std::vector<std::string>{
         "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
-        "#17becf", "#000000", "#aa0000", "#00aa88", "#0000aa", "#aaaa00", "#aa00aa", "#555555"}[fi % 17]
+        "#17becf", "#000000", "#aa0000", "#00aa88", "#0000aa", "#aaaa00", "#aa00aa", "#555555", "#ff1493",
+        "#3cb44b", "#4363d8"}[fi % 20]
          << "' pt " << (fi % 13) + 1 << " ps 1.1 lw 1.5\n";
   body << "set logscale xy\nset xlabel 'median CPU time per call [s]'\nset ylabel 'correct digits'\n"
        << "set format x '10^{%L}'\nset grid\nset key outside right top font ',9'\nset yrange [0.25:20000]\n";
