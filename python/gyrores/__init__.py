@@ -30,6 +30,7 @@ import copy as _copy
 import fractions as _fractions
 import json as _json
 import os as _os
+import re as _re
 
 from . import _args, _numbers
 from . import _gyrores
@@ -52,6 +53,8 @@ _ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason",
                         "inf_reason", "horizon_source", "orientation", "orientation_meaning", "time", "problem"})
 _DOUBLE_DIGITS = 15  # up to here reals are floats
 _FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then more if undecided)
+# A double as the sweep's summary writes it (plain or scientific decimal).
+_DECIMAL_TEXT = _re.compile(r"^-?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$|^-?(?:inf|nan)$")
 
 
 class PairResult(Result):
@@ -643,8 +646,23 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
                                        progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
                                        _args.bounded(cross_check_max_order, f, "cross_check_max_order", 0, 2**40),
                                        _args.bounded(examples, f, "examples", 0, 2**31))
-    summary = _convert(summary, float)
-    return (None if columns is None else _table(columns)), summary
+    return (None if columns is None else _table(columns)), _sweep_summary(summary)
+
+
+def _sweep_summary(raw):
+    """The summary of ``gyrores sweep --json`` as a Result: its reals (the sweep's doubles, written
+    as plain decimals such as "0.0049966470557269195": asy_ratio_max.value, sharp_constant.value,
+    the t_first_over_proxy statistics) as floats, never str."""
+    def walk(value, key):
+        if isinstance(value, dict):
+            return Result({k: walk(v, k) for k, v in value.items()})
+        if isinstance(value, list):
+            return tuple(walk(v, key) for v in value)
+        if isinstance(value, str) and key not in _ECHO_KEYS and _DECIMAL_TEXT.match(value):
+            return float(value)
+        return value
+
+    return walk(raw, None)
 
 
 _PROVED_COLUMNS = ("n", "r_res", "h_min", "theta_first", "t_first", "t_min_paper")
