@@ -702,7 +702,7 @@ def _proved_pairs(taus, sigmas, digits, threads):
 def _int64_column(values, name):
     """A one-dimensional int64 array of the pair members `values` (any iterable of integers)."""
     import numpy as np
-    if isinstance(values, np.ndarray):
+    if isinstance(values, np.ndarray) and values.dtype.kind != "O":  # object arrays: element by element below
         if values.dtype.kind not in "iu" or values.ndim != 1:
             raise UsageError(f"pairs(): {name} must be a one-dimensional array of integers, got dtype {values.dtype} "
                              f"with {values.ndim} dimensions")
