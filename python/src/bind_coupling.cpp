@@ -148,6 +148,8 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
   std::vector<coupling_spec> specs;
   std::vector<horizon_time> times;
   for (std::size_t i = 0; i < couplings.size(); ++i) {  // every input checked before any work
+    // This loop holds the GIL (about 1 us per element): Ctrl-C is looked at as it goes.
+    if (i % 4096 == 0 && PyErr_CheckSignals() != 0) throw py::error_already_set();
     specs.push_back(spec_of(couplings[i].cast<std::string>(), is_n2, what + "[" + std::to_string(i) + "]"));
     times.push_back(horizon_of(horizons[i].cast<std::string>(), "horizon[" + std::to_string(i) + "]"));
   }
@@ -159,7 +161,8 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
   // alive until the worker ends, which is soon after Ctrl-C (the flag is looked at between
   // elements and inside every proof).
   PyObject* const callback = progress.is_none() ? nullptr : progress.ptr();
-  const auto work = [specs, times, level, callback](stop_token stop) {
+  // The inputs move into the work (no second copy to build, or to free before KeyboardInterrupt).
+  auto work = [specs = std::move(specs), times = std::move(times), level, callback](stop_token stop) {
     coupling_columns c;
     const std::size_t total = specs.size();
     for (std::size_t i = 0; i < total; ++i) {
@@ -178,7 +181,7 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
     }
     return c;
   };
-  const coupling_columns cols = run_interruptible<coupling_columns>(work, on_stop::wait);
+  const coupling_columns cols = run_interruptible<coupling_columns>(std::move(work), on_stop::wait);
   py::list h, t, tb, end, res;
   for (std::size_t i = 0; i < cols.h_min.size(); ++i) {
     h.append(cols.h_min[i]);
