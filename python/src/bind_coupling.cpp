@@ -41,7 +41,7 @@ std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n
   if (!band.is_none()) b = parse_band(band.cast<std::string>(), "band");
   if (!tolerance.is_none()) {
     if (n.is_none()) throw usage_error("tolerance needs the coupling n (not n2)");
-    b = tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
+    b = parse_tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
   }
   if (b) check_band(b->first, b->second, "band");
   return b;

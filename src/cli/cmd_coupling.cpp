@@ -121,7 +121,7 @@ std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args
   if (!a.band.empty()) return parse_band(a.band, "--band");
   if (a.tolerance.empty()) return std::nullopt;
   if (a.n.empty()) throw usage_error("--tolerance needs the coupling N (not --n2)");
-  return tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance");
+  return parse_tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance");
 }
 
 std::string run_coupling(const coupling_args& a) {

@@ -250,8 +250,8 @@ std::pair<big_rational, big_rational> parse_band(const std::string& text, const 
   return {parse_rational(text.substr(0, colon), what + " N1"), parse_rational(text.substr(colon + 1), what + " N2")};
 }
 
-std::pair<big_rational, big_rational> tolerance_band(const big_rational& n, const std::string& tolerance,
-                                                     const std::string& what) {
+std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
+                                                           const std::string& what) {
   std::string t = tolerance;
   if (t.empty() || t.back() != '%') throw usage_error(what + " must be a percentage such as 1%, got " + tolerance);
   t.pop_back();
