@@ -30,6 +30,7 @@ import copy as _copy
 import fractions as _fractions
 import json as _json
 import os as _os
+import re as _re
 
 from . import _args, _numbers
 from . import _gyrores
@@ -52,6 +53,8 @@ _ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason",
                         "inf_reason", "horizon_source", "orientation", "orientation_meaning", "time", "problem"})
 _DOUBLE_DIGITS = 15  # up to here reals are floats
 _FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then more if undecided)
+# A double as the sweep's summary writes it (plain or scientific decimal).
+_DECIMAL_TEXT = _re.compile(r"^-?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$|^-?(?:inf|nan)$")
 
 
 class PairResult(Result):
@@ -390,37 +393,123 @@ def _level(below, function):
     return _args.rational(below, function, "below")
 
 
-def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12):
-    """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q over [0, T],
-    the first time H_q <= E, the infimum over all time, convergents (``gyrores coupling --json``).
+def _band_text(band, function):
+    """A band (n1, n2) or "N1:N2" as the library's text "N1:N2"."""
+    if band is None:
+        return None
+    if isinstance(band, str):
+        return band.strip()
+    if isinstance(band, (tuple, list)) and len(band) == 2:
+        return ":".join(_args.rational(v, function, f"band[{i}]") for i, v in enumerate(band))
+    raise UsageError(f"{function}(): band must be (n1, n2) or text 'N1:N2', got {_args._describe(band)}")
 
-    Exactly one of n, n2 (rationals). horizon: T >= 0 as the CLI takes it: a number, a decimal,
-    scientific or fraction text ("1e100", "1/3"), or a multiple of pi ("100pi"); the minimum of
-    H_q over [0, T] and its first time are proved by the horizon theorem in O(log T).
-    below: a level E, an energy (a rational) or a percentage of H_q(0) = 1/2 ("1%"): ``t_below``
-    (None when never, ``below.reason`` says why). convergents: 0..60; digits 1..1000.
+
+def _tolerance_text(tolerance, function):
+    """A tolerance as the library's text "P%": text as given ("1%"), a number as a fraction of n
+    (Fraction(1, 100), 0.01, Decimal("0.01") are 1%)."""
+    if tolerance is None:
+        return None
+    if isinstance(tolerance, str):
+        return tolerance.strip()
+    p = _fractions.Fraction(_args.rational(tolerance, function, "tolerance")) * 100
+    return f"{p}%"
+
+
+def _band(raw, digits):
+    """The "band" object of the CLI's JSON converted: rationals as Fractions, reals of the call's
+    type, each extreme's enclosure an Interval (rounded outward from its exact rational ends and
+    widened to hold the returned value)."""
+    real = _real(digits)
+    if digits <= _DOUBLE_DIGITS:
+        def outward(lo, hi):
+            return Interval(_numbers.float_of_fraction(lo, "f"), _numbers.float_of_fraction(hi, "c"))
+    else:
+        bits = _numbers.bits_of_digits(digits + 3)
+
+        def outward(lo, hi):
+            return Interval(_numbers.mpf_of_fraction(lo, bits, "f"), _numbers.mpf_of_fraction(hi, bits, "c"))
+
+    degenerate = raw["degenerate"]
+
+    def extreme(e, zero):
+        value = None if e["value"] is None else real(e["value"])
+        iv = outward(*(_fractions.Fraction(t) for t in e["enclosure"]))
+        if value is not None and not iv.contains(value):
+            iv = Interval(min(iv.lo, value), max(iv.hi, value))
+        return Result(value=value, enclosure=iv,
+                      n_at=None if zero else _fractions.Fraction(e["n_at"]),
+                      n_box=None if zero else tuple(_fractions.Fraction(t) for t in e["n_box"]),
+                      converged=bool(e["converged"]))
+
+    return Result(
+        n1=_fractions.Fraction(raw["n1"]), n2=_fractions.Fraction(raw["n2"]), digits=raw["digits"],
+        lipschitz=real(raw["lipschitz"]), evaluations=raw["evaluations"],
+        worst_h_min=extreme(raw["worst_h_min"], False), best_h_min=extreme(raw["best_h_min"], degenerate is not None),
+        degenerate=None if degenerate is None else Result(
+            n2=_fractions.Fraction(degenerate["n2"]), tau=degenerate["tau"], sigma=degenerate["sigma"],
+            t_zero=real(degenerate["t_zero"])))
+
+
+def _horizon_value(text):
+    """The horizon as given back: a Fraction, or the text of a multiple of pi ("100pi")."""
+    try:
+        return _fractions.Fraction(text)
+    except ValueError:
+        return text
+
+
+def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12, band=None, tolerance=None,
+             band_digits=6, band_evaluations=4000):
+    """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q over [0, T],
+    the first time H_q <= E, the infimum over all time, convergents (``gyrores coupling --json``);
+    and the worst and best of that minimum over a band of couplings (``--band``, ``--tolerance``).
+
+    Exactly one of n, n2 (rationals), or neither with a band. horizon: T >= 0 as the CLI takes
+    it: a number, a decimal, scientific or fraction text ("1e100", "1/3"), or a multiple of pi
+    ("100pi"); the minimum of H_q over [0, T] and its first time are proved by the horizon theorem
+    in O(log T). below: a level E, an energy (a rational) or a percentage of H_q(0) = 1/2 ("1%"):
+    ``t_below`` (None when never, ``below.reason`` says why). convergents: 0..60; digits 1..1000.
     Returns a Result with the CLI's keys: reals as in design() (floats for digits <= 15, mpf
     beyond); ``enclosures`` Intervals (h_min_horizon, t_min_horizon, r_min_horizon, t_below);
     integers (horizon_lobe, cut_lobe, discriminant) exact ints; ``n2``, ``below.level`` and
     ``horizon`` Fractions (``horizon`` stays text when it is a multiple of pi); ``x`` and
     ``horizon_lobe_distance`` exact algebraic numbers as text (e.g. "sqrt(2)/2 + 1/2").
-    Ctrl-C stops the computation (KeyboardInterrupt).
+
+    band: (n1, n2) (rationals) or text "N1:N2", 0 < n1 < n2; or tolerance around n: text "P%"
+    (0 < P < 100) or a number, the fraction of |n| (Fraction(1, 100) is 1%): the band
+    |n| (1 -+ P%). Adds ``band`` (the CLI's "band" object): n1, n2 (Fractions), worst_h_min and
+    best_h_min (the max and min over the band of the minimum of H_q over [0, T]), each with
+    ``enclosure`` (an Interval holding the exact extreme), ``value`` (its rounding to
+    band_digits digits, None when the enclosure does not decide it), ``n_at`` (a coupling whose
+    proved minimum lies in the enclosure, a Fraction), ``n_box`` (Fractions (lo, hi): the extreme
+    is attained there), ``converged`` (False: the band_evaluations budget ran out first);
+    ``degenerate``: the pair with r_res = 0 whose zero of H_q lies in [0, T] (n2, tau, sigma,
+    t_zero), or None; then best_h_min is 0 exactly and its n_at and n_box are None. Also
+    lipschitz (the bound on |dH_q/dn| used), evaluations and digits (band_digits, 1..12;
+    band_evaluations 10..1000000 proved minima per extreme). A band alone (no n, n2) gives a
+    Result {horizon, theorem, band, digits}. Ctrl-C stops the computation (KeyboardInterrupt).
     """
     f = "coupling"
     d = _args.bounded(digits, f, "digits", 1, 1000)
+    if band is not None and tolerance is not None:
+        raise UsageError(f"{f}(): give at most one of band and tolerance")
     raw = _prefixed(f, _gyrores._coupling, None if n is None else _args.rational(n, f, "n"),
                     None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
-                    _level(below, f), _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d))
+                    _level(below, f), _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d),
+                    _band_text(band, f), _tolerance_text(tolerance, f), _args.bounded(band_digits, f, "band_digits", 1, 12),
+                    _args.bounded(band_evaluations, f, "band_evaluations", 10, 1000000))
     raw["digits"] = d
+    order = list(raw)  # the CLI's order of the keys
+    band_raw = raw.pop("band", None)
     horizon_text = raw.pop("horizon")
-    enclosures = raw.pop("enclosures")
+    enclosures = raw.pop("enclosures", None)
     out = _convert(raw, _real(d))
-    try:
-        out["horizon"] = _fractions.Fraction(horizon_text)
-    except ValueError:  # a multiple of pi: the text
-        out["horizon"] = horizon_text
-    out["enclosures"] = _hull_with_values(_intervals(enclosures, d), out)
-    return out
+    out["horizon"] = _horizon_value(horizon_text)
+    if enclosures is not None:
+        out["enclosures"] = _hull_with_values(_intervals(enclosures, d), out)
+    if band_raw is not None:
+        out["band"] = _band(band_raw, d)
+    return Result((k, out[k]) for k in order)
 
 
 def _input_texts(values, function, name):
@@ -557,8 +646,23 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
                                        progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
                                        _args.bounded(cross_check_max_order, f, "cross_check_max_order", 0, 2**40),
                                        _args.bounded(examples, f, "examples", 0, 2**31))
-    summary = _convert(summary, float)
-    return (None if columns is None else _table(columns)), summary
+    return (None if columns is None else _table(columns)), _sweep_summary(summary)
+
+
+def _sweep_summary(raw):
+    """The summary of ``gyrores sweep --json`` as a Result: its reals (the sweep's doubles, written
+    as plain decimals such as "0.0049966470557269195": asy_ratio_max.value, sharp_constant.value,
+    the t_first_over_proxy statistics) as floats, never str."""
+    def walk(value, key):
+        if isinstance(value, dict):
+            return Result({k: walk(v, k) for k, v in value.items()})
+        if isinstance(value, list):
+            return tuple(walk(v, key) for v in value)
+        if isinstance(value, str) and key not in _ECHO_KEYS and _DECIMAL_TEXT.match(value):
+            return float(value)
+        return value
+
+    return walk(raw, None)
 
 
 _PROVED_COLUMNS = ("n", "r_res", "h_min", "theta_first", "t_first", "t_min_paper")
@@ -598,7 +702,7 @@ def _proved_pairs(taus, sigmas, digits, threads):
 def _int64_column(values, name):
     """A one-dimensional int64 array of the pair members `values` (any iterable of integers)."""
     import numpy as np
-    if isinstance(values, np.ndarray):
+    if isinstance(values, np.ndarray) and values.dtype.kind != "O":  # object arrays: element by element below
         if values.dtype.kind not in "iu" or values.ndim != 1:
             raise UsageError(f"pairs(): {name} must be a one-dimensional array of integers, got dtype {values.dtype} "
                              f"with {values.ndim} dimensions")

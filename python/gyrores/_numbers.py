@@ -7,6 +7,7 @@ integer arithmetic with a single rounding (mpmath.libmp), so nothing process-wid
 """
 
 import decimal as _decimal
+import fractions as _fractions
 import json as _json
 import math as _math
 import re as _re
@@ -73,6 +74,22 @@ def float_of_text(text, rounding="n"):
     if rounding == "c" and _decimal.Decimal(x) < exact:
         return _math.nextafter(x, _math.inf)
     return x
+
+
+def float_of_fraction(q, rounding="n"):
+    """The double nearest to the Fraction `q` ('n', correctly rounded), or below ('f') / above ('c')."""
+    x = float(q)  # int / int: correctly rounded
+    if rounding == "f" and _fractions.Fraction(x) > q:
+        return _math.nextafter(x, -_math.inf)
+    if rounding == "c" and _fractions.Fraction(x) < q:
+        return _math.nextafter(x, _math.inf)
+    return x
+
+
+def mpf_of_fraction(q, prec, rounding="n"):
+    """The mpf of `prec` bits nearest to the Fraction `q` ('n'), below ('f') or above ('c')."""
+    raw = _libmp.mpf_div(_libmp.from_int(q.numerator), _libmp.from_int(q.denominator), prec, rounding)
+    return _mpmath.mp.make_mpf(raw)
 
 
 def bits_of_digits(digits):

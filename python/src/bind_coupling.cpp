@@ -1,11 +1,14 @@
-// gyrores.coupling and gyrores.couplings: design/coupling_report.hpp (any coupling n) as the dict
-// of `gyrores coupling --json`, and the horizon theorem (theorem/horizon.hpp) over arrays of
-// couplings and horizons in one C++ loop (GIL released, the stop flag passed into every proof and
-// looked at between elements). The horizon and level texts are read as the CLI reads them
-// (src/cli/cmd_coupling.cpp: "1e100", "100pi", "1%"); the library has no parser for them.
+// gyrores.coupling and gyrores.couplings: design/coupling_report.hpp (any coupling n) and a band
+// of couplings (theorem/band.hpp) as the dict of `gyrores coupling [--band|--tolerance] --json`,
+// and the horizon theorem (theorem/horizon.hpp) over arrays of couplings and horizons in one C++
+// loop (GIL released, the stop flag passed into every proof and looked at between elements). The
+// horizon, level, band and tolerance texts are read as the CLI reads them ("1e100", "100pi", "1%",
+// "N1:N2"), by the library's parsers (theorem/horizon.hpp, theorem/band.hpp).
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <gyrores/core/error.hpp>
@@ -13,6 +16,7 @@
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/model/coupling.hpp>
+#include <gyrores/theorem/band.hpp>
 #include <gyrores/theorem/horizon.hpp>
 
 #include "common.hpp"
@@ -28,23 +32,68 @@ coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& wh
   return is_n2 ? coupling_spec::from_n2(parse_rational(text, what)) : coupling_spec::from_n(parse_rational(text, what));
 }
 
+// The band asked for (theorem/band.hpp), from "N1:N2" or a tolerance "P%" around n, as the CLI
+// reads them (src/cli/cmd_coupling.cpp); checked before any work.
+std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n, const py::object& band,
+                                                             const py::object& tolerance) {
+  if (!band.is_none() && !tolerance.is_none()) throw usage_error("give at most one of band and tolerance");
+  std::optional<std::pair<big_rational, big_rational>> b;
+  if (!band.is_none()) b = parse_band(band.cast<std::string>(), "band");
+  if (!tolerance.is_none()) {
+    if (n.is_none()) throw usage_error("tolerance needs the coupling n (not n2)");
+    b = parse_tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
+  }
+  if (b) check_band(b->first, b->second, "band");
+  return b;
+}
+
+struct coupling_and_band {
+  std::optional<coupling_report> report;
+  std::optional<band_report> band;
+};
+
+// The dict of `gyrores coupling --json`, with "band" when a band or tolerance is given; a band
+// alone (no n, n2) gives the CLI's {"horizon", "theorem", "band"}.
 py::object coupling_dict(const py::object& n, const py::object& n2, const std::string& horizon,
-                         const py::object& below, std::int64_t convergents, long long digits) {
-  if (n.is_none() == n2.is_none()) throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
+                         const py::object& below, std::int64_t convergents, long long digits, const py::object& band,
+                         const py::object& tolerance, long long band_digits, std::int64_t band_evaluations) {
+  const bool band_alone = n.is_none() && n2.is_none() && !band.is_none();
+  if (!band_alone && n.is_none() == n2.is_none())
+    throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
   coupling_report_options opt;
   opt.digits = checked_digits(digits, 1, report_digits_max);
   if (convergents < 0 || convergents > 60) throw usage_error("convergents must be in [0, 60]");
   opt.convergents = std::size_t(convergents);
   opt.horizon = horizon_of(horizon, "horizon");
-  if (!below.is_none()) opt.below = level_of(below.cast<std::string>());
-  const coupling_spec spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
-  const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
-  // The stop flag goes into the library: on Ctrl-C the proof ends at its next safe point.
-  const coupling_report r = run_interruptible<coupling_report>([spec, opt](stop_token stop) mutable {
-    opt.stop = stop;
-    return analyse_coupling(spec, opt);
+  if (!below.is_none()) {
+    if (band_alone) throw usage_error("below needs the coupling n or n2 (a band alone has no first time below)");
+    opt.below = level_of(below.cast<std::string>());
+  }
+  std::optional<coupling_spec> spec;
+  if (!band_alone) spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
+  const auto ends = band_of(n, band, tolerance);
+  band_options bo;
+  if (ends) {
+    if (band_digits < 1 || band_digits > 12) throw usage_error("band_digits must be in [1, 12], got " + std::to_string(band_digits));
+    if (band_evaluations < 10 || band_evaluations > 1000000)
+      throw usage_error("band_evaluations must be in [10, 1000000], got " + std::to_string(band_evaluations));
+    bo.digits = unsigned(band_digits);
+    bo.max_evaluations = std::size_t(band_evaluations);
+  }
+  // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point.
+  const coupling_and_band r = run_interruptible<coupling_and_band>([spec, opt, ends, bo](stop_token stop) mutable {
+    coupling_and_band out;
+    opt.stop = bo.stop = stop;
+    if (spec) out.report = analyse_coupling(*spec, opt);
+    if (ends) out.band = prove_band(ends->first, ends->second, opt.horizon, bo);
+    return out;
   });
-  return to_python(coupling_report_json(input, horizon, opt.digits, r));
+  if (band_alone)
+    return to_python(json{{"horizon", horizon}, {"theorem", horizon_theorem_id}, {"band", band_report_json(*r.band)}});
+  const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
+  json j = coupling_report_json(input, horizon, opt.digits, *r.report);
+  if (r.band) j["band"] = band_report_json(*r.band);
+  return to_python(j);
 }
 
 // The correctly rounded double of a proved real, or nothing when its enclosure does not decide
@@ -99,6 +148,8 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
   std::vector<coupling_spec> specs;
   std::vector<horizon_time> times;
   for (std::size_t i = 0; i < couplings.size(); ++i) {  // every input checked before any work
+    // This loop holds the GIL (about 1 us per element): Ctrl-C is looked at as it goes.
+    if (i % 4096 == 0 && PyErr_CheckSignals() != 0) throw py::error_already_set();
     specs.push_back(spec_of(couplings[i].cast<std::string>(), is_n2, what + "[" + std::to_string(i) + "]"));
     times.push_back(horizon_of(horizons[i].cast<std::string>(), "horizon[" + std::to_string(i) + "]"));
   }
@@ -110,7 +161,8 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
   // alive until the worker ends, which is soon after Ctrl-C (the flag is looked at between
   // elements and inside every proof).
   PyObject* const callback = progress.is_none() ? nullptr : progress.ptr();
-  const auto work = [specs, times, level, callback](stop_token stop) {
+  // The inputs move into the work (no second copy to build, or to free before KeyboardInterrupt).
+  auto work = [specs = std::move(specs), times = std::move(times), level, callback](stop_token stop) {
     coupling_columns c;
     const std::size_t total = specs.size();
     for (std::size_t i = 0; i < total; ++i) {
@@ -129,7 +181,7 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
     }
     return c;
   };
-  const coupling_columns cols = run_interruptible<coupling_columns>(work, on_stop::wait);
+  const coupling_columns cols = run_interruptible<coupling_columns>(std::move(work), on_stop::wait);
   py::list h, t, tb, end, res;
   for (std::size_t i = 0; i < cols.h_min.size(); ++i) {
     h.append(cols.h_min[i]);
@@ -145,7 +197,9 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
 
 void bind_coupling(py::module_& m) {
   m.def("_coupling", &coupling_dict, py::arg("n"), py::arg("n2"), py::arg("horizon"), py::arg("below"),
-        py::arg("convergents"), py::arg("digits"), "The dict of `gyrores coupling --json`. Use gyrores.coupling.");
+        py::arg("convergents"), py::arg("digits"), py::arg("band") = py::none(), py::arg("tolerance") = py::none(),
+        py::arg("band_digits") = 6, py::arg("band_evaluations") = 4000,
+        "The dict of `gyrores coupling --json` (with --band N1:N2 or --tolerance P%). Use gyrores.coupling.");
   m.def("_couplings", &couplings_columns, py::arg("couplings"), py::arg("is_n2"), py::arg("horizons"),
         py::arg("below"), py::arg("progress"),
         "Columns (h_min_horizon, t_min_horizon, min_at_horizon_end, t_below, resonant) of every "

@@ -90,7 +90,9 @@ template <class R, class Work> R run_interruptible(Work work, on_stop after_stop
     std::lock_guard<std::mutex> lk(state->mtx);
     done = state->done;
   }
-  if (done) worker.join(); else worker.detach();
+  // After a signal the thread is left to free the work's state on its own (a million inputs take
+  // most of a second to free): joining it would hold KeyboardInterrupt back until then.
+  if (done && !signalled) worker.join(); else worker.detach();
   if (signalled) throw py::error_already_set();
   if (state->error) std::rethrow_exception(state->error);
   return std::move(*state->result);

@@ -1,6 +1,7 @@
 # gyrores.coupling and gyrores.couplings against the CLI's JSON (`gyrores coupling --json`, the
 # reference), against the pair analysis where the horizon holds a resonant pair's first hit, and
 # the array call against one call per element.
+import time
 from fractions import Fraction
 
 import mpmath
@@ -132,3 +133,120 @@ def test_an_exception_in_progress_stops_the_loop():
     with pytest.raises(RuntimeError, match="stop at 64"):
         gyrores.couplings(np.linspace(0.5, 3, 300), horizon=100, progress=progress)
     assert gyrores.couplings(2)["h_min_horizon"] > 0  # still usable
+
+
+# Bands (--band N1:N2, --tolerance P%): the CLI's "band" object, converted.
+
+@pytest.mark.parametrize("call, cli_args", [
+    (lambda: gyrores._gyrores._coupling(None, None, "16", None, 8, 12, "0.200:0.202", None, 6, 200),
+     ("--band", "0.200:0.202", "--horizon", "16", "--band-evaluations", "200")),
+    (lambda: gyrores._gyrores._coupling("0.2", None, "40", None, 2, 12, None, "1%", 3, 100),
+     ("0.2", "--tolerance", "1%", "--horizon", "40", "--convergents", "2", "--band-digits", "3",
+      "--band-evaluations", "100")),
+    (lambda: gyrores._gyrores._coupling(None, "1/12", "5", None, 0, 20, "1/2:3/5", None, 2, 50),
+     ("--n2", "1/12", "--horizon", "5", "--convergents", "0", "--digits", "20", "--band", "1/2:3/5",
+      "--band-digits", "2", "--band-evaluations", "50")),
+])
+def test_band_raw_dict_is_the_cli_json(cli_json, call, cli_args):
+    assert call() == cli_json("coupling", *cli_args)
+
+
+def _fraction_interval_holds(iv, lo, hi):
+    """Whether the Interval (floats or mpf) holds the exact rationals [lo, hi] of the CLI's JSON."""
+    def exact(x):
+        return Fraction(x) if isinstance(x, float) else Fraction(x.man) * Fraction(2) ** x.exp
+    return exact(iv.lo) <= Fraction(lo) and Fraction(hi) <= exact(iv.hi)
+
+
+def test_band_values_and_types_against_the_cli(cli_json):
+    expected = cli_json("coupling", "0.5", "--tolerance", "10%", "--horizon", "5", "--band-digits", "3")["band"]
+    r = gyrores.coupling(0.5, horizon=5, tolerance="10%", band_digits=3)
+    b = r.band
+    assert (b.n1, b.n2) == (Fraction(9, 20), Fraction(11, 20)) and b.degenerate is None
+    assert b.evaluations == expected["evaluations"] and isinstance(b.evaluations, int) and b.digits == 3
+    assert isinstance(b.lipschitz, float) and b.lipschitz == float(expected["lipschitz"])
+    for key in ("worst_h_min", "best_h_min"):
+        e, want = b[key], expected[key]
+        assert isinstance(e.enclosure, gyrores.Interval) and isinstance(e.enclosure.lo, float)
+        assert _fraction_interval_holds(e.enclosure, *want["enclosure"])  # outward from the exact ends
+        assert e.converged == want["converged"] and e.n_at == Fraction(want["n_at"])
+        assert e.n_box == tuple(Fraction(t) for t in want["n_box"]) and e.n_box[0] <= e.n_at <= e.n_box[1]
+        assert (e.value is None) == (want["value"] is None)
+        if e.value is not None:
+            assert isinstance(e.value, float) and e.value == float(want["value"]) and e.value in e.enclosure
+    # A tolerance given as a number is a fraction of |n|; the same band.
+    same = gyrores.coupling(-0.5, horizon=5, tolerance=Fraction(1, 10), band_digits=3).band
+    assert same.worst_h_min.enclosure == b.worst_h_min.enclosure and (same.n1, same.n2) == (b.n1, b.n2)
+    # Beyond 15 digits every real of the call is an mpf, the band's too.
+    wide = gyrores.coupling(0.5, horizon=5, tolerance="10%", band_digits=3, digits=30).band
+    assert isinstance(wide.worst_h_min.enclosure.lo, mpmath.mpf) and isinstance(wide.lipschitz, mpmath.mpf)
+    assert _fraction_interval_holds(wide.worst_h_min.enclosure, *expected["worst_h_min"]["enclosure"])
+
+
+def test_band_holds_every_sampled_minimum():
+    # Brute force: the proved minimum of every sampled coupling of the band lies in [best.lo, worst.hi],
+    # and the minimum at each n_at lies in its extreme's enclosure.
+    b = gyrores.coupling(band="9/20:11/20", horizon=5, band_digits=4).band
+    assert b.degenerate is None
+    worst, best = b.worst_h_min, b.best_h_min
+    samples = [b.n1 + (b.n2 - b.n1) * Fraction(i, 200) for i in range(201)]
+    minima = [gyrores.coupling(n, horizon=5, convergents=0, digits=17).enclosures.h_min_horizon for n in samples]
+    assert all(best.enclosure.lo <= m.lo and m.hi <= worst.enclosure.hi for m in minima)
+    # the samples come close to both extremes (the sampling step times the Lipschitz bound)
+    slack = b.lipschitz * float(b.n2 - b.n1) / 200
+    assert max(m.hi for m in minima) >= worst.enclosure.lo - slack
+    assert min(m.lo for m in minima) <= best.enclosure.hi + slack
+    for e in (worst, best):
+        at = gyrores.coupling(e.n_at, horizon=5, convergents=0, digits=17).enclosures.h_min_horizon
+        assert e.enclosure.lo <= at.hi and at.lo <= e.enclosure.hi
+
+
+def test_band_with_a_degenerate_pair_has_best_zero_exactly():
+    # n in [0.200, 0.202], T = 16 holds (11, 9) (n^2 = 4/99, r_res = 0, H_q = 0 at t ~ 15.63).
+    r = gyrores.coupling(band=(Fraction(1, 5), "0.202"), horizon=16, band_evaluations=200)
+    b = r.band
+    assert (b.degenerate.tau, b.degenerate.sigma) == (11, 9) and b.degenerate.n2 == Fraction(4, 99)
+    assert b.best_h_min.value == 0 and b.best_h_min.enclosure == gyrores.Interval(0.0, 0.0)
+    assert b.best_h_min.n_at is None and b.best_h_min.n_box is None and b.best_h_min.converged
+    assert b.n1 <= Fraction(4, 99) ** 0.5 <= b.n2
+    pair = gyrores.coupling(n2=b.degenerate.n2, horizon=16, digits=12)
+    assert pair.h_min_horizon == 0 and (pair.pair.tau, pair.pair.sigma) == (11, 9)
+    assert abs(b.degenerate.t_zero - pair.pair_analysis.t_first) <= 1e-10 * pair.pair_analysis.t_first
+    assert b.degenerate.t_zero <= 16 and r.horizon == 16 and r.theorem == "horizon-theorem/1"
+    assert set(r) == {"horizon", "theorem", "band", "digits"}  # a band alone: the CLI's keys
+    # not converged within 200 minima: the enclosure is still proved (it holds the worst's n_at)
+    w = b.worst_h_min
+    assert not w.converged and w.value is None and w.enclosure.lo < w.enclosure.hi
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: gyrores.coupling(band=(0.3, 0.2)), "coupling(): band needs 0 < n1 < n2, got 3/10:1/5"),
+    (lambda: gyrores.coupling(band=(0.2, 0.2)), "coupling(): band needs 0 < n1 < n2"),
+    (lambda: gyrores.coupling(band=(-0.2, 0.2)), "coupling(): band needs 0 < n1 < n2"),
+    (lambda: gyrores.coupling(band="0:0.2"), "coupling(): band needs 0 < n1 < n2"),
+    # checked before the coupling's own analysis (a horizon of 1e30 would take a while)
+    (lambda: gyrores.coupling(2, horizon="1e30", band="3:1"), "coupling(): band needs 0 < n1 < n2"),
+    (lambda: gyrores.coupling(0.2, band=(0.1, 0.3), tolerance="1%"), "coupling(): give at most one of band and tolerance"),
+    (lambda: gyrores.coupling(0.2, tolerance="-1%"), "coupling(): tolerance must be in (0%, 100%), got -1%"),
+    (lambda: gyrores.coupling(0.2, tolerance=-0.01), "coupling(): tolerance must be in (0%, 100%)"),
+    (lambda: gyrores.coupling(0.2, tolerance=1), "coupling(): tolerance must be in (0%, 100%), got 100%"),
+    (lambda: gyrores.coupling(0.2, tolerance="1"), "coupling(): tolerance must be a percentage such as 1%"),
+    (lambda: gyrores.coupling(0.2, tolerance=[1]), "coupling(): tolerance must be a number"),
+    (lambda: gyrores.coupling(n2="1/12", tolerance="1%"), "coupling(): tolerance needs the coupling n"),
+    (lambda: gyrores.coupling(tolerance="1%"), "coupling(): give exactly one of n"),
+    (lambda: gyrores.coupling(band="0.2-0.3"), "coupling(): band must be N1:N2, got 0.2-0.3"),
+    (lambda: gyrores.coupling(band=(0.2,)), "coupling(): band must be (n1, n2) or text 'N1:N2'"),
+    (lambda: gyrores.coupling(band=(0.2, True)), "coupling(): band[1] must be a number"),
+    (lambda: gyrores.coupling(band=(0.2, "x")), "coupling(): band N2"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), below="1%"), "coupling(): below needs the coupling n or n2"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), band_digits=13), "coupling(): band_digits must be in [1, 12]"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), band_evaluations=5), "coupling(): band_evaluations must be in"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), horizon=-1), "coupling(): horizon must be >= 0"),
+    (lambda: gyrores.coupling(2, n2=4, band=(0.1, 0.2)), "coupling(): give exactly one of n"),
+])
+def test_band_wrong_arguments_name_function_and_argument(call, message):
+    start = time.monotonic()
+    with pytest.raises(gyrores.UsageError) as e:
+        call()
+    assert str(e.value).startswith(message) and "\n" not in str(e.value)
+    assert time.monotonic() - start < 1.0  # before any work

@@ -53,9 +53,11 @@ CALLS = {
     "design": lambda **kw: gyrores.design("contain", 17, beat=10, **kw),
     "pareto": lambda **kw: gyrores.pareto(60, **kw),
     "coupling": lambda **kw: gyrores.coupling(n2="1/12", convergents=3, **kw),
+    "coupling band": lambda **kw: gyrores.coupling(0.5, horizon=5, convergents=0, tolerance="10%", band_digits=2, **kw),
+    "band alone": lambda **kw: gyrores.coupling(band=("0.200", "0.202"), horizon=16, band_evaluations=50, **kw),
 }
 DEFAULT_TYPE = {"pair": mpmath.mpf, "pair big": mpmath.mpf, "asymptotics": mpmath.mpf, "design": float,
-                "pareto": float, "coupling": float}
+                "pareto": float, "coupling": float, "coupling band": float, "band alone": float}
 
 
 @pytest.mark.parametrize("name", CALLS)

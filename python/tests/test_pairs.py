@@ -30,6 +30,9 @@ def test_pairs_in_any_order_and_from_any_iterable():
     one = gyrores.pairs((t for t in [6]), iter([5]))
     assert len(one) == 1 and one["r_res"][0] == rows["r_res"][list(zip(rows["tau"], rows["sigma"])).index((6, 5))]
     assert len(gyrores.pairs([], [])) == 0
+    # NumPy object arrays of ints (a column of pairs(..., digits=D) with a member beyond int64)
+    objects = gyrores.pairs(np.array([6, 9], dtype=object), np.array([5, 4], dtype=object))
+    assert list(objects["tau"]) == [6, 9] and objects["r_res"][0] == one["r_res"][0]
 
 
 def test_certified_pairs_equal_the_certified_sweep():

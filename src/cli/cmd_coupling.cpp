@@ -116,39 +116,13 @@ std::string band_text(const coupling_args& a, const band_report& b) {
   return os.str();
 }
 
-json band_json(const band_report& b) {
-  auto ext = [](const band_extreme& e) {
-    return json{{"value", e.value.empty() ? json(nullptr) : json(e.value)},
-                {"enclosure", {rational_str(e.lo), rational_str(e.hi)}},
-                {"n_at", rational_str(e.n_at)},
-                {"n_box", {rational_str(e.n_box_lo), rational_str(e.n_box_hi)}},
-                {"converged", e.converged}};
-  };
-  json j{{"n1", rational_str(b.n1)}, {"n2", rational_str(b.n2)}, {"digits", b.digits}, {"lipschitz", b.lipschitz},
-         {"evaluations", b.evaluations}, {"worst_h_min", ext(b.worst)}, {"best_h_min", ext(b.best)}};
-  j["degenerate"] = b.zero ? json{{"n2", rational_str(b.zero->n2)}, {"tau", json_integer(b.zero->pair.tau())},
-                                  {"sigma", json_integer(b.zero->pair.sigma())}, {"t_zero", b.zero->t_zero.value}}
-                           : json(nullptr);
-  return j;
-}
-
 // --band N1:N2, or --tolerance P% around N.
 std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args& a) {
   if (!a.band.empty() && !a.tolerance.empty()) throw usage_error("give at most one of --band and --tolerance");
-  if (!a.band.empty()) {
-    const auto colon = a.band.find(':');
-    if (colon == std::string::npos) throw usage_error("--band must be N1:N2, got " + a.band);
-    return std::pair{parse_rational(a.band.substr(0, colon), "--band N1"), parse_rational(a.band.substr(colon + 1), "--band N2")};
-  }
+  if (!a.band.empty()) return parse_band(a.band, "--band");
   if (a.tolerance.empty()) return std::nullopt;
   if (a.n.empty()) throw usage_error("--tolerance needs the coupling N (not --n2)");
-  std::string t = a.tolerance;
-  if (t.empty() || t.back() != '%') throw usage_error("--tolerance must be a percentage such as 1%, got " + a.tolerance);
-  t.pop_back();
-  const big_rational p = parse_rational(t, "--tolerance") / 100, n = parse_rational(a.n, "N");
-  if (!(p > 0) || !(p < 1)) throw usage_error("--tolerance must be in (0%, 100%), got " + a.tolerance);
-  const big_rational an = n < 0 ? big_rational(-n) : n;
-  return std::pair{big_rational(an * (1 - p)), big_rational(an * (1 + p))};
+  return parse_tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance");
 }
 
 std::string run_coupling(const coupling_args& a) {
@@ -162,7 +136,7 @@ std::string run_coupling(const coupling_args& a) {
     progress_stage("proving the band's worst and best minimum (at most " + std::to_string(bo.max_evaluations) + " evaluations each)");
     const band_report b = prove_band(band->first, band->second, parse_horizon_time(a.horizon, "--horizon"), bo);
     if (!a.json) return band_text(a, b);
-    return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_json(b)}}) + "\n";
+    return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_report_json(b)}}) + "\n";
   }
   if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
   check_digits_flag(a.digits, 1, 1000);
@@ -193,7 +167,7 @@ std::string run_coupling(const coupling_args& a) {
   if (!a.json) return coupling_text(a, r) + (b ? band_text(a, *b) : "");
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
-  if (b) j["band"] = band_json(*b);
+  if (b) j["band"] = band_report_json(*b);
   return json_dump(j) + "\n";
 }
 
