@@ -26,6 +26,8 @@ using band_detail::envelope_bound;
 using band_detail::envelope_max;
 
 constexpr slong lip_prec = 128;
+// Lobe centres listed per box at most (more: the box is split first, with a one-lobe bound).
+constexpr std::size_t max_centres = std::size_t(1) << 20;
 
 // sin and cos of a ball, each clipped to [-1, 1] (Arb may return wider balls for wide arguments).
 void sin_cos_clipped(arb_t s, arb_t c, const arb_t a, slong p) {
@@ -576,7 +578,7 @@ struct search {
       out.hint = (a + b) / 2;
       return out;
     }
-    const envelope_bound env = envelope_max(xa, xb, K, cap, std::size_t(1) << 17, 3, ctx.stop);
+    const envelope_bound env = envelope_max(xa, xb, K, cap, max_centres, 3, ctx.stop);
     out.cap = env.value;
     // V_x(nu*(x)) <= V_x(height of the piece holding x) <= sup over the piece of V(height).
     std::optional<big_rational> uv = big_rational(0);
@@ -593,7 +595,8 @@ struct search {
     }
     if (uv && *uv < out.bound) {
       out.bound = *uv;
-      out.hint = env.top.empty() ? big_rational((a + b) / 2) : n_near(ctx, env.top.front().at, a, b);
+      // Where the highest peak is (a one-lobe bound says little about where M is largest).
+      if (env.enumerated && !env.top.empty()) out.hint = n_near(ctx, env.top.front().at, a, b);
     } else out.hint = (a + b) / 2;
     return out;
   }
