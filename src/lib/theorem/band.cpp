@@ -593,6 +593,16 @@ struct search {
       if (!v) uv.reset();
       else if (*v > *uv) uv = v;
     }
+    if (env.enumerated && env.centres <= 64) {
+      // Also the one lobe best at the middle (its bound tends to nu* there as the box shrinks,
+      // whichever tents the pieces used).
+      const big_int k = min_distance_to_half(quadratic_number(big_rational((xa + xb) / 2)), K).k;
+      const big_rational one = band_detail::lobe_distance_max(xa, xb, k);
+      if (one < env.value) {
+        const auto v = ctx.V_upper(xa, xb, one);
+        if (v && (!uv || *v < *uv)) uv = v;
+      }
+    }
     if (uv && *uv < out.bound) {
       out.bound = *uv;
       // Where the highest peak is (a one-lobe bound says little about where M is largest).
