@@ -255,6 +255,8 @@ TEST_CASE("band: the bounds of the first, large boxes already enclose every samp
                              band_case{big_rational(19, 10), big_rational(21, 10), horizon_time(big_rational(10000))},
                              band_case{big_rational(200, 1000), big_rational(202, 1000), horizon_time(big_rational(156, 10))},
                              band_case{big_rational(1, 2), big_rational(3, 2), horizon_time(big_rational(300))},
+                             // wide: s^3 over n in [1/2, 3] evaluated as s s s would hold 0
+                             band_case{big_rational(1, 2), big_rational(3), horizon_time(big_rational(1))},
                              // 3.5 10^7 lobe centres: every box of these budgets too large to list them
                              band_case{big_rational(19, 10), big_rational(21, 10), horizon_time(big_rational(100000))}}) {
     INFO("band [" << rational_str(c.n1) << ", " << rational_str(c.n2) << "], T = " << c.T.str());

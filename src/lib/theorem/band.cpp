@@ -84,6 +84,28 @@ void set_interval(arb_t out, const big_rational& lo, const big_rational& hi, slo
   arb_union(out, a, b, p);
 }
 
+// out = v^2 from the ends of v (a plain product v v of a wide ball can reach below 0).
+void square(arb_t out, const arb_t v, slong p) {
+  arf_t l, h;
+  arf_init(l);
+  arf_init(h);
+  arb_get_lbound_arf(l, v, p);
+  arb_get_ubound_arf(h, v, p);
+  ball a, b;
+  arb_set_arf(a, l);
+  arb_set_arf(b, h);
+  arb_mul(a, a, a, p);
+  arb_mul(b, b, b, p);
+  arb_union(out, a, b, p);
+  if (arf_sgn(l) < 0 && arf_sgn(h) > 0) {  // 0 inside
+    ball z;
+    arb_zero(z);
+    arb_union(out, out, z, p);
+  }
+  arf_clear(l);
+  arf_clear(h);
+}
+
 // ---- The lobe functions with x as a ball (proofs/horizon-theorem.md, Notation) ----
 
 // H_x(u) = x u + phi(u), phi the continuous angle of (cos u, x sin u), for |u| <= pi/2.
@@ -113,12 +135,12 @@ void G_of(arb_t out, const arb_t x, const arb_t u, slong p) {
   ball sn, cs, xs, e, t, w;
   arb_sin_cos(sn, cs, u, p);
   arb_mul(xs, x, sn, p);
-  arb_mul(xs, xs, xs, p);  // x^2 sin^2
-  arb_mul(cs, cs, cs, p);
+  square(xs, xs, p);       // x^2 sin^2
+  square(cs, cs, p);
   arb_add(e, cs, xs, p);
-  arb_mul(t, sn, sn, p);
+  square(t, sn, p);
   arb_mul(t, t, xs, p);    // x^2 sin^4
-  arb_mul(w, x, x, p);
+  square(w, x, p);
   arb_sub_si(w, w, 1, p);
   arb_neg(w, w);           // 1 - x^2
   arb_mul(out, w, t, p);
@@ -364,20 +386,54 @@ struct band_ctx {
   // x = n/s, c = 2/s, alpha = s t/2, beta = n t/2: q = c sin(alpha) cos(beta),
   // q' = cos(alpha) cos(beta) - x sin(alpha) sin(beta); d alpha/dn = x t/2, d beta/dn = t/2,
   // dx/dn = 4/s^3, dc/dn = -2n/s^3 (Step 12).
+  // s, x, c = 2/s, dx/dn = 4/s^3 and dc/dn = -2n/s^3 over a ball of n > 0. Each is monotone in n
+  // except dc/dn, whose size 2n/s^3 peaks at n = sqrt 2: enclosed from the ball's ends, since
+  // evaluating them on a wide ball directly can divide by a ball that holds 0 (s^3 from s s s).
+  static void coefficients(arb_t s, arb_t x, arb_t c, arb_t dx, arb_t dc, const arb_t n, slong p) {
+    const auto at = [p](arb_t s1, arb_t x1, arb_t c1, arb_t dx1, arb_t dc1, const arb_t n1) {
+      ball s3;
+      arb_mul(s1, n1, n1, p);
+      arb_add_si(s1, s1, 4, p);
+      arb_sqrt(s1, s1, p);
+      arb_div(x1, n1, s1, p);
+      arb_set_si(c1, 2);
+      arb_div(c1, c1, s1, p);
+      arb_mul(s3, s1, s1, p);
+      arb_mul(s3, s3, s1, p);
+      arb_set_si(dx1, 4);
+      arb_div(dx1, dx1, s3, p);
+      arb_mul_si(dc1, n1, -2, p);
+      arb_div(dc1, dc1, s3, p);
+    };
+    if (arb_is_exact(n)) {
+      at(s, x, c, dx, dc, n);
+      return;
+    }
+    ball lo, hi, s2, x2, c2, dx2, dc2;
+    arf_t b;
+    arf_init(b);
+    arb_get_lbound_arf(b, n, p);
+    arb_set_arf(lo, b);
+    arb_get_ubound_arf(b, n, p);
+    arb_set_arf(hi, b);
+    arf_clear(b);
+    at(s, x, c, dx, dc, lo);
+    at(s2, x2, c2, dx2, dc2, hi);
+    arb_union(s, s, s2, p);
+    arb_union(x, x, x2, p);
+    arb_union(c, c, c2, p);
+    arb_union(dx, dx, dx2, p);
+    arb_union(dc, dc, dc2, p);
+    ball root2;
+    arb_sqrt_ui(root2, 2, p);
+    if (arb_overlaps(n, root2)) {
+      at(s2, x2, c2, dx2, dc2, root2);
+      arb_union(dc, dc, dc2, p);
+    }
+  }
   void R_and_slope(arb_t R, arb_t dR, const arb_t n, const arb_t tt, slong p) const {
-    ball s, x, c, s3, dx, dc, a, b, da, db, sa, ca, sb, cb, q, qd, dq, dqd, tmp, tmp2;
-    arb_mul(s, n, n, p);
-    arb_add_si(s, s, 4, p);
-    arb_sqrt(s, s, p);
-    arb_div(x, n, s, p);
-    arb_set_si(c, 2);
-    arb_div(c, c, s, p);
-    arb_mul(s3, s, s, p);
-    arb_mul(s3, s3, s, p);
-    arb_set_si(dx, 4);
-    arb_div(dx, dx, s3, p);
-    arb_mul_si(dc, n, -2, p);
-    arb_div(dc, dc, s3, p);
+    ball s, x, c, dx, dc, a, b, da, db, sa, ca, sb, cb, q, qd, dq, dqd, tmp, tmp2;
+    coefficients(s, x, c, dx, dc, n, p);
     arb_mul(a, s, tt, p);
     arb_mul_2exp_si(a, a, -1);
     arb_mul(b, n, tt, p);
