@@ -214,9 +214,11 @@ def test_band_with_a_degenerate_pair_has_best_zero_exactly():
     assert abs(b.degenerate.t_zero - pair.pair_analysis.t_first) <= 1e-10 * pair.pair_analysis.t_first
     assert b.degenerate.t_zero <= 16 and r.horizon == 16 and r.theorem == "horizon-theorem/1"
     assert set(r) == {"horizon", "theorem", "band", "digits"}  # a band alone: the CLI's keys
-    # not converged within 200 minima: the enclosure is still proved (it holds the worst's n_at)
+    # the worst case converges (lobe bounds) and its enclosure holds the value at its n_at
     w = b.worst_h_min
-    assert not w.converged and w.value is None and w.enclosure.lo < w.enclosure.hi
+    assert w.converged and w.enclosure.lo <= w.value <= w.enclosure.hi
+    at = gyrores.coupling(w.n_at, horizon=16, digits=12)
+    assert w.enclosure.lo <= at.h_min_horizon * (1 + 1e-11) and at.h_min_horizon * (1 - 1e-11) <= w.enclosure.hi
 
 
 @pytest.mark.parametrize("call, message", [

@@ -3,6 +3,9 @@
 // when resonant; the minimum of H_q over [0, T] with its first time and the first time H_q <= E
 // (the horizon theorem, proved); the infimum over all time; the continued-fraction convergents
 // of W1/W2 as resonant pairs.
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
@@ -14,7 +17,7 @@
 #include <gyrores/io/report_json.hpp>
 
 #include "cli_options.hpp"
-#include "cli_process.hpp"
+#include "cli_signals.hpp"
 #include "commands.hpp"
 #include "pair_output.hpp"
 
@@ -111,9 +114,53 @@ std::string band_text(const coupling_args& a, const band_report& b) {
   if (b.zero)
     os << "  degenerate    the pair " << b.zero->pair.str() << " (n^2 = " << rational_str(b.zero->n2)
        << ") lies in the band and H_q = 0 there at t = " << b.zero->t_zero.value << " <= T: no containment guarantee\n";
-  os << "  proof         horizon theorem at " << b.evaluations << " couplings, |dH_q/dn| <= " << b.lipschitz
-     << " over the band and [0, T]; each bound an enclosure of the exact extreme\n";
+  os << "  proof         horizon theorem at " << b.evaluations << " couplings, lobe and end-point bounds on " << b.boxes
+     << " boxes of n (" << horizon_theorem_id << ", Step 12); each bound an enclosure of the exact extreme\n";
   return os.str();
+}
+
+// Progress of a band proof on stderr once it has run for a second: a redrawn line on a terminal
+// (cleared at the end), otherwise a plain line then and every 10 s.
+class band_progress_printer {
+ public:
+  band_progress_printer() : tty_(::isatty(2) == 1), start_(std::chrono::steady_clock::now()) {}
+  ~band_progress_printer() {
+    if (tty_ && drawn_) std::fputs("\r\x1b[K", stderr);
+  }
+  band_progress_printer(const band_progress_printer&) = delete;
+  band_progress_printer& operator=(const band_progress_printer&) = delete;
+  void operator()(const band_progress& p) {
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (t < 1 || (drawn_ && t - last_ < (tty_ ? 0.2 : 10.0))) return;
+    last_ = t;
+    char line[200];
+    std::snprintf(line, sizeof line, "gyrores coupling: %s min H_q in [%.6e, %.6e]  %zu boxes, %zu minima  %.0f s",
+                  p.worst ? "worst" : "best", p.lo, p.hi, p.boxes, p.evaluations, t);
+    if (tty_) std::fprintf(stderr, "\r%s\x1b[K", line);
+    else std::fprintf(stderr, "%s\n", line);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+
+ private:
+  bool tty_;
+  std::chrono::steady_clock::time_point start_;
+  bool drawn_ = false;
+  double last_ = 0;
+};
+
+// The band proof of --band/--tolerance, interruptible by Ctrl-C (exit 130), with progress.
+band_report run_band(const coupling_args& a, const std::pair<big_rational, big_rational>& band, const horizon_time& T) {
+  check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
+  check_flag_range(a.band_evaluations, 10, 1000000, "--band-evaluations");
+  band_options bo;
+  bo.digits = unsigned(a.band_digits);
+  bo.max_evaluations = std::size_t(a.band_evaluations);
+  signal_scope signals;
+  bo.stop = signals.token();
+  band_progress_printer printer;
+  bo.progress = [&printer](const band_progress& p) { printer(p); };
+  return prove_band(band.first, band.second, T, bo);
 }
 
 // --band N1:N2, or --tolerance P% around N.
@@ -128,13 +175,7 @@ std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args
 std::string run_coupling(const coupling_args& a) {
   const auto band = band_of(a);
   if (band && a.n.empty() && a.n2.empty()) {
-    check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
-    check_flag_range(a.band_evaluations, 10, 1000000, "--band-evaluations");
-    band_options bo;
-    bo.digits = unsigned(a.band_digits);
-    bo.max_evaluations = std::size_t(a.band_evaluations);
-    progress_stage("proving the band's worst and best minimum (at most " + std::to_string(bo.max_evaluations) + " evaluations each)");
-    const band_report b = prove_band(band->first, band->second, parse_horizon_time(a.horizon, "--horizon"), bo);
+    const band_report b = run_band(a, *band, parse_horizon_time(a.horizon, "--horizon"));
     if (!a.json) return band_text(a, b);
     return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_report_json(b)}}) + "\n";
   }
@@ -155,15 +196,7 @@ std::string run_coupling(const coupling_args& a) {
     write_file_atomically(a.certificate, coupling_certificate_text(spec, opt.horizon.value, opt.below, unsigned(a.digits)));
   }
   std::optional<band_report> b;
-  if (band) {
-    check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
-    check_flag_range(a.band_evaluations, 10, 1000000, "--band-evaluations");
-    band_options bo;
-    bo.digits = unsigned(a.band_digits);
-    bo.max_evaluations = std::size_t(a.band_evaluations);
-    progress_stage("proving the band's worst and best minimum (at most " + std::to_string(bo.max_evaluations) + " evaluations each)");
-    b = prove_band(band->first, band->second, opt.horizon, bo);
-  }
+  if (band) b = run_band(a, *band, opt.horizon);
   if (!a.json) return coupling_text(a, r) + (b ? band_text(a, *b) : "");
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
@@ -181,7 +214,7 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("--band", a->band, "a band of couplings N1:N2: worst and best min of H_q over [0, T], proved (N optional)");
   sub.add("--tolerance", a->tolerance, "the band N (1 -+ P%) around N, e.g. 1%");
   sub.add("--band-digits", a->band_digits, "relative width asked of the band's enclosures: 10^-D (1..12)", show::with_default);
-  sub.add("--band-evaluations", a->band_evaluations, "proved horizon minima per extreme at most", show::with_default);
+  sub.add("--band-evaluations", a->band_evaluations, "box bounds plus proved horizon minima per extreme at most", show::with_default);
   sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%)");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);

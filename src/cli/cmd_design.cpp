@@ -12,6 +12,7 @@
 #include <gyrores/io/json.hpp>
 
 #include "cli_options.hpp"
+#include "cli_signals.hpp"
 #include "commands.hpp"
 #include "pair_output.hpp"
 
@@ -204,7 +205,10 @@ std::string run_design(const design_args& a) {
   }
   const bool exact_exceeds = a.proxy && !design_time_within(res.ranked.front(), design_time::first_hit, o.tmax);
   if (!tol) return a.json ? design_json(a, res, rows, exact_exceeds) : design_text(a, o, res, rows, exact_exceeds);
-  const tolerance_result tr = design_with_tolerance(res.ranked, o.problem, *tol);
+  signal_scope signals;  // the band proofs stop on Ctrl-C (exit 130)
+  tolerance_options t = *tol;
+  t.band.stop = signals.token();
+  const tolerance_result tr = design_with_tolerance(res.ranked, o.problem, t);
   if (!a.json) return design_text(a, o, res, rows, exact_exceeds) + tolerance_text(a, o.problem, tr);
   std::string text = design_json(a, res, rows, exact_exceeds);
   json j = json::parse(text);

@@ -3,7 +3,6 @@
 // Visits every coprime pair with m <= tau + sigma <= M, checks the paper's claims per pair and
 // prints a summary. The engine is include/gyrores/sweep/, the files io/sweep_files.hpp; what
 // the rows, summary, resume state and merge hold is in docs/formats.md.
-#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,40 +15,11 @@
 
 #include "cli_output.hpp"
 #include "cli_options.hpp"
+#include "cli_signals.hpp"
 #include "commands.hpp"
 
 namespace gyrores::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void sweep_on_signal(int) {
-  if (g_stop.load()) ::_exit(130);  // a second signal: leave at once (the last checkpoint stays)
-  g_stop.store(true);
-}
-
-// Installs SIGINT/SIGTERM handlers for the scope of a sweep, restoring the old ones after.
-class signal_scope {
- public:
-  signal_scope() {
-    g_stop.store(false);
-    struct sigaction sa {};
-    sa.sa_handler = sweep_on_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0;
-    sigaction(SIGINT, &sa, &old_int_);
-    sigaction(SIGTERM, &sa, &old_term_);
-  }
-  ~signal_scope() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  signal_scope(const signal_scope&) = delete;
-  signal_scope& operator=(const signal_scope&) = delete;
-
- private:
-  struct sigaction old_int_ {}, old_term_ {};
-};
 
 struct sweep_args {
   std::int64_t max_order = 0, min_order = 3;
@@ -235,7 +205,7 @@ sweep_report run_at_precision(const sweep_args& a, const sweep_config& cfg, cons
   sweep_engine_options eo;
   eo.threads = a.threads;
   eo.max_pairs = std::uint64_t(a.max_pairs);
-  eo.stop = &g_stop;
+  eo.stop = &stop_flag();  // set by the signal_scope of run_sweep
   if (a.digits <= 15) return run_typed<double>(cfg, files, eo, a.quiet);
   if (a.digits <= 30) return run_typed<float128>(cfg, files, eo, a.quiet);
   return run_typed<mpfr_real>(cfg, files, eo, a.quiet);
@@ -249,7 +219,7 @@ std::string run_sweep(const sweep_args& a) {
   const sweep_report rep = run_at_precision(a, cfg, files);
   if (!rep.complete) {
     // Not "could not compute": a stop the user asked for, with its own status (cli_output.hpp).
-    const bool interrupted = g_stop.load();
+    const bool interrupted = stop_flag().load();
     throw command_exit{interrupted ? exit_interrupted : exit_stopped,
                        std::string("gyrores sweep: ") + (interrupted ? "interrupted" : "stopped by --max-pairs") + " after " +
                            with_commas(rep.done) + (rep.total ? " of " + with_commas(rep.total) : "") +

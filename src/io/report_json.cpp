@@ -176,7 +176,7 @@ json band_report_json(const band_report& b) {
                 {"converged", e.converged}};
   };
   json j{{"n1", rational_str(b.n1)}, {"n2", rational_str(b.n2)}, {"digits", b.digits}, {"lipschitz", b.lipschitz},
-         {"evaluations", b.evaluations}, {"worst_h_min", ext(b.worst)}, {"best_h_min", ext(b.best)}};
+         {"evaluations", b.evaluations}, {"boxes", b.boxes}, {"worst_h_min", ext(b.worst)}, {"best_h_min", ext(b.best)}};
   j["degenerate"] = b.zero ? json{{"n2", rational_str(b.zero->n2)}, {"tau", json_integer(b.zero->pair.tau())},
                                   {"sigma", json_integer(b.zero->pair.sigma())}, {"t_zero", b.zero->t_zero.value}}
                            : json(nullptr);
