@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -104,8 +105,14 @@ int run(int argc, char** argv, bool execute) {
   app.footer(
       "Exit status: 0 ok (check: holds); 1 check: the certificate fails; 2 bad input or a file that cannot be read "
       "or written; 3 could not compute honestly; 4 sweep stopped by --max-pairs (resume state kept); 130 interrupted.");
+  // Only the subcommand named on the command line is set up (its options cost more than the rest
+  // of a short run); every one when the first word names none (usage, help, a typo).
   std::map<std::string, command_runner> runners;
-  for (auto& entry : command_registry()) runners[entry.name] = entry.install(app);
+  const std::string first = argc > 1 ? argv[1] : "";
+  const auto& registry = command_registry();
+  const bool named = std::any_of(registry.begin(), registry.end(), [&](const auto& e) { return e.name == first; });
+  for (auto& entry : registry)
+    if (!named || entry.name == first) runners[entry.name] = entry.install(app);
 
   // A bare `gyrores`: the usage on stderr (it answers no question), exit 2.
   if (argc <= 1) {
