@@ -622,8 +622,14 @@ def _table(columns):
     return table
 
 
+# The memory the rows of sweep() take at their peak (the library's columns, growing, then NumPy's
+# copies), per pair, and what sweep() accepts without allow_large=True.
+_SWEEP_ROW_BYTES = 300
+_SWEEP_ROWS_LIMIT = 4 * 2**30
+
+
 def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", threads=0, cross_check_max_order=300,
-          examples=5):
+          examples=5, allow_large=False):
     """Check the paper's claims on every pair with min_order <= tau + sigma <= max_order (in double).
 
     Returns (rows, summary): rows a NumPy structured array, one record per pair in enumeration
@@ -634,15 +640,24 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
     after every block of pairs (it may call gyrores itself), and an exception it raises (or
     Ctrl-C) stops the sweep. checks: "default" (the paper's four claims), "all" (with the opt-in
     cross-check against the global search, order <= cross_check_max_order) or a comma-separated
-    list (degeneracy, paper-node, asy-bound, structure, cross-check).
+    list (degeneracy, paper-node, asy-bound, structure, cross-check). The rows take about 300
+    bytes a pair at their peak: beyond 4 GiB (about 14 million pairs, max_order 9700) sweep()
+    refuses with the estimate unless allow_large=True (rows=False needs no such memory).
     """
     f = "sweep"
     if progress is not None and not callable(progress):
         raise UsageError(f"sweep(): progress must be callable, got {type(progress).__name__}")
     if not isinstance(checks, str):
         raise UsageError(f"sweep(): checks must be text, got {type(checks).__name__}")
-    columns, summary = _gyrores._sweep(_args.bounded(max_order, f, "max_order", 0, 2**40),
-                                       _args.bounded(min_order, f, "min_order", 0, 2**40), _args.flag(rows, f, "rows"),
+    top, bottom = _args.bounded(max_order, f, "max_order", 0, 2**40), _args.bounded(min_order, f, "min_order", 0, 2**40)
+    if _args.flag(rows, f, "rows") and not _args.flag(allow_large, f, "allow_large") and max(bottom, 3) <= top:
+        count = _gyrores._sweep_pairs(max(bottom, 3), top)
+        need = count * _SWEEP_ROW_BYTES
+        if need > _SWEEP_ROWS_LIMIT:
+            raise UsageError(f"sweep(): the rows of {count} pairs would take about "
+                             f"{need / 1e9:.3g} GB of memory: pass rows=False (the summary alone), a smaller "
+                             f"max_order, or allow_large=True")
+    columns, summary = _gyrores._sweep(top, bottom, _args.flag(rows, f, "rows"),
                                        progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
                                        _args.bounded(cross_check_max_order, f, "cross_check_max_order", 0, 2**40),
                                        _args.bounded(examples, f, "examples", 0, 2**31))

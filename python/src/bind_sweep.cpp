@@ -117,6 +117,8 @@ void bind_sweep(py::module_& m) {
       .def("__next__", &pair_iterator::next);
   m.def("_enumerate_pairs", [](std::int64_t max_order, std::int64_t min_order) { return pair_iterator(max_order, min_order); },
         py::arg("max_order"), py::arg("min_order"), "A _PairIterator. Use gyrores.enumerate_pairs.");
+  m.def("_sweep_pairs", &sweep_total_pairs, py::arg("min_order"), py::arg("max_order"),
+        "The number of pairs with min_order <= tau + sigma <= max_order (exact, without enumerating them).");
   m.def("_sweep", &run_sweep, py::arg("max_order"), py::arg("min_order"), py::arg("rows"), py::arg("progress"),
         py::arg("checks"), py::arg("threads"), py::arg("cross_check_max_order"), py::arg("examples"),
         "(row columns or None, summary dict) of a sweep in double. Use gyrores.sweep.");

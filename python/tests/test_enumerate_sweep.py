@@ -1,5 +1,6 @@
 # gyrores.enumerate_pairs and gyrores.sweep against an independent enumeration and the CLI.
 import math
+import time
 import threading
 
 import pytest
@@ -107,3 +108,17 @@ def test_sweep_bad_input():
         gyrores.sweep(2)
     with pytest.raises(ValueError):
         gyrores.sweep(50, checks="nonsense")
+
+
+def test_sweep_rows_beyond_memory_are_refused_at_once():
+    # order 20000 holds 60,795,197 pairs: ~18 GB of rows; refused before any work, naming the way out
+    t = time.perf_counter()
+    with pytest.raises(gyrores.UsageError, match=r"sweep\(\): the rows of 60795197 pairs would take about 18\.2 GB.*allow_large=True"):
+        gyrores.sweep(20000)
+    with pytest.raises(gyrores.UsageError, match="allow_large"):
+        gyrores.sweep(11000, min_order=0)
+    assert time.perf_counter() - t < 1
+    with pytest.raises(gyrores.UsageError, match="allow_large must be True or False"):
+        gyrores.sweep(10, allow_large="yes")
+    rows, _ = gyrores.sweep(30, allow_large=True)  # small sweeps are unaffected
+    assert len(rows) == gyrores._gyrores._sweep_pairs(3, 30)
