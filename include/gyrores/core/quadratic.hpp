@@ -61,6 +61,8 @@ class quadratic_number {
   double approx() const;
 
  private:
+  // (p + q sqrt d)/r for a d taken from an operand (already checked and reduced): normalised only.
+  static quadratic_number in_field(big_int p, big_int q, big_int r, const big_int& d);
   void normalise();
   big_int p_ = 0, q_ = 0, r_ = 1, d_ = 0;
 };

@@ -54,6 +54,17 @@ quadratic_number::quadratic_number(const big_int& p, const big_int& q, const big
   normalise();
 }
 
+quadratic_number quadratic_number::in_field(big_int p, big_int q, big_int r, const big_int& d) {
+  if (r == 0) throw usage_error("quadratic_number: zero denominator");
+  quadratic_number v;
+  v.p_ = std::move(p);
+  v.q_ = std::move(q);
+  v.r_ = std::move(r);
+  v.d_ = d;
+  v.normalise();
+  return v;
+}
+
 void quadratic_number::normalise() {
   if (r_ < 0) {
     p_ = -p_;
@@ -88,7 +99,7 @@ quadratic_number quadratic_number::frac() const { return *this - quadratic_numbe
 
 quadratic_number operator+(const quadratic_number& a, const quadratic_number& b) {
   const big_int& d = common_d(a, b);
-  return quadratic_number(a.p_ * b.r_ + b.p_ * a.r_, a.q_ * b.r_ + b.q_ * a.r_, a.r_ * b.r_, d);
+  return quadratic_number::in_field(a.p_ * b.r_ + b.p_ * a.r_, a.q_ * b.r_ + b.q_ * a.r_, a.r_ * b.r_, d);
 }
 
 quadratic_number quadratic_number::operator-() const {
@@ -102,14 +113,14 @@ quadratic_number operator-(const quadratic_number& a, const quadratic_number& b)
 
 quadratic_number operator*(const quadratic_number& a, const quadratic_number& b) {
   const big_int& d = common_d(a, b);
-  return quadratic_number(a.p_ * b.p_ + a.q_ * b.q_ * d, a.p_ * b.q_ + a.q_ * b.p_, a.r_ * b.r_, d);
+  return quadratic_number::in_field(a.p_ * b.p_ + a.q_ * b.q_ * d, a.p_ * b.q_ + a.q_ * b.p_, a.r_ * b.r_, d);
 }
 
 quadratic_number operator/(const quadratic_number& a, const quadratic_number& b) {
   if (b.sign() == 0) throw usage_error("quadratic_number: division by zero");
   // 1/b = r (p - q sqrt d)/(p^2 - q^2 d); the norm is non-zero since d is not a square.
   const big_int norm = b.p_ * b.p_ - b.q_ * b.q_ * b.d_;
-  const quadratic_number inv(b.r_ * b.p_, -b.r_ * b.q_, norm, b.is_rational() ? big_int(0) : b.d_);
+  const quadratic_number inv = quadratic_number::in_field(b.r_ * b.p_, -b.r_ * b.q_, norm, b.d_);
   return a * inv;
 }
 
