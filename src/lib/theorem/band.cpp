@@ -17,11 +17,13 @@
 
 #include "arb_ball.hpp"
 #include "band_envelope.hpp"
+#include "lobe_balls.hpp"
 
 namespace gyrores {
 namespace {
 
 using namespace arb_support;
+using namespace lobe_balls;
 using band_detail::envelope_bound;
 using band_detail::envelope_max;
 
@@ -84,68 +86,6 @@ void set_interval(arb_t out, const big_rational& lo, const big_rational& hi, slo
   arb_union(out, a, b, p);
 }
 
-// out = v^2 from the ends of v (a plain product v v of a wide ball can reach below 0).
-void square(arb_t out, const arb_t v, slong p) {
-  arf_t l, h;
-  arf_init(l);
-  arf_init(h);
-  arb_get_lbound_arf(l, v, p);
-  arb_get_ubound_arf(h, v, p);
-  ball a, b;
-  arb_set_arf(a, l);
-  arb_set_arf(b, h);
-  arb_mul(a, a, a, p);
-  arb_mul(b, b, b, p);
-  arb_union(out, a, b, p);
-  if (arf_sgn(l) < 0 && arf_sgn(h) > 0) {  // 0 inside
-    ball z;
-    arb_zero(z);
-    arb_union(out, out, z, p);
-  }
-  arf_clear(l);
-  arf_clear(h);
-}
-
-// ---- The lobe functions with x as a ball (proofs/horizon-theorem.md, Notation) ----
-
-// H_x(u) = x u + phi(u), phi the continuous angle of (cos u, x sin u), for |u| <= pi/2.
-void H_of(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, t;
-  arb_sin_cos(sn, cs, u, p);
-  arb_mul(sn, sn, x, p);
-  arb_atan2(t, sn, cs, p);
-  arb_mul(out, x, u, p);
-  arb_add(out, out, t, p);
-}
-
-// H'(u) = x + x/E(u), E = cos^2 u + x^2 sin^2 u.
-void dH_of(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, e;
-  arb_sin_cos(sn, cs, u, p);
-  arb_mul(sn, sn, x, p);
-  arb_mul(sn, sn, sn, p);
-  arb_mul(cs, cs, cs, p);
-  arb_add(e, sn, cs, p);
-  arb_div(out, x, e, p);
-  arb_add(out, out, x, p);
-}
-
-// G_x(u) = (1 - x^2) x^2 sin^4 u / E(u): R at a zero of q' (lattice-theorem.md Step C).
-void G_of(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, xs, e, t, w;
-  arb_sin_cos(sn, cs, u, p);
-  arb_mul(xs, x, sn, p);
-  square(xs, xs, p);       // x^2 sin^2
-  square(cs, cs, p);
-  arb_add(e, cs, xs, p);
-  square(t, sn, p);
-  arb_mul(t, t, xs, p);    // x^2 sin^4
-  square(w, x, p);
-  arb_sub_si(w, w, 1, p);
-  arb_neg(w, w);           // 1 - x^2
-  arb_mul(out, w, t, p);
-  arb_div(out, out, e, p);
-}
 
 double H_double(double x, double u) { return x * u + std::atan2(x * std::sin(u), std::cos(u)); }
 

@@ -4,6 +4,7 @@
 #include <arb.h>
 
 #include "arb_ball.hpp"
+#include "lobe_balls.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -51,40 +52,10 @@ struct coupling_balls {
     arb_const_pi(pi, prec);
   }
 
-  // H(u) = x u + phi(u), phi the continuous angle of (cos u, x sin u) (|u| <= pi/2 here).
-  void H(arb_t out, const arb_t u) const {
-    ball sn, cs, t;
-    arb_sin_cos(sn, cs, u, prec);
-    arb_mul(sn, sn, x, prec);
-    arb_atan2(t, sn, cs, prec);
-    arb_mul(out, x, u, prec);
-    arb_add(out, out, t, prec);
-  }
-  // H'(u) = x + x/E(u), E = cos^2 u + x^2 sin^2 u.
-  void dH(arb_t out, const arb_t u) const {
-    ball sn, cs, e;
-    arb_sin_cos(sn, cs, u, prec);
-    arb_mul(sn, sn, x, prec);
-    arb_mul(sn, sn, sn, prec);
-    arb_mul(cs, cs, cs, prec);
-    arb_add(e, sn, cs, prec);
-    arb_div(out, x, e, prec);
-    arb_add(out, out, x, prec);
-  }
-  // G(u) = (1 - x^2) x^2 sin^4 u / E(u): R at a zero of q' (lattice-theorem.md Step C).
-  void G(arb_t out, const arb_t u) const {
-    ball sn, cs, xs, e, t;
-    arb_sin_cos(sn, cs, u, prec);
-    arb_mul(xs, x, sn, prec);
-    arb_mul(xs, xs, xs, prec);  // x^2 sin^2
-    arb_mul(cs, cs, cs, prec);
-    arb_add(e, cs, xs, prec);
-    arb_mul(t, sn, sn, prec);   // sin^2
-    arb_mul(t, t, xs, prec);    // x^2 sin^4
-    arb_mul(out, c, c, prec);   // 1 - x^2
-    arb_mul(out, out, t, prec);
-    arb_div(out, out, e, prec);
-  }
+  // H, H' and G of theorem/lobe_balls.hpp at this coupling's x (|u| <= pi/2 here).
+  void H(arb_t out, const arb_t u) const { lobe_balls::H_of(out, x, u, prec); }
+  void dH(arb_t out, const arb_t u) const { lobe_balls::dH_of(out, x, u, prec); }
+  void G(arb_t out, const arb_t u) const { lobe_balls::G_of(out, x, u, prec); }
   // dG/du = (1 - x^2) x^2 sin^3 u cos u (4 E - 2 sin^2 u (x^2 - 1)) / E^2, for Newton only.
   void dG(arb_t out, const arb_t u) const {
     ball sn, cs, xs, e, t, w;
