@@ -14,6 +14,8 @@
 // an inequality that still cannot be decided fails the certificate, never passes it.
 #include "certificate_checker.hpp"
 
+#include "checker_support.hpp"
+
 #include <arb.h>
 #include <flint/fmpz.h>
 
@@ -27,43 +29,7 @@ namespace gyrores_checker {
 
 namespace {
 
-using nlohmann::json;
-
-struct malformed : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-struct fails : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// RAII for FLINT integers and Arb balls.
-struct Z {
-  fmpz_t v;
-  Z() { fmpz_init(v); }
-  explicit Z(long x) { fmpz_init_set_si(v, x); }
-  Z(const Z& o) { fmpz_init_set(v, o.v); }
-  Z& operator=(const Z& o) { fmpz_set(v, o.v); return *this; }
-  ~Z() { fmpz_clear(v); }
-};
-struct B {
-  arb_t v;
-  B() { arb_init(v); }
-  B(const B& o) { arb_init(v); arb_set(v, o.v); }
-  B& operator=(const B& o) { arb_set(v, o.v); return *this; }
-  ~B() { arb_clear(v); }
-};
-
-// The decimal text of z (abbreviated past 60 digits, for messages).
-std::string decimal(const Z& z) {
-  char* p = fmpz_get_str(nullptr, 10, z.v);
-  std::string s(p);
-  flint_free(p);
-  return s.size() > 60 ? s.substr(0, 28) + "..." + s.substr(s.size() - 28) : s;
-}
-
-bool all_digits(const std::string& s, std::size_t from) {
-  return from < s.size() && std::all_of(s.begin() + long(from), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
+using namespace support;
 
 // A non-negative integer written as a decimal string without sign or leading zeros, or
 // "-" followed by one (when signed is allowed).
@@ -79,70 +45,17 @@ Z integer_field(const json& j, const std::string& name, bool allow_sign) {
   return z;
 }
 
-// A decimal number: -?digits(.digits)?(e[+-]?digits)?, at most max_len characters.
-std::string decimal_field(const json& j, const std::string& name, std::size_t max_len) {
-  if (!j.is_string()) throw malformed(name + " must be a decimal string");
-  std::string s = j.get<std::string>();
-  std::size_t i = s.size() && s[0] == '-' ? 1 : 0, start = i;
-  while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
-  bool ok = i > start;
-  if (ok && i < s.size() && s[i] == '.') {
-    std::size_t f = ++i;
-    while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
-    ok = i > f;
-  }
-  if (ok && i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t e = i;
-    while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
-    ok = i > e && i - e <= 9;
-  }
-  if (!ok || i != s.size() || s.size() > max_len) throw malformed(name + " is not a decimal number: '" + s.substr(0, 40) + "'");
-  return s;
-}
-
-// The exact decimal as a ball (exact when its binary form fits prec bits, else a tight ball).
-B ball_of(const std::string& decimal, long prec) {
-  B b;
-  if (arb_set_str(b.v, decimal.c_str(), prec) != 0) throw malformed("unreadable decimal '" + decimal + "'");
-  return b;
-}
-
-struct pair_claim {
-  std::string lo, hi;
-};
-
-pair_claim claim_field(const json& j, const std::string& name, std::size_t max_len) {
-  if (!j.is_array() || j.size() != 2) throw malformed(name + " must be [\"lo\", \"hi\"]");
-  return {decimal_field(j[0], name + "[0]", max_len), decimal_field(j[1], name + "[1]", max_len)};
-}
-
 // Everything the certificate says, read and type-checked; nothing is trusted yet.
 struct certificate {
   Z tau, sigma;
   long digits = 0, m_min = -1, count = 0;
   bool degenerate = false;
   std::vector<Z> k, j, m;
-  pair_claim u_star, r_res, theta_first, t_first;
+  bracket u_star, r_res, theta_first, t_first;
 };
 
 const std::set<std::string> top_keys{"format", "theorem", "tau", "sigma", "digits", "degenerate", "m_min",
                                      "minimiser_count", "minimiser_lobes", "u_star", "claims"};
-
-// json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate
-// could otherwise show a reader one value and the checker another).
-json parse_without_duplicate_keys(const std::string& text) {
-  std::vector<std::set<std::string>> open;
-  const json::parser_callback_t on_event = [&](int, json::parse_event_t ev, json& parsed) {
-    if (ev == json::parse_event_t::object_start) open.emplace_back();
-    if (ev == json::parse_event_t::object_end && !open.empty()) open.pop_back();
-    if (ev == json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
-      throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
-    return true;
-  };
-  return json::parse(text, on_event);
-}
 
 certificate read(const std::string& text) {
   json j;
@@ -181,14 +94,14 @@ certificate read(const std::string& text) {
     c.m.push_back(integer_field(l["m"], "lobe m", true));
   }
   const std::size_t max_len = std::size_t(c.digits) + 60;
-  c.u_star = claim_field(j["u_star"], "u_star", max_len);
+  c.u_star = bracket_field(j["u_star"], "u_star", max_len);
   const auto& claims = j["claims"];
   if (!claims.is_object() || claims.size() != 3 || !claims.contains("r_res") || !claims.contains("theta_first") ||
       !claims.contains("t_first"))
     throw malformed("claims must hold r_res, theta_first, t_first");
-  c.r_res = claim_field(claims.at("r_res"), "r_res", max_len);
-  c.theta_first = claim_field(claims.at("theta_first"), "theta_first", max_len);
-  c.t_first = claim_field(claims.at("t_first"), "t_first", max_len);
+  c.r_res = bracket_field(claims.at("r_res"), "r_res", max_len);
+  c.theta_first = bracket_field(claims.at("theta_first"), "theta_first", max_len);
+  c.t_first = bracket_field(claims.at("t_first"), "t_first", max_len);
   return c;
 }
 
@@ -281,7 +194,7 @@ int check_bracket(const certificate& c, const constants& K, B& lo, B& hi, long p
 }
 
 // Step 4 for one claim: 1 holds, 0 undecided; fails when false.
-int check_claim(const pair_claim& claim, const B& enclosure, long digits, bool exact_zero, const std::string& name, long prec) {
+int check_claim(const bracket& claim, const B& enclosure, long digits, bool exact_zero, const std::string& name, long prec) {
   B lo = ball_of(claim.lo, prec), hi = ball_of(claim.hi, prec), d;
   if (exact_zero) {
     if (!arb_is_zero(lo.v) || !arb_is_zero(hi.v)) throw fails(name + " of a degenerate pair must be [0, 0]");
@@ -349,20 +262,6 @@ int check_reals(const certificate& c, const Z& a, const Z& b, long prec) {
          check_claim(c.t_first, tf, c.digits, false, "t_first", prec);
 }
 
-// The verdict is one line: a field quoted in a message may hold a newline or other control
-// character from the file (a JSON string may hold one), shown escaped instead.
-std::string one_line(const std::string& s) {
-  static const char hex[] = "0123456789abcdef";
-  std::string out;
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '\n') out += "\\n";
-    else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
-    else out += ch;
-  }
-  return out;
-}
-
 }  // namespace
 
 verdict check_theorem_certificate(const std::string& json_text) {
@@ -378,8 +277,8 @@ verdict check_theorem_certificate(const std::string& json_text) {
     long prec = long(3.33 * double(longest)) + long(fmpz_bits(a.v)) + 64;
     for (int round = 0; round < 5; ++round, prec *= 2)
       if (check_reals(c, a, b, prec))
-        return {0, "certificate holds (lattice-theorem/1): r_res, theta_first, t_first of (" + decimal(c.tau) + ", " +
-                       decimal(c.sigma) + ") to " + std::to_string(c.digits) + " digits"};
+        return {0, "certificate holds (lattice-theorem/1): r_res, theta_first, t_first of (" + text_of(c.tau) + ", " +
+                       text_of(c.sigma) + ") to " + std::to_string(c.digits) + " digits"};
     return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
   } catch (const malformed& e) {
     return {2, one_line(std::string("malformed: ") + e.what())};

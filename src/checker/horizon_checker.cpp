@@ -16,6 +16,8 @@
 // Undecided balls are retried at twice the precision (4 times), then the certificate fails.
 #include "horizon_checker.hpp"
 
+#include "checker_support.hpp"
+
 #include <arb.h>
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
@@ -32,46 +34,7 @@ namespace gyrores_checker {
 
 namespace {
 
-using nlohmann::json;
-
-struct malformed : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-struct fails : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-struct Z {
-  fmpz_t v;
-  Z() { fmpz_init(v); }
-  explicit Z(long x) { fmpz_init_set_si(v, x); }
-  Z(const Z& o) { fmpz_init_set(v, o.v); }
-  Z& operator=(const Z& o) {
-    fmpz_set(v, o.v);
-    return *this;
-  }
-  ~Z() { fmpz_clear(v); }
-};
-struct B {
-  arb_t v;
-  B() { arb_init(v); }
-  B(const B& o) {
-    arb_init(v);
-    arb_set(v, o.v);
-  }
-  B& operator=(const B& o) {
-    arb_set(v, o.v);
-    return *this;
-  }
-  ~B() { arb_clear(v); }
-};
-
-std::string text_of(const Z& z) {
-  char* p = fmpz_get_str(nullptr, 10, z.v);
-  std::string s(p);
-  flint_free(p);
-  return s.size() > 60 ? s.substr(0, 28) + "..." + s.substr(s.size() - 28) : s;
-}
+using namespace support;
 
 // ---- Exact numbers (p + q sqrt D)/r of Q(sqrt D), r > 0 (proofs/horizon-theorem.md, "Exact
 // arithmetic in Q(sqrt D)"). D is 0 when it is a perfect square: then x is rational and every
@@ -291,9 +254,6 @@ std::optional<Z> first_lobe_at_most(const field& F, const QD& x, const QD& d, co
 }
 
 // ---- Reading.
-bool all_digits(const std::string& s, std::size_t from) {
-  return from < s.size() && std::all_of(s.begin() + long(from), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
 Z integer_field(const json& j, const std::string& name) {
   if (!j.is_string()) throw malformed(name + " must be a decimal string");
   const std::string s = j.get<std::string>();
@@ -318,34 +278,6 @@ void rational_field(const json& j, const std::string& name, Z& num, Z& den, bool
   fmpz_gcd(g.v, num.v, den.v);
   fmpz_divexact(num.v, num.v, g.v);
   fmpz_divexact(den.v, den.v, g.v);
-}
-std::string decimal_field(const json& j, const std::string& name, std::size_t max_len) {
-  if (!j.is_string()) throw malformed(name + " must be a decimal string");
-  const std::string s = j.get<std::string>();
-  std::size_t i = s.size() && s[0] == '-' ? 1 : 0, start = i;
-  while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
-  bool ok = i > start;
-  if (ok && i < s.size() && s[i] == '.') {
-    std::size_t f = ++i;
-    while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
-    ok = i > f;
-  }
-  if (ok && i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t e = i;
-    while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
-    ok = i > e && i - e <= 9;
-  }
-  if (!ok || i != s.size() || s.size() > max_len) throw malformed(name + " is not a decimal number: '" + s.substr(0, 40) + "'");
-  return s;
-}
-struct bracket {
-  std::string lo, hi;
-};
-bracket bracket_field(const json& j, const std::string& name, std::size_t max_len) {
-  if (!j.is_array() || j.size() != 2) throw malformed(name + " must be [\"lo\", \"hi\"]");
-  return {decimal_field(j[0], name + "[0]", max_len), decimal_field(j[1], name + "[1]", max_len)};
 }
 bool bool_field(const json& j, const std::string& name) {
   if (!j.is_boolean()) throw malformed(name + " must be true or false");
@@ -391,20 +323,6 @@ lobe_data lobe_field(const json& j, const std::string& name) {
   if (!j["side"].is_number_integer()) throw malformed(name + ".side must be -1, 0 or 1");
   l.side = j["side"].get<long>();
   return l;
-}
-
-// json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate
-// could otherwise show a reader one value and the checker another; docs/formats.md).
-json parse_without_duplicate_keys(const std::string& text) {
-  std::vector<std::set<std::string>> open;
-  const json::parser_callback_t on_event = [&](int, json::parse_event_t ev, json& parsed) {
-    if (ev == json::parse_event_t::object_start) open.emplace_back();
-    if (ev == json::parse_event_t::object_end && !open.empty()) open.pop_back();
-    if (ev == json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
-      throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
-    return true;
-  };
-  return json::parse(text, on_event);
 }
 
 certificate read(const std::string& text) {
@@ -522,11 +440,6 @@ B ball_of_q2(const field& F, const QD& a, long prec) {
   }
   arb_div_fmpz(out.v, out.v, a.r.v, prec);
   return out;
-}
-B ball_of(const std::string& decimal, long prec) {
-  B b;
-  if (arb_set_str(b.v, decimal.c_str(), prec) != 0) throw malformed("unreadable decimal '" + decimal + "'");
-  return b;
 }
 // The exact value of a decimal (as read by decimal_field), for the comparisons balls cannot make
 // (two equal decimals, a decimal against the rational T).
@@ -956,20 +869,6 @@ int check_below(const certificate& c, const rotation& R, long prec) {
   if (end > 0) throw fails("below.crossing ends after the lobe's minimiser");
   if (!check_crossing(c, K, level, *hit, t)) return 0;
   return check_claim(need(c.t_below, "below.t_below"), t, c.digits, false, "below.t_below", prec);
-}
-
-// The verdict is one line: a field quoted in a message may hold a newline or other control
-// character from the file (a JSON string may hold one), shown escaped instead.
-std::string one_line(const std::string& s) {
-  static const char hex[] = "0123456789abcdef";
-  std::string out;
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '\n') out += "\\n";
-    else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
-    else out += ch;
-  }
-  return out;
 }
 
 }  // namespace

@@ -1,0 +1,79 @@
+// src/checker/checker_support.hpp
+#include "checker_support.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <vector>
+
+namespace gyrores_checker::support {
+
+std::string text_of(const Z& z) {
+  char* p = fmpz_get_str(nullptr, 10, z.v);
+  std::string s(p);
+  flint_free(p);
+  return s.size() > 60 ? s.substr(0, 28) + "..." + s.substr(s.size() - 28) : s;
+}
+
+bool all_digits(const std::string& s, std::size_t from) {
+  return from < s.size() && std::all_of(s.begin() + long(from), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+std::string decimal_field(const json& j, const std::string& name, std::size_t max_len) {
+  if (!j.is_string()) throw malformed(name + " must be a decimal string");
+  const std::string s = j.get<std::string>();
+  std::size_t i = s.size() && s[0] == '-' ? 1 : 0, start = i;
+  while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
+  bool ok = i > start;
+  if (ok && i < s.size() && s[i] == '.') {
+    std::size_t f = ++i;
+    while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
+    ok = i > f;
+  }
+  if (ok && i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    std::size_t e = i;
+    while (i < s.size() && std::isdigit((unsigned char)s[i])) ++i;
+    ok = i > e && i - e <= 9;
+  }
+  if (!ok || i != s.size() || s.size() > max_len) throw malformed(name + " is not a decimal number: '" + s.substr(0, 40) + "'");
+  return s;
+}
+
+bracket bracket_field(const json& j, const std::string& name, std::size_t max_len) {
+  if (!j.is_array() || j.size() != 2) throw malformed(name + " must be [\"lo\", \"hi\"]");
+  return {decimal_field(j[0], name + "[0]", max_len), decimal_field(j[1], name + "[1]", max_len)};
+}
+
+B ball_of(const std::string& decimal, long prec) {
+  B b;
+  if (arb_set_str(b.v, decimal.c_str(), prec) != 0) throw malformed("unreadable decimal '" + decimal + "'");
+  return b;
+}
+
+json parse_without_duplicate_keys(const std::string& text) {
+  std::vector<std::set<std::string>> open;
+  const json::parser_callback_t on_event = [&](int, json::parse_event_t ev, json& parsed) {
+    if (ev == json::parse_event_t::object_start) open.emplace_back();
+    if (ev == json::parse_event_t::object_end && !open.empty()) open.pop_back();
+    if (ev == json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
+      throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
+    return true;
+  };
+  return json::parse(text, on_event);
+}
+
+std::string one_line(const std::string& s) {
+  static const char hex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n') out += "\\n";
+    else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    else out += ch;
+  }
+  return out;
+}
+
+}  // namespace gyrores_checker::support

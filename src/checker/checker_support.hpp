@@ -1,0 +1,77 @@
+// What both independent checkers (certificate_checker.hpp, horizon_checker.hpp) read and decide
+// with: their two verdicts' exceptions, FLINT integers and Arb balls that clean up after
+// themselves, the strict readers of decimal fields and of JSON with no key twice, and the
+// one-line verdict text. Like the checkers, nothing here includes include/gyrores/.
+#pragma once
+#include <arb.h>
+#include <flint/fmpz.h>
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace gyrores_checker::support {
+
+using nlohmann::json;
+
+// The certificate cannot be read as its format says (verdict 2), or a claim is false (1).
+struct malformed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+struct fails : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Z {
+  fmpz_t v;
+  Z() { fmpz_init(v); }
+  explicit Z(long x) { fmpz_init_set_si(v, x); }
+  Z(const Z& o) { fmpz_init_set(v, o.v); }
+  Z& operator=(const Z& o) {
+    fmpz_set(v, o.v);
+    return *this;
+  }
+  ~Z() { fmpz_clear(v); }
+};
+struct B {
+  arb_t v;
+  B() { arb_init(v); }
+  B(const B& o) {
+    arb_init(v);
+    arb_set(v, o.v);
+  }
+  B& operator=(const B& o) {
+    arb_set(v, o.v);
+    return *this;
+  }
+  ~B() { arb_clear(v); }
+};
+
+// The decimal text of z, abbreviated past 60 digits (for messages).
+std::string text_of(const Z& z);
+
+// s[from..] is non-empty and all decimal digits.
+bool all_digits(const std::string& s, std::size_t from);
+
+// A decimal number -?digits(.digits)?(e[+-]?digits)? of at most max_len characters, else malformed.
+std::string decimal_field(const json& j, const std::string& name, std::size_t max_len);
+
+// A claim or bracket ["lo", "hi"] of two such decimals.
+struct bracket {
+  std::string lo, hi;
+};
+bracket bracket_field(const json& j, const std::string& name, std::size_t max_len);
+
+// The exact decimal as a ball (exact when its binary form fits prec bits, else a tight ball).
+B ball_of(const std::string& decimal, long prec);
+
+// json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate could
+// otherwise show a reader one value and the checker another; docs/formats.md).
+json parse_without_duplicate_keys(const std::string& text);
+
+// The verdict is one line: a field quoted in a message may hold a newline or another control
+// character from the file (a JSON string may hold one), shown escaped instead.
+std::string one_line(const std::string& s);
+
+}  // namespace gyrores_checker::support
