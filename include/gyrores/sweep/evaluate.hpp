@@ -4,8 +4,8 @@
 // (proofs/lattice-theorem.md) and nothing else:
 //  - the exact quantities r_res, theta_first, t_first, the minimisers' count; the paper's proxy
 //    t_min_paper = pi/|n| and t_first/t_min_paper (= theta_first b/pi):
-//      double rows (uncertified, order < 2^31): theorem_minimum_double (theorem/minimum.hpp), a
-//      few ulps;
+//      double rows (uncertified, order < 2^31): theorem_minimum_double (theorem/minimum.hpp),
+//      r_res, theta_first, t_first within one ulp, the paper's columns a few ulps;
 //      every other row (long double, float128, mpfr_real, --certified, and double beyond order
 //      2^31, where the int64 lobe arithmetic of theorem_minimum_double would overflow): the
 //      midpoints of the proved enclosures of sweep_prove_pair (sweep/certified.hpp) at the row's

@@ -4,9 +4,11 @@
 // r_res^2/2 and H_z max = v^2/2 - H_q min (H = v^2/2 is conserved). Degenerate pairs (m_min = 0):
 // r_res = 0 exactly at theta = pi/2 and 3 pi/2.
 //
-// Two forms: in double (v = 1; the fast paths: sweep rows, the design catalogue, figures; about
-// an ulp of error per operation, nothing proved) and as enclosures at an explicit precision
-// (everything the tool prints; theorem/pair_report.hpp).
+// Two forms: in double (v = 1; the fast paths: sweep rows, the design catalogue, figures):
+// r_res, theta_first and t_first within one ulp of the exact value (formed in double-double and
+// rounded once, with the error bounds of core/double_double.hpp and theorem/root.hpp; the other
+// minimisers a few ulps), and as enclosures at an explicit precision (everything the tool prints;
+// theorem/pair_report.hpp).
 #pragma once
 #include <array>
 #include <cstddef>
