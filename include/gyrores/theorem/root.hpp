@@ -64,6 +64,7 @@ struct theorem_constants {
   mpfr_prec_t prec;
   // a, b, x = b/a, x^2, sqrt(1-x^2) = 2 sqrt(tau sigma)/a, sqrt(tau sigma), pi
   fixed_mpfi a, b, x, x2, s1mx2, sqrt_ts, pi;
+  big_int ai, bi;  // a and b as integers (a multiplication or division by one costs O(prec), not a product)
 };
 void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p);
 
@@ -96,8 +97,8 @@ bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, 
 // prove_theorem_root. m = 0 gives the exact root 0.
 bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
-// out = pi m/(2 d) at K's precision (d = K.a: the theorem's mu; d = K.b: the paper's s).
-void pi_ratio(fixed_mpfi& out, const theorem_constants& K, const big_int& m, const fixed_mpfi& d);
+// out = pi m/(2 d) at K's precision (d = K.ai: the theorem's mu; d = K.bi: the paper's s).
+void pi_ratio(fixed_mpfi& out, const theorem_constants& K, const big_int& m, const big_int& d);
 
 // The paper's error and bound of a lobe from d = |u_c - u_asy| (enclosures at K's precision):
 // error = 2 d/a = |theta_c - theta_asy| (formed from the roots, not from two thetas that cancel),

@@ -101,33 +101,36 @@ double paper_root_double(double s) {
 }
 
 void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p) {
-  const big_int a = p.order(), b = big_int(p.delta()), ts = big_int(p.tau() * p.sigma());
-  mpfi_set_z(K.a, a.backend().data());
-  mpfi_set_z(K.b, b.backend().data());
-  mpfi_div(K.x, K.b, K.a);
-  mpfi_sqr(K.x2, K.x);
+  K.ai = p.order();
+  K.bi = big_int(p.delta());
+  const big_int ts = big_int(p.tau() * p.sigma()), b2 = big_int(K.bi * K.bi), a2 = big_int(K.ai * K.ai);
+  // By integers wherever the formula allows (each such product or quotient costs O(prec)); the
+  // one full-precision operation is the square root.
+  mpfi_set_z(K.a, K.ai.backend().data());
+  mpfi_set_z(K.b, K.bi.backend().data());
+  mpfi_div_z(K.x, K.b, K.ai.backend().data());
+  mpfi_set_z(K.x2, b2.backend().data());
+  mpfi_div_z(K.x2, K.x2, a2.backend().data());
   mpfi_set_z(K.sqrt_ts, ts.backend().data());
   mpfi_sqrt(K.sqrt_ts, K.sqrt_ts);
-  mpfi_mul_ui(K.s1mx2, K.sqrt_ts, 2);
-  mpfi_div(K.s1mx2, K.s1mx2, K.a);
+  mpfi_mul_2ui(K.s1mx2, K.sqrt_ts, 1);
+  mpfi_div_z(K.s1mx2, K.s1mx2, K.ai.backend().data());
   mpfi_const_pi(K.pi);
 }
 
-void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const iv& d) {
-  iv t(K.prec);
-  mpfi_set_z(t, m.backend().data());
-  mpfi_mul(out, K.pi, t);
-  mpfi_div(out, out, d);
+void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const big_int& d) {
+  mpfi_mul_z(out, K.pi, m.backend().data());
+  mpfi_div_z(out, out, d.backend().data());
   mpfi_div_2ui(out, out, 1);
 }
 
 void paper_error_bound(iv& error, iv& bound, const theorem_constants& K, const iv& d) {
   mpfi_mul_2ui(error, d, 1);
-  mpfi_div(error, error, K.a);
+  mpfi_div_z(error, error, K.ai.backend().data());
   mpfi_sqr(bound, K.pi);
   mpfi_mul(bound, bound, K.pi);
   mpfi_mul(bound, bound, K.x2);
-  mpfi_div(bound, bound, K.a);
+  mpfi_div_z(bound, bound, K.ai.backend().data());
 }
 
 namespace {
@@ -455,7 +458,7 @@ bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_
   // 0 < m < a keeps mu in (0, pi/2), where the bracket's argument holds (header, step 2).
   if (m <= 0 || mpfr_cmp_z(K.a.left(), m.backend().data()) <= 0)
     throw usage_error("the theorem's root needs an offset 0 < m < a, got m = " + m.str());
-  pi_ratio(r.mu, K, m, K.a);
+  pi_ratio(r.mu, K, m, K.ai);
   return newton_ladder(r, K, true, theorem_scout(r, K));
 }
 
@@ -484,7 +487,7 @@ bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big
 }
 
 bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
-  pi_ratio(r.mu, K, m, K.b);
+  pi_ratio(r.mu, K, m, K.bi);
   if (m == 0) {
     mpfr_set_ui(r.u, 0, MPFR_RNDN);
     mpfi_set_ui(r.U, 0);
