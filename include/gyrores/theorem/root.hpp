@@ -8,19 +8,25 @@
 //
 // Enclosures (nothing here reads a process-wide precision: every object carries its own, so
 // all of it runs on any number of threads):
-//  1. A point by one Newton ladder (newton_ladder below): levels of precision, each at most 4 times
-//     the accuracy of the level before, then the last level at full precision. Near a centre c
-//     every tangent comes from tan c (and tan(mu - x c)) and the addition formula
-//     tan(c + d) = (tan c + tan d)/(1 - tan c tan d), tan d = d + d^3/3 + r (tan_shift).
+//  1. A point by one Newton ladder (newton_ladder below): levels of precision planned from the
+//     top, each at most 4 times the accuracy of the level before, the last centre accurate to
+//     half the precision and 16 bits. Near a centre c every tangent comes from tan c (and
+//     tan(mu - x c)) and the addition formula tan(c + d) = (tan c + tan d)/(1 - tan c tan d),
+//     tan d = d + d^3/3 + r (tan_shift). At the last centre, at full precision, tan c and
+//     tan(mu - x c) are Arb enclosures, the equation's value there is enclosed from them, and one
+//     Newton step from them gives the point (doubling the centre's accuracy).
 //  2. A bracket [lo, hi] about the point, proved. Theorem: for 0 < u < pi/2 the angle
 //     w = mu - x u lies in (-pi/2, pi/2) (mu <= pi/2, x u < pi/2), where tan increases, so
-//     H(u) < mu iff x tan u < tan w. Paper: g(u) = u + tan u increases on (-pi/2, pi/2). Both
-//     sides are enclosed in MPFI from Arb's enclosures of the centre's tangents, the addition
-//     formula and the remainder |r| <= |d|^5/7 for |d| <= 1/4 (tan's Taylor coefficients are
-//     positive, so 0 <= r <= d^5 (tan(1/4) - 1/4 - 1/192) 4^5 < 0.137 d^5 for d >= 0; r is odd).
-//  3. From the bracket: T = tan([lo, hi]) (tan increases), and for the theorem
-//     sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u, increasing in t:
-//     r_res = v sqrt(G(u*)) over T (theorem_radius).
+//     H(u) < mu iff f(u) = b tan u - a tan w < 0. Paper: g(u) = u + tan u - s increases on
+//     (-pi/2, pi/2). f (or g) at each end is enclosed by the mean value form about the centre,
+//     f(v) = f(c) + f'(xi) (v - c) with xi between c and v: f(c) from the centre's enclosures at
+//     full precision, f' over the hull of c and the ends from the addition formula with the
+//     remainder |r| <= |d|^5/7 for |d| <= 1/4 (tan's Taylor coefficients are positive, so
+//     0 <= r <= d^5 (tan(1/4) - 1/4 - 1/192) 4^5 < 0.137 d^5 for d >= 0; r is odd), at the bits
+//     its product with v - c (about 2^-(prec/2) of c) needs. No tangent is evaluated at an end.
+//  3. From the bracket: T = tan([lo, hi]) by the same mean value form (1 + tan^2 over the hull),
+//     and for the theorem sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u,
+//     increasing in t: r_res = v sqrt(G(u*)) over T (theorem_radius).
 #pragma once
 #include <gyrores/core/double_double.hpp>
 #include <gyrores/core/fixed_precision.hpp>
@@ -64,16 +70,19 @@ struct theorem_constants {
   mpfr_prec_t prec;
   // a, b, x = b/a, x^2, sqrt(1-x^2) = 2 sqrt(tau sigma)/a, sqrt(tau sigma), pi
   fixed_mpfi a, b, x, x2, s1mx2, sqrt_ts, pi;
+  big_int ai, bi;  // a and b as integers (a multiplication or division by one costs O(prec), not a product)
 };
 void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p);
 
 // An enclosure of a root: U holds it, T = tan(U). `centre` is the last centre of the ladder,
-// tc and wc enclosures of tan(centre) and (theorem only) tan(mu - x centre).
+// tc and wc enclosures of tan(centre) and (theorem only) tan(mu - x centre), fc of the equation
+// there (step 2: f(centre) or g(centre)).
 struct root_enclosure {
-  explicit root_enclosure(mpfr_prec_t p) : u(p), centre(p), U(p), T(p), tc(p), wc(p), mu(p) {}
+  explicit root_enclosure(mpfr_prec_t p) : u(p), centre(p), U(p), T(p), tc(p), wc(p), mu(p), fc(p) {}
   fixed_mpfr u, centre;   // the ladder's point, the last centre
   fixed_mpfi U, T;        // the proved bracket and tan over it
   fixed_mpfi tc, wc, mu;  // tan(centre), tan(mu - x centre), mu (theorem) or s (paper)
+  fixed_mpfi fc;          // f(centre) (theorem) or g(centre) (paper)
 };
 
 // The theorem's root for offset 0 < m < a (mu = pi m/(2a) < pi/2; true for m_min and the fast
@@ -82,8 +91,8 @@ struct root_enclosure {
 // this precision (the caller doubles it); never a wrong enclosure.
 bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
-// The ladder alone (step 1): r.u, r.centre, r.tc, r.wc, r.mu for offset m; false if the centre's
-// enclosures could not be formed. The certificate brackets r.u with decimal ends itself.
+// The ladder alone (step 1): r.u, r.centre, r.tc, r.wc, r.fc, r.mu for offset m; false if the
+// centre's enclosures could not be formed.
 bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
 // Step 2 for the theorem: true if H(lo) < mu < H(hi) is proved for every lo in LO and hi in HI
@@ -92,12 +101,17 @@ bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_
 bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& LO,
                            const fixed_mpfi& HI, fixed_mpfi& T);
 
+// T = tan(V) for an interval V within 2^-10 of r.centre, by step 3's mean value form (nothing
+// about the root is proved or needed); false if V is farther or reaches a pole of tan. The
+// certificate takes tan over a decimal bracket wider than the proved one from it.
+bool tan_near_centre(fixed_mpfi& T, const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& V);
+
 // The paper's root of u + tan u = s for s = pi m/(2b) (any integer m with |m| <= b): as
 // prove_theorem_root. m = 0 gives the exact root 0.
 bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
-// out = pi m/(2 d) at K's precision (d = K.a: the theorem's mu; d = K.b: the paper's s).
-void pi_ratio(fixed_mpfi& out, const theorem_constants& K, const big_int& m, const fixed_mpfi& d);
+// out = pi m/(2 d) at K's precision (d = K.ai: the theorem's mu; d = K.bi: the paper's s).
+void pi_ratio(fixed_mpfi& out, const theorem_constants& K, const big_int& m, const big_int& d);
 
 // The paper's error and bound of a lobe from d = |u_c - u_asy| (enclosures at K's precision):
 // error = 2 d/a = |theta_c - theta_asy| (formed from the roots, not from two thetas that cancel),

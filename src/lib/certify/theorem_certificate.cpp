@@ -1,8 +1,9 @@
 // The producer of lattice-theorem certificates (certify/theorem_certificate.hpp). At a working
-// precision of `bits` (doubled until every claim has the digits asked for): u* and the proof of
-// a decimal bracket of it by theorem/root.hpp (tangents from two Arb balls and the addition
-// formula, no arctangent), r_res over tan of the bracket, theta_first =
-// 2 (k pi + sign(m) u*)/a and t_first = sqrt(tau sigma) theta_first in MPFI.
+// precision of `bits` (doubled until every claim has the digits asked for): the decimal bracket
+// of u*, written once and proved by theorem/root.hpp (the Newton ladder, two Arb tangents at its
+// last centre, the bracket by the mean value form; no arctangent), r_res over tan of an interval
+// holding it, theta_first = 2 (k pi + sign(m) u*)/a and t_first = sqrt(tau sigma) theta_first in
+// MPFI.
 #include <gyrores/certify/theorem_certificate.hpp>
 
 #include <gyrores/core/error.hpp>
@@ -18,38 +19,33 @@ namespace {
 using fr = fixed_mpfr;
 using iv = fixed_mpfi;
 
-// out = an enclosure of the decimal number `text`: the nearest float and its two neighbours
-// (one conversion instead of two directed ones).
-bool decimal_enclosure(iv& out, const std::string& text) {
-  const mpfr_prec_t prec = mpfi_get_prec(out);
-  fr lo(prec), hi(prec);
-  if (mpfr_set_str(lo, text.c_str(), 10, MPFR_RNDN) != 0) return false;
-  mpfr_set(hi, lo, MPFR_RNDN);
-  mpfr_nextbelow(lo);
-  mpfr_nextabove(hi);
-  mpfi_interv_fr(out, lo, hi);
-  return true;
-}
-
-// The decimal bracket of u* at the working precision, proved (theorem/root.hpp, step 2);
-// T receives tan([lo, hi]) and U the interval [lo, hi]. Empty when not proved here.
+// The decimal bracket of u* with n digits, proved in one step at the working precision: about
+// the ladder's point u, the binary ends lo, hi = u -+ |u| 2^-(bits - 16) (prove_theorem_root's)
+// are rounded outward to n digits once, so u_lo lies in LO = [lo - e, lo] and u_hi in
+// HI = [hi, hi + e], e = 2^(exp(hi) - k) >= 10^(1-n) hi (at least a unit in the n-th digit of
+// either end), and prove_theorem_bracket proves H(v) < mu for every v in LO and H(v) > mu for
+// every v in HI: the decimals themselves, never read back. U receives [lo - e, hi + e], which
+// holds the decimal bracket, and T = tan(U). Empty when not proved at this precision.
 std::pair<std::string, std::string> bracket_u_star(const resonant_pair<big_int>& p, const theorem_constants& K,
-                                                   unsigned text_digits, iv& T, iv& U) {
+                                                   unsigned n, iv& T, iv& U) {
   const mpfr_prec_t bits = K.prec;
   root_enclosure z(bits);
   if (!theorem_centre_of(z, K, big_int(p.strand_offset_min()))) return {};
-  fr rad(bits), end(bits);
+  fr rad(bits), lo(bits), hi(bits), unit(bits), end(bits);
   mpfr_abs(rad, z.u, MPFR_RNDN);
-  mpfr_mul_2si(rad, rad, -int(bits) + 16, MPFR_RNDN);
-  std::pair<std::string, std::string> text;
-  mpfr_sub(end, z.u, rad, MPFR_RNDD);
-  text.first = format_scientific(end, text_digits, MPFR_RNDD);
-  mpfr_add(end, z.u, rad, MPFR_RNDU);
-  text.second = format_scientific(end, text_digits, MPFR_RNDU);
-  iv lo(bits), hi(bits);
-  if (!decimal_enclosure(lo, text.first) || !decimal_enclosure(hi, text.second)) return {};
-  if (!prove_theorem_bracket(K, z, lo, hi, T)) return {};
-  mpfi_union(U, lo, hi);
+  mpfr_mul_2si(rad, rad, -int(bits) + 16, MPFR_RNDU);
+  mpfr_sub(lo, z.u, rad, MPFR_RNDD);
+  mpfr_add(hi, z.u, rad, MPFR_RNDU);
+  std::pair<std::string, std::string> text{format_scientific(lo, n, MPFR_RNDD), format_scientific(hi, n, MPFR_RNDU)};
+  const long k = long(digits10_to_bits(n - 1)) - 1;  // < (n - 1) log2 10: 2^-k > 10^(1-n)
+  mpfr_set_ui_2exp(unit, 1, mpfr_get_exp(hi) - k, MPFR_RNDU);  // hi < 2^exp(hi)
+  iv LO(bits), HI(bits);
+  mpfr_sub(end, lo, unit, MPFR_RNDD);
+  mpfi_interv_fr(LO, end, lo);
+  mpfr_add(end, hi, unit, MPFR_RNDU);
+  mpfi_interv_fr(HI, hi, end);
+  if (!prove_theorem_bracket(K, z, LO, HI, T)) return {};
+  mpfi_union(U, LO, HI);
   return text;
 }
 
@@ -75,8 +71,11 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
   const int e = int(digits10_to_bits(digits + 1));
   for (unsigned bits = std::max(64u, digits10_to_bits(digits) + 24); bits <= max_bits; bits *= 2) {
     // Written digits: claims digits + 10 (outward rounding adds at most 2 10^-(digits+9) to a
-    // width below 10^-(digits+1)); the bracket the digits the precision carries less 2 (its
-    // radius, 2^-(bits-16) relative, is 10^3 times larger), far inside what the claims need.
+    // width below 10^-(digits+1)); the bracket of u* digits + 5, what the claims need: u*'s
+    // interval is the binary bracket, relative width 2^-(bits-17) <= 2^-(e+3), widened by
+    // 2^-(e+8) for the decimals, and the claims amplify a relative width at most 4 times
+    // (u* <= pi/4: d log sqrt(G)/d log u <= 2 u (1 + tan^2 u)/tan u < 4; theta_first and t_first
+    // at most 1 time), so they come out within 2^-e.
     const unsigned d = digits + 10;
     theorem_constants K(bits);
     set_theorem_constants(K, p);
@@ -85,7 +84,7 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
       c.u_star = {"0", "0"};
       mpfi_set_ui(U, 0);
     } else {
-      c.u_star = bracket_u_star(p, K, bits_to_digits10(bits) - 2, T, U);
+      c.u_star = bracket_u_star(p, K, digits + 5, T, U);
       if (c.u_star.first.empty()) continue;
       theorem_radius(r, K, T);
       if (!fixed_narrow(r, e)) continue;

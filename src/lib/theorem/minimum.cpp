@@ -59,12 +59,10 @@ void minimiser_theta(fixed_mpfi& out, const theorem_constants& K, const big_int&
 }
 
 void lobe_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& k, const fixed_mpfi& U) {
-  fixed_mpfi kk(K.prec);
-  mpfi_set_z(kk, k.backend().data());
-  mpfi_mul(out, K.pi, kk);
+  mpfi_mul_z(out, K.pi, k.backend().data());  // by the integers: O(prec) each
   mpfi_add(out, out, U);
   mpfi_mul_2ui(out, out, 1);
-  mpfi_div(out, out, K.a);
+  mpfi_div_z(out, out, K.ai.backend().data());
 }
 
 bool prove_minimum(minimum_enclosure& out, const theorem_constants& K, const resonant_pair<big_int>& p,

@@ -204,7 +204,7 @@ struct lobe_enclosures {
 
 bool prove_lobe(lobe_enclosures& L, const theorem_constants& K, root_cache& cache, const big_int& k, const big_int& m) {
   if (!signed_root(L.u_asy, &L.Ta, cache, m, false) || !signed_root(L.Uc, &L.Tc, cache, m, true)) return false;
-  pi_ratio(L.s, K, m, K.b);
+  pi_ratio(L.s, K, m, K.bi);
   lobe_theta(L.theta_asy, K, k, L.u_asy);
   lobe_theta(L.theta_c, K, k, L.Uc);
   iv d(K.prec);

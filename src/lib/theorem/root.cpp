@@ -3,6 +3,7 @@
 
 #include <arb.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -101,33 +102,36 @@ double paper_root_double(double s) {
 }
 
 void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p) {
-  const big_int a = p.order(), b = big_int(p.delta()), ts = big_int(p.tau() * p.sigma());
-  mpfi_set_z(K.a, a.backend().data());
-  mpfi_set_z(K.b, b.backend().data());
-  mpfi_div(K.x, K.b, K.a);
-  mpfi_sqr(K.x2, K.x);
+  K.ai = p.order();
+  K.bi = big_int(p.delta());
+  const big_int ts = big_int(p.tau() * p.sigma()), b2 = big_int(K.bi * K.bi), a2 = big_int(K.ai * K.ai);
+  // By integers wherever the formula allows (each such product or quotient costs O(prec)); the
+  // one full-precision operation is the square root.
+  mpfi_set_z(K.a, K.ai.backend().data());
+  mpfi_set_z(K.b, K.bi.backend().data());
+  mpfi_div_z(K.x, K.b, K.ai.backend().data());
+  mpfi_set_z(K.x2, b2.backend().data());
+  mpfi_div_z(K.x2, K.x2, a2.backend().data());
   mpfi_set_z(K.sqrt_ts, ts.backend().data());
   mpfi_sqrt(K.sqrt_ts, K.sqrt_ts);
-  mpfi_mul_ui(K.s1mx2, K.sqrt_ts, 2);
-  mpfi_div(K.s1mx2, K.s1mx2, K.a);
+  mpfi_mul_2ui(K.s1mx2, K.sqrt_ts, 1);
+  mpfi_div_z(K.s1mx2, K.s1mx2, K.ai.backend().data());
   mpfi_const_pi(K.pi);
 }
 
-void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const iv& d) {
-  iv t(K.prec);
-  mpfi_set_z(t, m.backend().data());
-  mpfi_mul(out, K.pi, t);
-  mpfi_div(out, out, d);
+void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const big_int& d) {
+  mpfi_mul_z(out, K.pi, m.backend().data());
+  mpfi_div_z(out, out, d.backend().data());
   mpfi_div_2ui(out, out, 1);
 }
 
 void paper_error_bound(iv& error, iv& bound, const theorem_constants& K, const iv& d) {
   mpfi_mul_2ui(error, d, 1);
-  mpfi_div(error, error, K.a);
+  mpfi_div_z(error, error, K.ai.backend().data());
   mpfi_sqr(bound, K.pi);
   mpfi_mul(bound, bound, K.pi);
   mpfi_mul(bound, bound, K.x2);
-  mpfi_div(bound, bound, K.a);
+  mpfi_div_z(bound, bound, K.ai.backend().data());
 }
 
 namespace {
@@ -256,17 +260,17 @@ long newton_step(fr& u, const centre_point& z, bool theorem) {
   mpfr_div(f, f, df, MPFR_RNDN);
   mpfr_sub(u, u, f, MPFR_RNDN);
   if (mpfr_zero_p(f)) return -(1L << 30);
-  return long(mpfr_get_exp(f)) - long(mpfr_get_exp(u));
+  return long(mpfr_get_exp(f)) - long(mpfr_get_exp(u)) + 1;
 }
 
-// Newton from u (accurate to about `acc` bits) about the centre z: as many steps as doublings
-// up to the precision, fewer once a step is below 2^-(prec - 6) |u|.
-void newton_about(fr& u, const centre_point& z, bool theorem, unsigned acc) {
+// Newton from u about the centre z until the step just made leaves an error below
+// 2^-(prec - 8) |u|: a step of relative size 2^e leaves about kappa 2^(2e), kappa = |u f''/(2 f')|,
+// taken as at most 2^6 (it is below 10 for every root of offset m_min; a root closer to pi/2 may
+// stop a step early, and then its proof fails at this precision: never a wrong enclosure).
+void newton_about(fr& u, const centre_point& z, bool theorem) {
   const long prec = long(mpfr_get_prec(u));
-  int steps = 1;
-  for (unsigned a = acc; 2 * long(a) < prec; a *= 2) ++steps;
-  for (int it = 0; it < steps; ++it)
-    if (newton_step(u, z, theorem) < -(prec - 6)) return;
+  for (int it = 0; it < 8; ++it)
+    if (2 * newton_step(u, z, theorem) + 6 <= -(prec - 8)) return;
 }
 
 // The point tangents of a centre at z's precision (the ladder's levels below the last).
@@ -281,46 +285,105 @@ void set_point_tangents(centre_point& z, bool theorem) {
   }
 }
 
+// The bits a factor needs when it multiplies an offset |d| < 2^e_off from the centre c in a sum
+// exact to `prec` bits relative to c: the product is about 2^(e_off - exp c) of the sum, so it
+// needs that many bits fewer (and 32 guard bits; at least 64, at most prec).
+mpfr_prec_t offset_bits(mpfr_prec_t prec, long e_off, mpfr_srcptr c) {
+  const long drop = std::max(0L, long(mpfr_get_exp(c)) - e_off);
+  return std::min<mpfr_prec_t>(prec, std::max<long>(64, long(prec) + 32 - drop));
+}
+
+// The equations as the proof evaluates them (header, step 2), both increasing in u:
+//   theorem  f(u) = b tan u - a tan(mu - x u)   (a (x tan u - tan w): the sign of H(u) - mu),
+//            f'(u) = b (2 + tan^2 u + tan^2 w);
+//   paper    g(u) = u + tan u - s,  g'(u) = 2 + tan^2 u.
+// The derivative from enclosures TV of tan u and TW of tan w (theorem) at DF's precision.
+void derivative_from_tangents(iv& DF, const theorem_constants& K, bool theorem, const iv& TV, const iv& TW) {
+  const mpfr_prec_t q = mpfi_get_prec(DF);
+  iv t(q);
+  mpfi_sqr(DF, TV);
+  if (theorem) {
+    mpfi_sqr(t, TW);
+    mpfi_add(DF, DF, t);
+  }
+  mpfi_add_ui(DF, DF, 2);
+  if (theorem) mpfi_mul_z(DF, DF, K.bi.backend().data());
+}
+
+// The value at the centre from its enclosures (r.fc): b tan c - a tan(mu - x c), or c + tan c - s.
+void equation_at_centre(root_enclosure& r, const theorem_constants& K, bool theorem) {
+  if (theorem) {
+    iv t(K.prec);
+    mpfi_mul_z(r.fc, r.tc, K.bi.backend().data());
+    mpfi_mul_z(t, r.wc, K.ai.backend().data());
+    mpfi_sub(r.fc, r.fc, t);
+  } else {
+    mpfi_add_fr(r.fc, r.tc, r.centre);
+    mpfi_sub(r.fc, r.fc, r.mu);
+  }
+}
+
 // The one Newton ladder: u (accurate to about `acc` bits, at r's precision) is refined on levels
-// of at most 4 times the accuracy of the level before, with point tangents at each level's
-// centre; at the last level (full precision) the centre's tangents are Arb enclosures (r.tc,
-// r.wc), and the steps use their midpoints. False if the enclosures could not be formed.
+// planned from the top: the last centre needs half the precision and 16 bits more (the step from
+// its enclosures doubles that, and the proof of step 2 needs no more), each level below it a
+// quarter of the one above and 8 bits (two Newton steps a level), down to the scout's accuracy.
+// Each level takes point tangents at its centre and Newton steps about it. At full precision the
+// centre's tangents are Arb enclosures (r.tc, r.wc), the equation's value there is r.fc, and
+// one Newton step from them gives r.u (the quotient at the bits its size needs). False if the
+// enclosures could not be formed.
 bool newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, unsigned acc) {
   const mpfr_prec_t bits = K.prec;
   fr x(bits), mu(bits);
   mpfi_mid(x, K.x);
   mpfi_mid(mu, r.mu);
-  while (true) {
-    const mpfr_prec_t level = std::min<mpfr_prec_t>(bits, mpfr_prec_t(4) * acc);
+  long levels[40];
+  int n = 0;
+  for (long need = (long(bits) + 1) / 2 + 16; n < 40; need = need / 4 + 8) {
+    levels[n++] = std::min<long>(bits, need + 8);
+    if (need / 4 <= long(acc)) break;  // the scout's accuracy starts this level
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    const mpfr_prec_t level = levels[i];
     centre_point z(level);
     mpfr_set(z.c, r.u, MPFR_RNDN);
     mpfr_set(z.x, x, MPFR_RNDN);
     mpfr_set(z.mu, mu, MPFR_RNDN);
-    if (level < bits) {
-      fr ul(level);
-      mpfr_set(ul, r.u, MPFR_RNDN);
-      set_point_tangents(z, theorem);
-      newton_about(ul, z, theorem, acc);
-      mpfr_set(r.u, ul, MPFR_RNDN);
-      acc = unsigned(level) - 8;
-      continue;
-    }
-    mpfr_set(r.centre, r.u, MPFR_RNDN);
-    iv C(bits), W(bits);
-    mpfi_set_fr(C, r.centre);
-    if (!tan_enclosure(r.tc, C)) return false;
-    mpfi_mid(z.tc, r.tc);
-    if (theorem) {
-      mpfi_mul(W, K.x, C);
-      mpfi_sub(W, r.mu, W);
-      if (!tan_enclosure(r.wc, W)) return false;
-      mpfi_mid(z.tw, r.wc);
-    }
-    newton_about(r.u, z, theorem, acc);
-    return true;
+    set_point_tangents(z, theorem);
+    fr ul(level);
+    mpfr_set(ul, r.u, MPFR_RNDN);
+    newton_about(ul, z, theorem);
+    mpfr_set(r.u, ul, MPFR_RNDN);
   }
+  mpfr_set(r.centre, r.u, MPFR_RNDN);
+  iv C(bits);
+  mpfi_set_fr(C, r.centre);
+  if (!tan_enclosure(r.tc, C)) return false;
+  if (theorem) {
+    iv W(bits);  // mu - b c/a
+    mpfi_mul_z(W, C, K.bi.backend().data());
+    mpfi_div_z(W, W, K.ai.backend().data());
+    mpfi_sub(W, r.mu, W);
+    if (!tan_enclosure(r.wc, W)) return false;
+  }
+  equation_at_centre(r, K, theorem);
+  // u = c - f(c)/f'(c), a point (step 2 proves the bracket about it): |f(c)/f'(c)| <= |f(c)|/(2b)
+  // (theorem) or |g(c)|/2 (paper).
+  fr fmag(bits);
+  mpfi_mag(fmag, r.fc);
+  if (mpfr_zero_p(fmag)) return true;
+  const long e_step = long(mpfr_get_exp(fmag)) - (theorem ? long(mpz_sizeinbase(K.bi.backend().data(), 2)) : 1);
+  const mpfr_prec_t q = offset_bits(bits, e_step, r.centre);
+  iv TV(q), TW(q), DF(q);
+  mpfi_set(TV, r.tc);
+  if (theorem) mpfi_set(TW, r.wc);
+  derivative_from_tangents(DF, K, theorem, TV, TW);
+  fr step(q), df(q);
+  mpfi_mid(step, r.fc);
+  mpfi_mid(df, DF);
+  mpfr_div(step, step, df, MPFR_RNDN);
+  mpfr_sub(r.u, r.centre, step, MPFR_RNDN);
+  return true;
 }
-
 // ---- scouts: the ladder's starting points ----
 
 // Beyond 2^900 the pair's integers leave double's exponent range (mu, x, u* underflow).
@@ -438,14 +501,59 @@ bool offset_from_centre(iv& d, const root_enclosure& r, const iv& U) {
   return mpfr_cmp_d(dmax, 0x1p-10) <= 0;
 }
 
-// tan U and tan(mu - x U) by the addition formula about the centre.
-bool theorem_end(const theorem_constants& K, const root_enclosure& r, const iv& U, iv& tu, iv& tw) {
-  iv d(K.prec), e(K.prec);
-  if (!offset_from_centre(d, r, U)) return false;
-  tan_shift(tu, r.tc, d);
-  mpfi_mul(e, K.x, d);
-  mpfi_neg(e, e);
-  tan_shift(tw, r.wc, e);
+// Step 2's mean value form about the centre c, for ends LO <= HI within 2^-10 of it: for v in
+// [LO, HI] there is xi between c and v with
+//   f(v) = f(c) + f'(xi) (v - c),   tan v = tan c + (1 + tan^2 xi) (v - c),
+// and xi lies in V = c + hull(0, LO - c, HI - c), where tan (and tan(mu - x xi)) is enclosed by
+// the addition formula (tan_shift) from the centre's enclosures. Those factors multiply offsets
+// of at most 2^-10 (2^-(prec/2) in the ladder's brackets), so they are formed at the bits the
+// products need (offset_bits); f(c) and tan c keep the full precision. flo, fhi (when given)
+// receive f(LO), f(HI) (g for the paper), T receives tan([LO, HI]). False if an end is farther
+// than 2^-10 from the centre.
+bool mean_value_ends(const theorem_constants& K, const root_enclosure& r, bool theorem, const iv& LO, const iv& HI,
+                     iv* flo, iv* fhi, iv& T) {
+  const mpfr_prec_t bits = K.prec;
+  iv dlo(bits), dhi(bits);
+  if (!offset_from_centre(dlo, r, LO) || !offset_from_centre(dhi, r, HI)) return false;
+  fr m(bits), m2(bits);
+  mpfi_mag(m, dlo);
+  mpfi_mag(m2, dhi);
+  mpfr_max(m, m, m2, MPFR_RNDU);
+  const mpfr_prec_t q = mpfr_zero_p(m) ? 64 : offset_bits(bits, long(mpfr_get_exp(m)), r.centre);
+  iv H(q), TV(q), S(q), p(q);
+  mpfi_set(H, dlo);  // hull(0, LO - c, HI - c)
+  mpfi_put(H, dhi);
+  mpfi_put_si(H, 0);
+  mpfi_set(p, r.tc);
+  tan_shift(TV, p, H);
+  if (!mpfi_bounded_p(TV)) return false;  // V reaches a pole of tan: no mean value form
+  if (flo || fhi) {
+    iv TW(q), DF(q);
+    if (theorem) {  // tan(mu - x xi) = tan((mu - x c) - x (xi - c))
+      iv e(q), wq(q);
+      mpfi_set(e, K.x);
+      mpfi_mul(e, e, H);
+      mpfi_neg(e, e);
+      mpfi_set(wq, r.wc);
+      tan_shift(TW, wq, e);
+      if (!mpfi_bounded_p(TW)) return false;
+    }
+    derivative_from_tangents(DF, K, theorem, TV, TW);
+    if (flo) {
+      mpfi_mul(p, DF, dlo);
+      mpfi_add(*flo, r.fc, p);
+    }
+    if (fhi) {
+      mpfi_mul(p, DF, dhi);
+      mpfi_add(*fhi, r.fc, p);
+    }
+  }
+  mpfi_sqr(S, TV);
+  mpfi_add_ui(S, S, 1);  // 1 + tan^2 over V
+  mpfi_set(p, dlo);
+  mpfi_put(p, dhi);
+  mpfi_mul(p, S, p);
+  mpfi_add(T, r.tc, p);
   return true;
 }
 
@@ -455,23 +563,25 @@ bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_
   // 0 < m < a keeps mu in (0, pi/2), where the bracket's argument holds (header, step 2).
   if (m <= 0 || mpfr_cmp_z(K.a.left(), m.backend().data()) <= 0)
     throw usage_error("the theorem's root needs an offset 0 < m < a, got m = " + m.str());
-  pi_ratio(r.mu, K, m, K.a);
+  pi_ratio(r.mu, K, m, K.ai);
   return newton_ladder(r, K, true, theorem_scout(r, K));
 }
 
 bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const iv& lo, const iv& hi, iv& T) {
-  iv tu(K.prec), tw(K.prec), half_pi(K.prec);
+  iv flo(K.prec), fhi(K.prec), half_pi(K.prec);
   mpfi_div_2ui(half_pi, K.pi, 1);
   if (mpfr_sgn(lo.left()) <= 0 || mpfr_cmp(hi.right(), half_pi.left()) >= 0) return false;
-  // x tan lo < tan(mu - x lo) and x tan hi > tan(mu - x hi), each side bounded the safe way.
-  if (!theorem_end(K, r, lo, tu, tw)) return false;
-  mpfi_set(T, tu);
-  mpfi_mul(tu, tu, K.x);
-  if (!(mpfr_cmp(tu.right(), tw.left()) < 0)) return false;
-  if (!theorem_end(K, r, hi, tu, tw)) return false;
-  mpfi_put(T, tu);
-  mpfi_mul(tu, tu, K.x);
-  return mpfr_cmp(tu.left(), tw.right()) > 0;
+  // b tan lo < a tan(mu - x lo) and b tan hi > a tan(mu - x hi), each side bounded the safe way.
+  if (!mean_value_ends(K, r, true, lo, hi, &flo, &fhi, T)) return false;
+  if (!(mpfr_sgn(flo.right()) < 0)) return false;
+  return mpfr_sgn(fhi.left()) > 0;
+}
+
+bool tan_near_centre(iv& T, const theorem_constants& K, const root_enclosure& r, const iv& V) {
+  iv lo(K.prec), hi(K.prec);
+  mpfi_set_fr(lo, V.left());
+  mpfi_set_fr(hi, V.right());
+  return mean_value_ends(K, r, true, lo, hi, nullptr, nullptr, T);
 }
 
 bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
@@ -484,7 +594,7 @@ bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big
 }
 
 bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
-  pi_ratio(r.mu, K, m, K.b);
+  pi_ratio(r.mu, K, m, K.bi);
   if (m == 0) {
     mpfr_set_ui(r.u, 0, MPFR_RNDN);
     mpfi_set_ui(r.U, 0);
@@ -492,20 +602,14 @@ bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_i
     return true;
   }
   if (!newton_ladder(r, K, false, paper_scout(r))) return false;
-  iv lo(K.prec), hi(K.prec), half_pi(K.prec), d(K.prec), t(K.prec), g(K.prec);
+  iv lo(K.prec), hi(K.prec), half_pi(K.prec), glo(K.prec), ghi(K.prec);
   bracket_ends(lo, hi, r);
   mpfi_div_2ui(half_pi, K.pi, 1);
   if (mpfr_cmpabs(lo.left(), half_pi.left()) >= 0 || mpfr_cmpabs(hi.right(), half_pi.left()) >= 0) return false;
   // lo + tan lo < s < hi + tan hi (g = u + tan u increases on (-pi/2, pi/2)).
-  if (!offset_from_centre(d, r, lo)) return false;
-  tan_shift(r.T, r.tc, d);
-  mpfi_add(g, lo, r.T);
-  if (!(mpfr_cmp(g.right(), r.mu.left()) < 0)) return false;
-  if (!offset_from_centre(d, r, hi)) return false;
-  tan_shift(t, r.tc, d);
-  mpfi_add(g, hi, t);
-  if (!(mpfr_cmp(g.left(), r.mu.right()) > 0)) return false;
-  mpfi_put(r.T, t);
+  if (!mean_value_ends(K, r, false, lo, hi, &glo, &ghi, r.T)) return false;
+  if (!(mpfr_sgn(glo.right()) < 0)) return false;
+  if (!(mpfr_sgn(ghi.left()) > 0)) return false;
   mpfi_union(r.U, lo, hi);
   return true;
 }
