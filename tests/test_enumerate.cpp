@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <numeric>
 #include <set>
@@ -190,7 +189,7 @@ TEST_CASE("invalid shards are rejected", "[enumerate][shard][errors]") {
 }
 
 TEST_CASE("enumeration is lazy: huge ranges cost only the steps taken", "[enumerate][lazy]") {
-  auto start = std::chrono::steady_clock::now();
+  // A materialising range would never return (the suite's timeout catches it).
   // max order 10^6 holds ~3 10^11 pairs; 10^18 holds ~3 10^35. Materialising either never ends.
   for (std::int64_t hi : {1000000LL, 1000000000000000000LL}) {
     INFO("max order " << hi);
@@ -221,6 +220,4 @@ TEST_CASE("enumeration is lazy: huge ranges cost only the steps taken", "[enumer
   CHECK((*it).sigma() == 4);
   // The iterator holds a few integers, not a container.
   CHECK(sizeof(coprime_pairs::iterator) <= 8 * sizeof(std::int64_t));
-  double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CHECK(secs < 1.0);  // the work is a few dozen gcds; any materialisation would take hours
 }

@@ -8,7 +8,6 @@
 #include <catch2/catch.hpp>
 #include <zlib.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -513,13 +512,10 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   gyrores::test::temp_dir tmp("report");
   const std::string dir = tmp.path();
   REQUIRE(!dir.empty());
-  auto t0 = std::chrono::steady_clock::now();
   auto r = cli_run("report --out " + dir + "/out");
-  double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   REQUIRE(r.status == 0);
   CHECK(r.err.empty());
   CHECK(r.out == dir + "/out/REPORT.md\n");
-  CHECK(secs < 60);
   std::string md = read_file(fs::path(dir) / "out" / "REPORT.md");
   REQUIRE(!md.empty());
   std::regex link(R"(\]\(([^)\s]+)\))");
