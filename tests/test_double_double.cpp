@@ -107,7 +107,7 @@ TEST_CASE("double_double: the arithmetic's error bounds", "[double_double]") {
   CHECK(int128(b.hi) + int128(b.lo) == big);
 }
 
-TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root", "[double_double]") {
+TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root, sin w* within 2^-59.7", "[double_double]") {
   // The root by bisection in MPFR at 200 bits on x u + atan(x tan u) = pi m/(2a).
   std::mt19937_64 rng(5);
   for (int i = 0; i < 300; ++i) {
@@ -146,6 +146,11 @@ TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root", 
     mpfr_sin_cos(f, t, lo, MPFR_RNDN);
     REQUIRE(error_in(r.sin_u, f, 0x1p-60 * mpfr_get_d(f, MPFR_RNDN)) <= 1);
     REQUIRE(error_in(r.cos_u, t, 0x1p-60) <= 1);
+    // sin w* = sin(mu - x u*) within 2^-59.7 (theorem/root.hpp; r_res is formed from it).
+    mpfr_mul(t, X, lo, MPFR_RNDN);
+    mpfr_sub(t, MU, t, MPFR_RNDN);
+    mpfr_sin(f, t, MPFR_RNDN);
+    REQUIRE(error_in(r.sin_w, f, std::exp2(-59.7) * mpfr_get_d(f, MPFR_RNDN)) <= 1);
   }
 }
 

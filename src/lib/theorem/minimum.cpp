@@ -22,8 +22,7 @@ namespace {
 // (x u + x t/(1 + x^2 t^2))/(u H') <= 1 since t <= u (1 + t^2) (tan u <= u sec^2 u). So the
 // computed u* is within 2^-60 + 2^-95 relative of the exact pair's (theorem/root.hpp), and
 // r_res, theta_first, t_first are within 2^-58 of their exact values before the last rounding
-// (r_res's relative derivative in u is below 3; theta = 2 (k pi +- u*)/a with k pi - u* >= u*),
-// so within an ulp after it.
+// (r_res below; theta = 2 (k pi +- u*)/a with k pi - u* >= u*), so within an ulp after it.
 // Always inlined: each target clone of the callers below gets its own (FMA or not) code.
 template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& tau, const I& sigma) {
   const I a = I(tau + sigma), b = I(tau - sigma);
@@ -49,17 +48,21 @@ template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& ta
   const root_double_double r = theorem_root_refined(x, mu);
   const double_double& u = r.u;
   out.u_star = u.hi;
-  // sqrt(G(u*)) = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u), sqrt(1-x^2) = 2 sqrt(tau sigma)/a.
-  const double_double xs2 = dd::mul(x, dd::mul(r.sin_u, r.sin_u));
-  const double_double E = dd::add(dd::mul(r.cos_u, r.cos_u), dd::mul(x, xs2));
+  // r_res = sqrt(1-x^2) sin u* sin w*, w* = mu - x u*: at the root x tan u = tan w, so E =
+  // cos^2 u + x^2 sin^2 u = cos^2 u/cos^2 w and sqrt(G) = x sqrt(1-x^2) sin^2 u/sqrt(E) =
+  // sqrt(1-x^2) sin u (x sin u cos w/cos u) = sqrt(1-x^2) sin u sin w (no division, no square
+  // root). sin u* within 2^-60 and sin w* within 2^-59.7 (theorem/root.hpp) and sqrt(1-x^2) =
+  // 2 sqrt(tau sigma)/a within 2^-97 give r_res within 2^-58.8 before its rounding.
   const double_double two_over_a = dd::scale(inv_a, 2);
-  out.r_res = dd::div(dd::mul(xs2, dd::mul(sqrt_ts, two_over_a)), dd::sqrt(E)).hi;
-  // theta = 2 (k pi + sign(m) u*)/a (k of the first lobe; k >= 1, so k pi - u* > pi/2).
+  const double_double s1 = dd::mul(sqrt_ts, two_over_a);  // sqrt(1 - x^2)
+  out.r_res = dd::mul(s1, dd::mul(r.sin_u, r.sin_w)).hi;
+  // theta = 2 (k pi + sign(m) u*)/a (k of the first lobe; k >= 1, so k pi - u* > pi/2) and
+  // t_first = sqrt(tau sigma) theta = (k pi + sign(m) u*) sqrt(1 - x^2).
   const lobe_frame<I>& first = lobes.front();
   const double_double k_pi = dd::mul(dd::of_int(first.k), dd::pi);
-  const double_double theta = dd::mul(dd::add(k_pi, first.m < 0 ? dd::neg(u) : u), two_over_a);
-  out.theta_first = theta.hi;
-  out.t_first = dd::mul(sqrt_ts, theta).hi;
+  const double_double arc = dd::add(k_pi, first.m < 0 ? dd::neg(u) : u);
+  out.theta_first = dd::mul(arc, two_over_a).hi;
+  out.t_first = dd::mul(arc, s1).hi;
   // The other minimisers: plain doubles (a few ulps).
   out.minimisers[0] = out.theta_first;
   for (std::size_t i = 1; i < out.count; ++i) {
