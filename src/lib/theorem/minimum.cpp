@@ -95,9 +95,13 @@ GYRORES_DD_FAST minimum_double theorem_minimum_double(const resonant_pair<std::i
 }
 
 GYRORES_DD_FAST minimum_double_of<int128> theorem_minimum_double(const resonant_pair<big_int>& p) {
-  if (boost::multiprecision::msb(p.order()) >= 120)
+  // The order from the int128 halves (p.order() would allocate a big_int): tau > sigma, so
+  // tau < 2^120 makes the conversions exact and the sum below 2^121.
+  const bool fits = boost::multiprecision::msb(p.tau()) < 120;
+  const int128 tau = fits ? to_int128(p.tau()) : 0, sigma = fits ? to_int128(p.sigma()) : 0;
+  if (!fits || tau + sigma >= (int128(1) << 120))
     throw usage_error("theorem_minimum_double: pair " + p.str() + " has order >= 2^120");
-  return minimum_in<int128>(to_int128(p.tau()), to_int128(p.sigma()));
+  return minimum_in<int128>(tau, sigma);
 }
 
 void minimiser_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& a, const lobe_frame<big_int>& f,
