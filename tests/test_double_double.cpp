@@ -107,7 +107,7 @@ TEST_CASE("double_double: the arithmetic's error bounds", "[double_double]") {
   CHECK(int128(b.hi) + int128(b.lo) == big);
 }
 
-TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root", "[double_double]") {
+TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root, sin w* within 2^-59.7", "[double_double]") {
   // The root by bisection in MPFR at 200 bits on x u + atan(x tan u) = pi m/(2a).
   std::mt19937_64 rng(5);
   for (int i = 0; i < 300; ++i) {
@@ -146,6 +146,11 @@ TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root", 
     mpfr_sin_cos(f, t, lo, MPFR_RNDN);
     REQUIRE(error_in(r.sin_u, f, 0x1p-60 * mpfr_get_d(f, MPFR_RNDN)) <= 1);
     REQUIRE(error_in(r.cos_u, t, 0x1p-60) <= 1);
+    // sin w* = sin(mu - x u*) within 2^-59.7 (theorem/root.hpp; r_res is formed from it).
+    mpfr_mul(t, X, lo, MPFR_RNDN);
+    mpfr_sub(t, MU, t, MPFR_RNDN);
+    mpfr_sin(f, t, MPFR_RNDN);
+    REQUIRE(error_in(r.sin_w, f, std::exp2(-59.7) * mpfr_get_d(f, MPFR_RNDN)) <= 1);
   }
 }
 
@@ -218,4 +223,91 @@ TEST_CASE("double_double: sweep rows to order 3000 within an ulp of the certifie
   for (auto& t : threads) t.join();
   CHECK(pairs == 1368093);
   CHECK(over == 0);
+}
+
+namespace {
+
+// A random coprime pair of order below 2^bits (bits <= 119): tau up to 2^(bits-1), sigma either
+// small or of tau's size (x tiny and x near 1 both), as big_int.
+resonant_pair<big_int> random_wide_pair(std::mt19937_64& rng, int bits, int i) {
+  for (;;) {
+    auto draw = [&](int n) {  // uniform below 2^n
+      unsigned __int128 v = (unsigned __int128)(rng()) << 64 | rng();
+      return int128(v >> (128 - n));
+    };
+    const int128 tau = draw(bits - 1) + 2;
+    const int128 sigma = i % 3 == 0 ? 1 + int128(rng() % 10) : 1 + draw(bits - 1) % (tau - 1);
+    const big_int t = to_big(tau), s = to_big(sigma);
+    if (s < t && int_gcd(t, s) == 1) return resonant_pair<big_int>(t, s);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("double_double: the lobes by one Euclid are the theorem's lobes", "[double_double]") {
+  for (const auto& p : coprime_pairs(3, 300)) {
+    const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+    const auto fast = minimiser_lobes_euclid(a, b), ref = minimiser_lobes(a, b);
+    REQUIRE(fast.size() == ref.size());
+    for (std::size_t i = 0; i < ref.size(); ++i) {
+      INFO(p.str() << " lobe " << i);
+      REQUIRE(fast[i].k == ref[i].k);
+      REQUIRE(fast[i].j == ref[i].j);
+      REQUIRE(fast[i].m == ref[i].m);
+    }
+  }
+  std::mt19937_64 rng(17);
+  for (int i = 0; i < 500; ++i) {
+    const auto p = random_wide_pair(rng, 63 + i % 57, i);
+    const big_int a = p.order(), b = big_int(p.delta());
+    const auto fast = minimiser_lobes_euclid(to_int128(a), to_int128(b));
+    const auto ref = minimiser_lobes(a, b);
+    INFO(p.str());
+    REQUIRE(fast.size() == ref.size());
+    for (std::size_t i2 = 0; i2 < ref.size(); ++i2) {
+      REQUIRE(to_big(fast[i2].k) == ref[i2].k);
+      REQUIRE(to_big(fast[i2].j) == ref[i2].j);
+      REQUIRE(to_big(fast[i2].m) == ref[i2].m);
+    }
+  }
+  CHECK_THROWS_AS(minimiser_lobes_euclid(std::int64_t(15), std::int64_t(3)), usage_error);  // (9, 6)
+}
+
+// The int128 double path (orders 2^62 to 2^120): r_res, theta_first, t_first within one ulp of
+// the proved 25-digit values, as for the int64 path.
+TEST_CASE("double_double: theorem_minimum_double within an ulp for pairs of order up to 2^120", "[double_double]") {
+  std::mt19937_64 rng(29);
+  double worst = 0;
+  int n = 0;
+  auto check = [&](const resonant_pair<big_int>& p) {
+    const auto m = theorem_minimum_double(p);
+    const pair_report pr = prove_pair_values(p, 25);
+    mp ref;
+    INFO(p.str());
+    for (auto [value, text] : {std::pair{m.r_res, pr.r_res.value}, std::pair{m.theta_first, pr.theta_first.value},
+                               std::pair{m.t_first, pr.t_first.value}}) {
+      set_decimal(ref, text);
+      if (mpfr_zero_p(ref.v)) {
+        REQUIRE(value == 0);
+        continue;
+      }
+      const double e = ulps(value, ref);
+      worst = std::max(worst, e);
+      REQUIRE(e <= 1);
+    }
+    ++n;
+  };
+  const big_int e30("1000000000000000000000000000000");
+  check(resonant_pair<big_int>(e30 + 1, e30));
+  for (int i = 0; i < 300; ++i) check(random_wide_pair(rng, 62 + i % 58, i));
+  // An int64 pair of order between 2^62 and 2^63 takes the int128 arithmetic and agrees.
+  const std::int64_t big = (std::int64_t(1) << 62) - 1;
+  const auto narrow = theorem_minimum_double(resonant_pair<std::int64_t>(big, big - 2));
+  const auto wide = theorem_minimum_double(resonant_pair<big_int>(big_int(big), big_int(big - 2)));
+  CHECK(narrow.r_res == wide.r_res);
+  CHECK(narrow.theta_first == wide.theta_first);
+  CHECK(narrow.t_first == wide.t_first);
+  CHECK(int128(narrow.lobes[0].k) == wide.lobes[0].k);
+  CHECK_THROWS_AS(theorem_minimum_double(resonant_pair<big_int>(big_int(1) << 120, big_int(1))), usage_error);
+  WARN(n << " pairs of order 2^62 to 2^120, worst " << worst << " ulp");
 }

@@ -67,7 +67,8 @@ std::string h1_remark(const std::vector<measurement>& rows, const std::vector<be
   if (!units.empty())
     out = "In double theorem_minimum_double takes the time of " + format_number("%.2g", median(units)) +
           " evaluations of (q, q', z, z') (one_eval, two sin_cos; median over the pairs) for the lobes by integers, "
-          "u* by safeguarded Newton on H(u) = x u + arctan(x tan u) and r_res from tan u*.";
+          "u* by Newton on H(u) = x u + arctan(x tan u) finished in double-double, r_res, theta_first and t_first "
+          "within an ulp.";
   if (!lattice.empty())
     out += std::string(out.empty() ? "" : " ") + "The reference lattice from before the theorem (ref_lattice) takes " +
            format_number("%.2g", median(lattice)) + "x its time.";
@@ -84,7 +85,7 @@ headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
     const auto* t = find_row(rows, "theta_asy", "double", bp.name);
     if (!e) {
       if (t)
-        h.values.push_back({bp.name, "n/a: theorem_minimum_double takes pairs of order below 2^62 (theta_asy " +
+        h.values.push_back({bp.name, "n/a: theorem_minimum_double takes pairs of order below 2^120 (theta_asy " +
                                          format_time(t->median_ns) + ")"});
       continue;
     }
@@ -229,8 +230,8 @@ std::string with_digits(const std::string& label, const measurement& m) {
   return label + " " + format_time(m.median_ns) + ", " + format_digits(m.digits()) + " d";
 }
 
-// L1: gyrores' double path against peer_newton. Pairs beyond theorem_minimum_double's int64
-// (order >= 2^62) have no double path: their row is the proved minimum at 16 digits
+// L1: gyrores' double path against peer_newton. Pairs beyond theorem_minimum_double's int128
+// (order >= 2^120) have no double path: their row is the proved minimum at 16 digits
 // (theorem_proved at double), what gyrores offers for them, and it counts against the target.
 headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"L1",
@@ -249,7 +250,7 @@ headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
     h.values.push_back(
         {bp.name, ratio_text(r) + " (" +
                       (e ? with_digits("theorem_minimum_double", n)
-                         : "no double path: theorem_minimum_double takes orders below 2^62; the proved minimum at 16 "
+                         : "no double path: theorem_minimum_double takes orders below 2^120; the proved minimum at 16 "
                            "digits instead, " + with_digits("prove_minimum", n)) +
                       "; " + with_digits("peer_newton", *d) + ")"});
   }

@@ -110,17 +110,21 @@ bench_case r_res_asy_case(const bench_pair& bp, const precision& pr, const refer
 
 // ---- the theorem's path (include/gyrores/theorem/, certify/theorem_certificate.hpp) ----------
 
-// theorem_minimum_double: the minimum in double from the theorem (pairs of order below 2^62).
+// theorem_minimum_double: the minimum in double from the theorem (int64 pairs below order 2^62,
+// the int128 overload up to order 2^120).
 bench_case theorem_double_case(const bench_pair& bp, const precision& pr, const reference&) {
-  const auto p64 = bp.p64();
-  return make_case(
-      "theorem_double", pr, bp, [p64] { return theorem_minimum_double(p64); },
-      [](const minimum_double& m) {
-        outcome o;
-        o.theta = real_text(m.theta_first);
-        o.r_res = real_text(m.r_res);
-        return o;
-      });
+  auto convert = [](const auto& m) {
+    outcome o;
+    o.theta = real_text(m.theta_first);
+    o.r_res = real_text(m.r_res);
+    return o;
+  };
+  if (bp.fits64()) {
+    const auto p64 = bp.p64();
+    return make_case("theorem_double", pr, bp, [p64] { return theorem_minimum_double(p64); }, convert);
+  }
+  const auto p = bp.p;
+  return make_case("theorem_double", pr, bp, [p] { return theorem_minimum_double(p); }, convert);
 }
 
 // The proved minimum at the precision of pr's digits (theorem_path.hpp with_proved_minimum):
@@ -322,18 +326,18 @@ std::string skip_theorem_double(const bench_pair& bp, const precision& pr) {
   if (pr.kind != real_kind::dbl)
     return "the theorem's point path is double only (theorem_minimum_double); every other precision takes the "
            "proved path (theorem_proved)";
-  if (!bp.fits64())
-    return "theorem_minimum_double takes pairs of order below 2^62 (std::int64_t); larger pairs take the proved "
-           "path (theorem_proved)";
+  if (boost::multiprecision::msb(bp.order()) >= 120)
+    return "theorem_minimum_double takes pairs of order below 2^120 (int128); larger pairs take the proved path "
+           "(theorem_proved)";
   return "";
 }
 
-// In double only for the pairs theorem_minimum_double does not take (order >= 2^62): there the
+// In double only for the pairs theorem_minimum_double does not take (order >= 2^120): there the
 // proved minimum at 16 digits is gyrores' double answer (headline L1).
 std::string skip_theorem_proved(const bench_pair& bp, const precision& pr) {
-  if (pr.kind == real_kind::dbl && bp.fits64())
+  if (pr.kind == real_kind::dbl && boost::multiprecision::msb(bp.order()) < 120)
     return "in double the theorem's path is theorem_double (the proved path runs in double only for the pairs of "
-           "order >= 2^62, and at 19 digits and up)";
+           "order >= 2^120, and at 19 digits and up)";
   return "";
 }
 
@@ -407,8 +411,9 @@ std::vector<method_def> library_methods(const run_config&) {
   return {
       {"theorem_double", "theorem",
        "**theorem (double)**: theorem_minimum_double (theorem/minimum.hpp): m_min and the minimisers' lobes by "
-       "integers (one modular inverse), u* = H^{-1}(pi m_min/(2a)) by safeguarded Newton (theorem_root_double), "
-       "r_res = sqrt(G(u*)) and every minimiser; nothing proved (the sweep rows, design catalogue and figures)",
+       "integers (one extended Euclid), u* = H^{-1}(pi m_min/(2a)) by Newton in double finished in double-double "
+       "(theorem_root_refined), r_res, theta_first and t_first within one ulp (proved error bounds, no enclosure), "
+       "and every minimiser; pairs of order below 2^120 (the sweep rows, design catalogue and figures)",
        skip_theorem_double, theorem_double_case},
       {"theorem_proved", "theorem",
        "**theorem, proved (MPFI+Arb)**: the proved minimum at the digits' precision (theorem/root.hpp, "

@@ -96,6 +96,52 @@ template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
   return out;
 }
 
+// The same list for machine integers (int64 with a < 2^62, int128 with a < 2^126), by one
+// extended Euclid and no sort: the double path's (theorem/minimum.hpp). With ah = a, d = 2b
+// (m_min = 1) or ah = a/2, d = b (m_min = 2), Euclid gives s ah + t d = 1 with |s| < d, |t| < ah
+// (every cofactor and remainder stays below 2a: no overflow); s taken into (0, d) is 2j+1 and
+// -t is k of the pass frame, (2j+1) a - 2 k b = m_min, 0 < k < ah (k = 0 would need ah = 1).
+// The mirror (a - k) and, for m_min = 2, the shift (k + a/2) and its mirror (a/2 - k) then lie
+// in [0, a) already, and their order follows from 2k < ah or not (2k = ah is impossible: ah
+// odd). usage_error if Euclid's gcd is not 1 (tau, sigma not coprime).
+template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
+  lobe_list<L> out;
+  const int m = theorem_m_min(a);
+  if (m == 0) {
+    out.push_back({L(a / 4), L((b - 2) / 4), L(0)});
+    out.push_back({L(3 * (a / 4)), L((3 * b - 2) / 4), L(0)});
+    return out;
+  }
+  const L ah = m == 1 ? a : L(a / 2), d = m == 1 ? L(2 * b) : b;
+  L r0 = d, r1 = ah, s0 = 0, s1 = 1, t0 = 1, t1 = 0;  // r = s ah + t d throughout
+  while (r1 != 0) {
+    const L q = r0 / r1;
+    L v = r0 - q * r1;
+    r0 = r1, r1 = v;
+    v = s0 - q * s1;
+    s0 = s1, s1 = v;
+    v = t0 - q * t1;
+    t0 = t1, t1 = v;
+  }
+  if (r0 != 1) throw usage_error("minimiser lobes: tau and sigma are not coprime");
+  if (s0 < 0) s0 += d, t0 -= ah;
+  const lobe_frame<L> pass{L(-t0), L((s0 - 1) / 2), L(m)};
+  const lobe_frame<L> mirror{L(a - pass.k), L(b - 1 - pass.j), L(-m)};
+  const bool pass_first = 2 * pass.k < ah;
+  if (m == 1) {
+    out.push_back(pass_first ? pass : mirror);
+    out.push_back(pass_first ? mirror : pass);
+    return out;
+  }
+  const lobe_frame<L> shift{L(pass.k + a / 2), L(pass.j + b / 2), L(m)};
+  const lobe_frame<L> shift_mirror{L(a / 2 - pass.k), L(b / 2 - 1 - pass.j), L(-m)};
+  out.push_back(pass_first ? pass : shift_mirror);
+  out.push_back(pass_first ? shift_mirror : pass);
+  out.push_back(pass_first ? shift : mirror);
+  out.push_back(pass_first ? mirror : shift);
+  return out;
+}
+
 // The paper's fast node k = round(a/(2b)) for a, b > 0, exactly: {k, tie}; on a tie
 // (a/(2b) = k + 1/2, which for a coprime pair happens exactly when b = 1) both k and k + 1 are
 // the paper's nodes and `k` is the smaller. The lobe's offset is m = a - 2 k b (frame j = 0),

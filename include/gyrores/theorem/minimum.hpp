@@ -26,18 +26,24 @@ namespace gyrores {
 
 // ---- double ----
 
-struct minimum_double {
+template <class L> struct minimum_double_of {
   int m_min = 0;
   double u_star = 0;                          // 0 for degenerate pairs
   double r_res = 0, theta_first = 0, t_first = 0;
   std::array<double, 4> minimisers{};         // ascending, `count` of them
-  std::array<lobe_frame<std::int64_t>, 4> lobes{};  // their lobes (k in [0, a)), same order
+  std::array<lobe_frame<L>, 4> lobes{};       // their lobes (k in [0, a)), same order
   std::size_t count = 0;
 };
+using minimum_double = minimum_double_of<std::int64_t>;
 
-// The minimum of pair p (order below 2^62) in double, amplitude 1. compute_error only if the
-// root solver fails (it does not for valid pairs).
+// The minimum of pair p in double, amplitude 1: pairs of order below 2^63 (the lobes' k < a fit
+// in int64; usage_error above). compute_error only if the root solver fails (it does not for
+// valid pairs).
 minimum_double theorem_minimum_double(const resonant_pair<std::int64_t>& p);
+
+// The same for pairs of order below 2^120 (the lobes in int128: Euclid's cofactors stay below
+// 2a), with the same one-ulp guarantee; usage_error for larger orders.
+minimum_double_of<int128> theorem_minimum_double(const resonant_pair<big_int>& p);
 
 // ---- enclosures ----
 

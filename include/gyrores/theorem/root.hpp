@@ -51,10 +51,12 @@ double theorem_root_double(double x, double mu);
 // core/double_double.hpp to a relative error below 2^-61 (w itself to 2^-100: w >= mu/2 near
 // the root), so a step's error is below 2^-60 x sin u/(2x) < 2^-61 u. Steps repeat until one is
 // below 2^-35 u (Newton's quadratic term is then below 2^-68 u). The result is within 2^-60 u*
-// of it, and sin u*, cos u* within 2^-60 of theirs. compute_error after 4 steps (u0 far off).
+// of it, and sin u*, cos u* within 2^-60 of theirs; sin w at the returned u within 2^-62 of
+// sin(w(u)) (dd_sin_cos's 2^-63 and the first-order step), so within 2^-59.7 of sin w*
+// (|w(u) - w*| = x |u - u*| <= 2^-60 x u* <= 2^-60 w*). compute_error after 4 steps (u0 far off).
 // Preconditions (not checked): x = b/a and mu = pi m/(2a) of a pair, m = 1 or 2 (m_min).
 struct root_double_double {
-  double_double u, sin_u, cos_u;
+  double_double u, sin_u, cos_u, sin_w;  // sin_w: sin(mu - x u)
 };
 root_double_double theorem_root_refined(const double_double& x, const double_double& mu);
 

@@ -1,53 +1,107 @@
 // include/gyrores/theorem/minimum.hpp: the theorem's minimum in double and as enclosures.
 #include <gyrores/theorem/minimum.hpp>
 
+#include <type_traits>
+
 #include <gyrores/core/double_double.hpp>
+#include <gyrores/core/error.hpp>
 
 namespace gyrores {
 
-GYRORES_DD_FAST minimum_double theorem_minimum_double(const resonant_pair<std::int64_t>& p) {
-  using L = std::int64_t;
-  const L a = L(p.order()), b = p.delta();
-  minimum_double out;
+namespace {
+
+// The double path for a pair held in machine integers I (int64 for orders below 2^62, int128
+// below 2^120; tau sigma as int128 or, for I = int128, in double-double).
+//
+// Error budget (each quantity in double-double, then rounded once to a double): 1/a and x = b/a
+// are within 2^-104 relative for a < 2^53 (dd::quotient of exact doubles) and within 2^-98
+// above (a and b converted with relative error <= 2^-106, core/double_double.hpp of_int, then
+// one div <= 15u^2 + 56u^3 and one mul <= 7u^2, u = 2^-53), mu = pi m/(2a) within 2^-97. The root
+// u* moves by at most the relative perturbation of mu plus that of x: H(0) = 0 and H convex
+// give mu <= u* H'(u*), so (mu/u*) du*/dmu = mu/(u* H') <= 1; and (x/u*) |du*/dx| =
+// (x u + x t/(1 + x^2 t^2))/(u H') <= 1 since t <= u (1 + t^2) (tan u <= u sec^2 u). So the
+// computed u* is within 2^-60 + 2^-95 relative of the exact pair's (theorem/root.hpp), and
+// r_res, theta_first, t_first are within 2^-58 of their exact values before the last rounding
+// (r_res below; theta = 2 (k pi +- u*)/a with k pi - u* >= u*), so within an ulp after it.
+// Always inlined: each target clone of the callers below gets its own (FMA or not) code.
+template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& tau, const I& sigma) {
+  const I a = I(tau + sigma), b = I(tau - sigma);
+  minimum_double_of<I> out;
   out.m_min = theorem_m_min(a);
-  // r_res, theta_first and t_first in double-double, rounded once at the end: each is within
-  // 2^-58 of its exact value before that rounding (theorem/root.hpp, core/double_double.hpp),
-  // so within an ulp after it. The other minimisers are plain doubles.
-  const bool exact = a < (L(1) << 53);  // a and b are doubles
-  const double_double inv_a = exact ? dd::quotient(1, double(a)) : dd::div(1.0, dd::of_int(a));
-  const double_double x = exact ? dd::quotient(double(b), double(a)) : dd::mul(inv_a, dd::of_int(b));
-  const double_double sqrt_ts = dd::sqrt(dd::of_int(int128(p.tau()) * p.sigma()));
-  double_double u;  // u* (0 for degenerate pairs)
-  if (out.m_min > 0) {
-    const double_double mu = dd::mul(dd::mul(dd::pi, inv_a), 0.5 * out.m_min);
-    const root_double_double r = theorem_root_refined(x, mu);
-    u = r.u;
-    // sqrt(G(u*)) = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u), sqrt(1-x^2) = 2 sqrt(tau sigma)/a.
-    const double_double xs2 = dd::mul(x, dd::mul(r.sin_u, r.sin_u));
-    const double_double E = dd::add(dd::mul(r.cos_u, r.cos_u), dd::mul(x, xs2));
-    out.r_res = dd::div(dd::mul(xs2, dd::mul(sqrt_ts, dd::scale(inv_a, 2))), dd::sqrt(E)).hi;
+  const bool small = a < (I(1) << 53);  // a and b are exact doubles
+  const double_double inv_a = small ? dd::quotient(1, double(a)) : dd::div(1.0, dd::of_int(a));
+  double_double ts;  // tau sigma: one rounding of the exact int128 product, or a double-double product
+  if constexpr (std::is_same_v<I, std::int64_t>) ts = dd::of_int(int128(tau) * sigma);
+  else ts = dd::mul(dd::of_int(tau), dd::of_int(sigma));
+  const double_double sqrt_ts = dd::sqrt(ts);
+  const lobe_list<I> lobes = minimiser_lobes_euclid(a, b);
+  for (const auto& f : lobes) out.lobes[out.count++] = f;
+  if (out.m_min == 0) {  // r_res = 0 at theta = pi/2 and 3 pi/2 (correctly rounded: pi's double halved)
+    const double_double half_pi = dd::scale(dd::pi, 0.5);
+    out.theta_first = half_pi.hi;
+    out.t_first = dd::mul(sqrt_ts, half_pi).hi;
+    out.minimisers = {half_pi.hi, dd::mul(dd::pi, 1.5).hi};
+    return out;
   }
+  const double_double x = small ? dd::quotient(double(b), double(a)) : dd::mul(inv_a, dd::of_int(b));
+  const double_double mu = dd::scale(dd::mul(dd::pi, inv_a), 0.5 * out.m_min);
+  const root_double_double r = theorem_root_refined(x, mu);
+  const double_double& u = r.u;
   out.u_star = u.hi;
-  // theta = 2 (key pi + sign(m) u*)/a; (2j+1) a in the lobes' arithmetic reaches 2 a b: int64
-  // below order 2^31 (the sweeps' hot path, where int128's modular inverse costs more), int128 above.
-  const double two_over_a = 2 / double(a), pi = dd::pi.hi;
-  auto put_lobes = [&](auto A, auto B) {
-    for (const auto& f : minimiser_lobes(A, B)) {
-      const L key = L(lobe_order_key(f, A));
-      if (out.count == 0) {
-        const double_double key_pi = dd::mul(dd::of_int(key), dd::pi);
-        const double_double theta = dd::mul(dd::add(key_pi, f.m < 0 ? dd::neg(u) : u), dd::scale(inv_a, 2));
-        out.theta_first = theta.hi;
-        out.t_first = dd::mul(sqrt_ts, theta).hi;
-      }
-      out.minimisers[out.count] = (double(key) * pi + (f.m < 0 ? -u.hi : u.hi)) * two_over_a;
-      out.lobes[out.count++] = {L(f.k), L(f.j), L(f.m)};  // k < a, j < b, |m| <= 2
-    }
-  };
-  if (a < (L(1) << 31)) put_lobes(a, b);
-  else put_lobes(int128(a), int128(b));
+  // r_res = sqrt(1-x^2) sin u* sin w*, w* = mu - x u*: at the root x tan u = tan w, so E =
+  // cos^2 u + x^2 sin^2 u = cos^2 u/cos^2 w and sqrt(G) = x sqrt(1-x^2) sin^2 u/sqrt(E) =
+  // sqrt(1-x^2) sin u (x sin u cos w/cos u) = sqrt(1-x^2) sin u sin w (no division, no square
+  // root). sin u* within 2^-60 and sin w* within 2^-59.7 (theorem/root.hpp) and sqrt(1-x^2) =
+  // 2 sqrt(tau sigma)/a within 2^-97 give r_res within 2^-58.8 before its rounding.
+  const double_double two_over_a = dd::scale(inv_a, 2);
+  const double_double s1 = dd::mul(sqrt_ts, two_over_a);  // sqrt(1 - x^2)
+  out.r_res = dd::mul(s1, dd::mul(r.sin_u, r.sin_w)).hi;
+  // theta = 2 (k pi + sign(m) u*)/a (k of the first lobe; k >= 1, so k pi - u* > pi/2) and
+  // t_first = sqrt(tau sigma) theta = (k pi + sign(m) u*) sqrt(1 - x^2).
+  const lobe_frame<I>& first = lobes.front();
+  const double_double k_pi = dd::mul(dd::of_int(first.k), dd::pi);
+  const double_double arc = dd::add(k_pi, first.m < 0 ? dd::neg(u) : u);
+  out.theta_first = dd::mul(arc, two_over_a).hi;
+  out.t_first = dd::mul(arc, s1).hi;
+  // The other minimisers: plain doubles (a few ulps).
   out.minimisers[0] = out.theta_first;
+  for (std::size_t i = 1; i < out.count; ++i) {
+    const lobe_frame<I>& f = lobes[i];
+    out.minimisers[i] = (double(f.k) * dd::pi.hi + (f.m < 0 ? -u.hi : u.hi)) * two_over_a.hi;
+  }
   return out;
+}
+
+template <class I> minimum_double_of<I> narrowed(const minimum_double_of<int128>& m) {
+  minimum_double_of<I> out;
+  out.m_min = m.m_min;
+  out.u_star = m.u_star;
+  out.r_res = m.r_res;
+  out.theta_first = m.theta_first;
+  out.t_first = m.t_first;
+  out.minimisers = m.minimisers;
+  out.count = m.count;
+  for (std::size_t i = 0; i < m.count; ++i) out.lobes[i] = {I(m.lobes[i].k), I(m.lobes[i].j), I(m.lobes[i].m)};
+  return out;
+}
+
+}  // namespace
+
+GYRORES_DD_FAST minimum_double theorem_minimum_double(const resonant_pair<std::int64_t>& p) {
+  const int128 a = p.order();
+  if (a < (int128(1) << 62)) return minimum_in<std::int64_t>(p.tau(), p.sigma());  // the sweeps' hot path
+  if (a >= (int128(1) << 63)) throw usage_error("theorem_minimum_double: pair " + p.str() + " has order >= 2^63");
+  return narrowed<std::int64_t>(minimum_in<int128>(p.tau(), p.sigma()));
+}
+
+GYRORES_DD_FAST minimum_double_of<int128> theorem_minimum_double(const resonant_pair<big_int>& p) {
+  // The order from the int128 halves (p.order() would allocate a big_int): tau > sigma, so
+  // tau < 2^120 makes the conversions exact and the sum below 2^121.
+  const bool fits = boost::multiprecision::msb(p.tau()) < 120;
+  const int128 tau = fits ? to_int128(p.tau()) : 0, sigma = fits ? to_int128(p.sigma()) : 0;
+  if (!fits || tau + sigma >= (int128(1) << 120))
+    throw usage_error("theorem_minimum_double: pair " + p.str() + " has order >= 2^120");
+  return minimum_in<int128>(tau, sigma);
 }
 
 void minimiser_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& a, const lobe_frame<big_int>& f,

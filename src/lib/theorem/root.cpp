@@ -71,8 +71,10 @@ GYRORES_DD_FAST root_double_double theorem_root_refined(const double_double& x, 
     const double dF = 2 * x.hi * cu.hi * cw.hi + (1 + x2) * su.hi * sw.hi;
     const double delta = -F.hi / dF;
     if (std::fabs(delta) <= 0x1p-35 * u.hi) {
-      // sin and cos at u + delta: the first-order terms (the second are below 2^-70 of them).
-      return {dd::add(u, delta), dd::add(su, delta * cu.hi), dd::add(cu, -delta * su.hi)};
+      // sin and cos at u + delta and sin w there (w - x delta): the first-order terms (the second
+      // are below 2^-70 of them: |x delta| <= 2^-35 x u <= 2^-35 w, as x u <= mu/2 <= w).
+      return {dd::add(u, delta), dd::add(su, delta * cu.hi), dd::add(cu, -delta * su.hi),
+              dd::add(sw, -(x.hi * delta) * cw.hi)};
     }
     u = dd::add(u, delta);
   }
