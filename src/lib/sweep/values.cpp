@@ -94,14 +94,14 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
     for (const auto& g : histograms) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
     for (const auto& g : candidates) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
     std::sort(slots.begin(), slots.end(), [](const slot& x, const slot& y) { return x.prefix < y.prefix; });
-    const unsigned b = std::min(opt.bits, 64 - F);
+    const unsigned nb = std::min(opt.bits, 64 - F);  // the bits this pass resolves
     std::uint64_t seen = 0;
     replay([&](const double* v, std::size_t n) {
       seen += n;
       if (F == 0) {  // one group: every value
         const slot& s = slots.front();
         if (s.hist) {
-          for (std::size_t i = 0; i < n; ++i) ++s.hist[std::size_t(sweep_value_key(v[i] == 0 ? 0.0 : v[i]) >> (64 - b))];
+          for (std::size_t i = 0; i < n; ++i) ++s.hist[std::size_t(sweep_value_key(v[i] == 0 ? 0.0 : v[i]) >> (64 - nb))];
         } else {
           for (std::size_t i = 0; i < n; ++i) s.keys->push_back(sweep_value_key(v[i] == 0 ? 0.0 : v[i]));
         }
@@ -112,7 +112,7 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
         for (const slot& s : slots) {
           if (s.prefix < top) continue;
           if (s.prefix == top) {
-            if (s.hist) ++s.hist[std::size_t((k << F) >> (64 - b))];
+            if (s.hist) ++s.hist[std::size_t((k << F) >> (64 - nb))];
             else s.keys->push_back(k);
           }
           break;
