@@ -243,6 +243,26 @@ TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
   CHECK_FALSE(r51.has_asy);  // x = 2/3 >= 1/2
 }
 
+TEST_CASE("sweep: P3's r_res^2 <= R(pi/2) is decided by the enclosure within rounding of the threshold", "[sweep]") {
+  // (9,4), (6,5), (5,1), (1000,999): delta odd and = 0 mod 4, small and large orders.
+  for (auto [tau, sigma] : {std::pair<std::int64_t, std::int64_t>{9, 4}, {6, 5}, {5, 1}, {1000, 999}}) {
+    const resonant_pair<std::int64_t> p(tau, sigma);
+    const std::int64_t a = std::int64_t(p.order());
+    const int128 N = sweep_quarter_R_scaled(a, p.delta());
+    const double R = double(N) / (4 * double(a) * double(a));
+    const auto r = sweep_evaluate<double>(p, config(a));
+    REQUIRE(r.r_res > 0);
+    CHECK(detail::sweep_r_below_quarter_R(p, r.r_res, N));
+    // An r_res a rounding above sqrt(R(pi/2)): the double comparison says no, but the true
+    // r_res (which the enclosure proves) is below: the decision must not follow the rounding.
+    const double above = std::sqrt(R) * (1 + 0x1p-44);
+    REQUIRE(above * above > R);
+    CHECK(detail::sweep_r_below_quarter_R(p, above, N));
+    // Far above (beyond any rounding): the double comparison decides.
+    CHECK_FALSE(detail::sweep_r_below_quarter_R(p, std::sqrt(R) * (1 + 0x1p-30), N));
+  }
+}
+
 namespace {
 
 // The row of p in T at `digits` (wider types: their own precision, mpfr_real digits + 8).

@@ -71,9 +71,15 @@ sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt
                         const std::function<void(sweep_block&)>& on_block,
                         const sweep_row_formatter<T>& format_row = {}) {
   auto evaluate = [&cfg, &format_row](const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk) {
+    // One row and one record for the whole block, overwritten pair by pair: no allocation per
+    // pair (they are the same values as sweep_evaluate's and sweep_record_of's).
+    sweep_row<T> row;
+    sweep_record rec;
+    blk.summary.t_ratios.reserve(pairs.size());
     for (const auto& p : pairs) {
-      auto row = sweep_evaluate<T>(p, cfg);
-      blk.summary.add(sweep_record_of(row, cfg.digits));
+      sweep_evaluate_to(row, p, cfg);
+      sweep_record_fill(rec, row, cfg.digits);
+      blk.summary.add(rec);
       if (format_row) format_row(blk.rows, row);
     }
   };

@@ -15,7 +15,9 @@
 //    degeneracy  (P3) R(pi/2) = 0 iff delta = 2 mod 4, with R(pi/2) the exact integer
 //                4 a^2 R(pi/2) of the model at theta = pi/2 (sweep_quarter_R_scaled), not the
 //                integer test delta mod 4 the library uses; and for non-degenerate pairs
-//                0 < r_res <= sqrt(R(pi/2)) (degenerate: r_res = 0).
+//                0 < r_res <= sqrt(R(pi/2)) (degenerate: r_res = 0). Double rows compare
+//                r_res^2 with R(pi/2) in double, and by the enclosures where the two are
+//                within 2^-40 of each other (sweep_r_below_quarter_R).
 //    paper-node  (P5, non-degenerate pairs) one of the global minimisers lies in the paper's lobe
 //                alpha = a theta/2 in (k pi - pi/2, k pi + pi/2), k = round(a/(2b)) (either k on
 //                a tie, b = 1): integers, the minimisers' lobes (theorem/lobes.hpp). The row also
@@ -135,6 +137,10 @@ template <class T> T sweep_mid(const fixed_mpfi& X, unsigned bits) {
 // The double path: theorem_minimum_double, its checks in double and integers, and (if asked)
 // the cross-check. Precondition: !cfg.certified and sweep_double_path(p).
 bool sweep_double_path(const resonant_pair<std::int64_t>& p);
+// P3's r_res^2 <= R(pi/2) for a non-degenerate pair p, given r_res within one ulp and the exact
+// N = 4 a^2 R(pi/2) (sweep_quarter_R_scaled): in double where the comparison is decided beyond
+// its rounding error, else by the proved enclosure of sweep_prove_pair (false if not proved).
+bool sweep_r_below_quarter_R(const resonant_pair<std::int64_t>& p, double r_res, int128 N);
 void sweep_evaluate_double(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg);
 
 // The enclosure path: pr = sweep_prove_pair(p, sweep_proof_options_of(...)); every field but
@@ -178,41 +184,64 @@ template <class T> void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair
   sweep_reals_from_proof(r, pr, bits, cfg.certified);
 }
 
-// The row's identity columns (filled for every row, error rows included).
-template <class T> sweep_row<T> sweep_row_of(const resonant_pair<std::int64_t>& p) {
-  sweep_row<T> r;
+// A fresh row of p with its identity columns (filled for every row, error rows included), in
+// place. For double the note keeps its buffer, so that a worker reusing one row allocates
+// nothing per pair; wider reals are replaced by new ones, exactly as a new row would hold them.
+template <class T> void sweep_row_reset(sweep_row<T>& r, const resonant_pair<std::int64_t>& p) {
+  if constexpr (std::is_same_v<T, double>) {
+    // Field by field (every field of sweep_row_info and sweep_row, as their initialisers): a
+    // fresh row moved in costs as much as the checks of a pair (callgrind).
+    r.failed = false;
+    r.note.clear();
+    r.has_ratio = false;
+    r.first_at_paper_node = -1;
+    r.paper_lobe_min = -1;
+    r.has_asy = false;
+    r.minimiser_count = 0;
+    r.status = {};
+    r.r_res = r.theta_first = r.t_first = r.t_min_paper = r.t_ratio = 0;
+    r.asy_error = r.asy_bound = r.asy_ratio = r.asy_constant = 0;
+  } else {
+    r = sweep_row<T>{};
+  }
   r.tau = p.tau();
   r.sigma = p.sigma();
   r.delta_mod4 = p.delta_mod4();
   r.strand_offset = p.strand_offset_min();
-  return r;
 }
 
-template <class T> sweep_row<T> sweep_failed_row(const resonant_pair<std::int64_t>& p, const char* what) {
-  sweep_row<T> r = sweep_row_of<T>(p);
+template <class T> void sweep_failed_row(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const char* what) {
+  sweep_row_reset(r, p);
   r.failed = true;
   r.note = what;
-  return r;
 }
 
 }  // namespace detail
 
-// Evaluate one pair (see the header comment). Never throws for a computation that fails: the
-// row is marked `failed` with the message in `note`.
-template <class T> sweep_row<T> sweep_evaluate(const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
-  sweep_row<T> r = detail::sweep_row_of<T>(p);
+// Evaluate one pair into r (see the header comment), overwriting all of it: the same row as
+// sweep_evaluate<T>(p, cfg), without a new row per pair (the engine's workers reuse one).
+// Never throws for a computation that fails: the row is marked `failed` with the message in
+// `note`.
+template <class T> void sweep_evaluate_to(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
+  detail::sweep_row_reset(r, p);
   try {
     detail::sweep_evaluate_into(r, p, cfg);
   } catch (const std::runtime_error& e) {
-    return detail::sweep_failed_row<T>(p, e.what());
+    detail::sweep_failed_row(r, p, e.what());
   } catch (const std::logic_error& e) {
-    return detail::sweep_failed_row<T>(p, e.what());
+    detail::sweep_failed_row(r, p, e.what());
   }
+}
+
+template <class T> sweep_row<T> sweep_evaluate(const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
+  sweep_row<T> r;
+  sweep_evaluate_to(r, p, cfg);
   return r;
 }
 
 // Compiled once in src/lib/sweep/instances.cpp for the compiled reals (core/real.hpp).
-#define GYRORES_SWEEP_EVALUATE_INSTANCES(PREFIX, T) \
+#define GYRORES_SWEEP_EVALUATE_INSTANCES(PREFIX, T)                                                  \
+  PREFIX template void sweep_evaluate_to<T>(sweep_row<T>&, const resonant_pair<std::int64_t>&, const sweep_config&); \
   PREFIX template sweep_row<T> sweep_evaluate<T>(const resonant_pair<std::int64_t>&, const sweep_config&);
 GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_EVALUATE_INSTANCES, extern)
 

@@ -57,28 +57,33 @@ template <class T> double sweep_record_value(const T& v, unsigned digits, std::s
 }
 }  // namespace detail
 
-template <class T> sweep_record sweep_record_of(const sweep_row<T>& r, unsigned digits) {
-  sweep_record s;
+// What the summary keeps of row r, into s (all of it overwritten; s's strings keep their buffers,
+// so that a worker reusing one record allocates nothing per pair).
+template <class T> void sweep_record_fill(sweep_record& s, const sweep_row<T>& r, unsigned digits) {
   s.tau = r.tau;
   s.sigma = r.sigma;
   s.delta_mod4 = r.delta_mod4;
   s.failed = r.failed;
   s.status = r.status;
   s.first_at_paper_node = r.first_at_paper_node;
-  if (r.has_ratio) {
-    s.has_ratio = true;
-    s.t_ratio = detail::sweep_record_value(r.t_ratio, digits, nullptr);
-  }
-  if (r.has_asy) {
-    s.has_asy = true;
-    s.asy_ratio = detail::sweep_record_value(r.asy_ratio, digits, &s.asy_ratio_text);
-    s.asy_constant = detail::sweep_record_value(r.asy_constant, digits, &s.asy_constant_text);
-  }
+  s.has_ratio = r.has_ratio;
+  s.t_ratio = r.has_ratio ? detail::sweep_record_value(r.t_ratio, digits, nullptr) : 0;
+  s.has_asy = r.has_asy;
+  s.asy_ratio_text.clear();
+  s.asy_constant_text.clear();
+  s.asy_ratio = r.has_asy ? detail::sweep_record_value(r.asy_ratio, digits, &s.asy_ratio_text) : 0;
+  s.asy_constant = r.has_asy ? detail::sweep_record_value(r.asy_constant, digits, &s.asy_constant_text) : 0;
+}
+
+template <class T> sweep_record sweep_record_of(const sweep_row<T>& r, unsigned digits) {
+  sweep_record s;
+  sweep_record_fill(s, r, digits);
   return s;
 }
 
 // Compiled once in src/lib/sweep/instances.cpp for the compiled reals (core/real.hpp).
-#define GYRORES_SWEEP_RECORD_INSTANCES(PREFIX, T) \
+#define GYRORES_SWEEP_RECORD_INSTANCES(PREFIX, T)                                      \
+  PREFIX template void sweep_record_fill<T>(sweep_record&, const sweep_row<T>&, unsigned); \
   PREFIX template sweep_record sweep_record_of<T>(const sweep_row<T>&, unsigned);
 GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_RECORD_INSTANCES, extern)
 

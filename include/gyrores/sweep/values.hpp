@@ -48,6 +48,8 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
 class sweep_values {
  public:
   void add(double v) { memory_.push_back(v == 0 ? 0.0 : v); }
+  // Room for n more values in memory (a block knows how many it will add).
+  void reserve(std::size_t n) { memory_.reserve(memory_.size() + n); }
   // Every value: those in memory and those held by sources.
   std::uint64_t size() const { return elsewhere_ + memory_.size(); }
   // The values in memory (the ones not handed to a source yet).

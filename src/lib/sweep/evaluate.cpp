@@ -111,9 +111,8 @@ void check_degeneracy_double(sweep_row_info& r, const resonant_pair<std::int64_t
   const std::int64_t a = std::int64_t(p.order()), b = p.delta();
   const int128 N = sweep_quarter_R_scaled(a, b);
   const bool degenerate = p.delta_mod4() == 2;
-  const double R = double(N) / (4 * double(a) * double(a));
   bool ok = (N == 0) == degenerate;
-  if (ok) ok = degenerate ? r_res == 0 : r_res > 0 && r_res * r_res <= R * (1 + 0x1p-48);
+  if (ok) ok = degenerate ? r_res == 0 : r_res > 0 && sweep_r_below_quarter_R(p, r_res, N);
   set_status(r, sweep_check::degeneracy, ok);
   if (!ok)
     add_note(r.note, "degeneracy: 4 a^2 R(pi/2) = " + to_decimal(N) + ", r_res = " + sweep_double_text(r_res));
@@ -122,6 +121,21 @@ void check_degeneracy_double(sweep_row_info& r, const resonant_pair<std::int64_t
 }  // namespace
 
 bool sweep_double_path(const resonant_pair<std::int64_t>& p) { return p.order() < (int128(1) << 31); }
+
+bool sweep_r_below_quarter_R(const resonant_pair<std::int64_t>& p, double r_res, int128 N) {
+  const double a = double(std::int64_t(p.order()));
+  // N >= 0 (a sum of squares times 4 a^2); below 2^63 the int64 conversion is the cheap one.
+  const double n = N < (int128(1) << 63) ? double(std::int64_t(N)) : double(N);
+  const double R = n / (4 * (a * a)), r2 = r_res * r_res;
+  // r_res is within one ulp of the exact value (theorem/minimum.hpp), so r2 within 3 ulps and a
+  // rounding; R is N, a^2 and the quotient each rounded once (4 a^2 is exact beyond a^2): both
+  // within 2^-49 relative of their exact values, far inside the band of 2^-40 around R.
+  if (r2 <= R * (1 - 0x1p-40)) return true;
+  if (r2 > R * (1 + 0x1p-40)) return false;
+  // Inside the band the double comparison could be wrong: the proved enclosure decides.
+  const sweep_proof pr = sweep_prove_pair(p);
+  return pr.minimum && pr.r_below_R_half_pi;
+}
 
 void sweep_evaluate_double(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
   const auto& ck = cfg.checks;

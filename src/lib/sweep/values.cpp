@@ -52,10 +52,6 @@ struct target {
   double value = 0;
 };
 
-bool shares_prefix(std::uint64_t key, std::uint64_t prefix, unsigned fixed) {
-  return fixed == 0 || (key >> (64 - fixed)) == prefix;
-}
-
 // Targets with one prefix are served by one histogram or one candidate list.
 using group_id = std::pair<unsigned, std::uint64_t>;  // (fixed, prefix)
 
@@ -83,21 +79,44 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
       else histograms.try_emplace(g, std::size_t(1) << std::min(opt.bits, 64 - t.fixed), 0);
     }
     if (histograms.empty() && candidates.empty()) break;
-    std::vector<std::pair<group_id, std::vector<std::uint64_t>*>> hist_list, cand_list;
-    for (auto& [g, h] : histograms) hist_list.push_back({g, &h});
-    for (auto& [g, c] : candidates) cand_list.push_back({g, &c});
+    // Every unfinished target has gained the same bits on every pass, so the groups of a pass
+    // share `fixed` (F): a value belongs to the group whose prefix is its top F bits, found by
+    // one shift and a scan of the few groups (at most one per rank), in prefix order.
+    const unsigned F = (histograms.empty() ? candidates.begin()->first : histograms.begin()->first).first;
+    struct slot {
+      std::uint64_t prefix;
+      std::uint64_t* hist;             // counters by the next b bits, or
+      std::vector<std::uint64_t>* keys;  // the candidates themselves
+    };
+    std::vector<slot> slots;
+    for (auto& [g, h] : histograms) slots.push_back({g.second, h.data(), nullptr});
+    for (auto& [g, c] : candidates) slots.push_back({g.second, nullptr, &c});
+    for (const auto& g : histograms) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
+    for (const auto& g : candidates) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
+    std::sort(slots.begin(), slots.end(), [](const slot& x, const slot& y) { return x.prefix < y.prefix; });
+    const unsigned nb = std::min(opt.bits, 64 - F);  // the bits this pass resolves
     std::uint64_t seen = 0;
     replay([&](const double* v, std::size_t n) {
       seen += n;
+      if (F == 0) {  // one group: every value
+        const slot& s = slots.front();
+        if (s.hist) {
+          for (std::size_t i = 0; i < n; ++i) ++s.hist[std::size_t(sweep_value_key(v[i] == 0 ? 0.0 : v[i]) >> (64 - nb))];
+        } else {
+          for (std::size_t i = 0; i < n; ++i) s.keys->push_back(sweep_value_key(v[i] == 0 ? 0.0 : v[i]));
+        }
+        return;
+      }
       for (std::size_t i = 0; i < n; ++i) {
-        const std::uint64_t k = sweep_value_key(v[i] == 0 ? 0.0 : v[i]);
-        for (auto& [g, h] : hist_list)
-          if (shares_prefix(k, g.second, g.first)) {
-            const unsigned b = std::min(opt.bits, 64 - g.first);
-            ++(*h)[std::size_t((k << g.first) >> (64 - b))];
+        const std::uint64_t k = sweep_value_key(v[i] == 0 ? 0.0 : v[i]), top = k >> (64 - F);
+        for (const slot& s : slots) {
+          if (s.prefix < top) continue;
+          if (s.prefix == top) {
+            if (s.hist) ++s.hist[std::size_t((k << F) >> (64 - nb))];
+            else s.keys->push_back(k);
           }
-        for (auto& [g, c] : cand_list)
-          if (shares_prefix(k, g.second, g.first)) c->push_back(k);
+          break;
+        }
       }
     });
     if (seen != count)
