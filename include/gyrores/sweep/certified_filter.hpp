@@ -6,11 +6,11 @@
 //  1. u*: interval Newton on F(u) = x sin u cos w - cos u sin w, w = mu - x u (zero on (0, pi/2)
 //     only at u*: F has the sign of H(u) - mu, theorem/root.hpp) about the double root u0: u* lies
 //     in u0 - F(u0)/F'(X), X = u0 +- rho, if that lies inside X (F' over X from F'(u0) and a
-//     bound on F''). lo < u* < hi are the result's ends. Degenerate pairs (m_min = 0): u* = 0.
-//  2. r_res = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u) (the theorem's sqrt(G) with
-//     t = tan u; increasing in u on (0, pi/2)) at lo and hi; theta_first = 2 (k pi + sign(m) u)/a
-//     of the first lobe, t_first = sqrt(tau sigma) theta_first and t_first/t_min_paper =
-//     theta_first b/pi at the two ends (monotone in u); t_min_paper = pi sqrt(tau sigma)/b.
+//     bound on F''): a ball U. Degenerate pairs (m_min = 0): u* = 0.
+//  2. Over U: r_res = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u) (the theorem's sqrt(G)
+//     with t = tan u); theta_first = 2 (k pi + sign(m) u)/a of the first lobe, t_first =
+//     sqrt(tau sigma) theta_first, t_first/t_min_paper = theta_first b/pi; t_min_paper =
+//     pi sqrt(tau sigma)/b.
 //     The degeneracy check's r_res > 0 and r_res^2 4 a^2 < 4 a^2 R(pi/2) (the exact integer).
 //  3. (asy-bound, x < 1/2, s = pi |m|/(2b) > 0) u_a: interval Newton on q(u) = (u - s) cos u +
 //     sin u = cos u (u + tan u - s), as in 1. Then d = u_c - u_a without cancellation: for
@@ -76,8 +76,6 @@ trig_point trig_at(const double_double& u);
 // Interval Newton: the root z of f in u0 +- rho lies in `out` = u0 - fv/dfX (fv: f(u0), dfX:
 // f' over u0 +- rho), and exists there, if `out` lies inside u0 +- rho; false otherwise.
 bool newton_enclosure(dd_ball& out, double u0, double rho, const dd_ball& fv, const dd_ball& dfX);
-// Double-double points lo <= X.m - X.r and hi >= X.m + X.r.
-bool ends_of(double_double& lo, double_double& hi, const dd_ball& X);
 
 // Step 1: F at P (mu = pi m_min/(2a)); slope, if not null, receives the ball of F' there.
 dd_ball theorem_F(const constants& K, const dd_ball& mu, const trig_point& P, dd_ball* slope);
@@ -90,7 +88,7 @@ dd_ball paper_q(const dd_ball& s, const trig_point& P, dd_ball* slope);
 bool sin_minus_y_cos(dd_ball& out, const dd_ball& y);
 bool paper_sigma(dd_ball& out, const constants& K, const dd_ball& t, const dd_ball& ua, const dd_ball& cua,
                  const double_double& d, dd_ball* slope);
-// d_lo < u_c - u_a < d_hi for s = pi |m|/(2b) > 0 (x < 1/2), proved; false if not decided.
-bool asy_d_bracket(double_double& d_lo, double_double& d_hi, const constants& K, const dd_ball& s);
+// A ball holding d = u_c - u_a > 0 for s = pi |m|/(2b) > 0 (x < 1/2), proved; false if not decided.
+bool asy_difference(dd_ball& D, const constants& K, const dd_ball& s);
 
 }  // namespace gyrores::detail::filter

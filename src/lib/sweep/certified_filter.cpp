@@ -2,8 +2,8 @@
 #include <gyrores/sweep/certified_filter.hpp>
 
 #include <array>
+#include <bit>
 #include <cmath>
-#include <limits>
 
 #include <gyrores/core/dd_ball.hpp>
 #include <gyrores/core/error.hpp>
@@ -27,8 +27,9 @@ namespace {
 struct spacing {
   double below, above;  // h - prev(h), next(h) - h (exact)
 };
-spacing spacing_of(double h) {
-  return {h - std::nextafter(h, 0.0), std::nextafter(h, std::numeric_limits<double>::infinity()) - h};
+spacing spacing_of(double h) {  // h > 0 finite: its neighbours are the adjacent bit patterns
+  const auto bits = std::bit_cast<std::uint64_t>(h);
+  return {h - std::bit_cast<double>(bits - 1), std::bit_cast<double>(bits + 1) - h};
 }
 double at_most(double c) { return c * (1 - 0x1p-52); }
 }  // namespace
@@ -99,14 +100,6 @@ bool newton_enclosure(dd_ball& out, double u0, double rho, const dd_ball& fv, co
   return std::fabs(out.m.hi - u0) * (1 + 0x1p-50) + std::fabs(out.m.lo) + out.r < rho * (1 - 0x1p-50);
 }
 
-bool ends_of(double_double& lo, double_double& hi, const dd_ball& X) {
-  // The additions' errors (3u^2 of the result) are covered by adding 2^-103 |m| to the radius.
-  const double R = ddb::up(X.r + 0x1p-103 * std::fabs(X.m.hi));
-  lo = dd::add(X.m, double_double(-R));
-  hi = dd::add(X.m, double_double(R));
-  return true;
-}
-
 // ---- step 1: u* ----
 // F(u) = x sin u cos w - cos u sin w, w = mu - x u; sign(F) = sign(H(u) - mu) on (0, pi/2), and
 // F = 0 only at u*. F' = 2x cos u cos w + (1 + x^2) sin u sin w; |F''| <= 2x (1 + x) +
@@ -137,17 +130,16 @@ bool theorem_root(dd_ball& U, const constants& K, int m_min) {
 
 // ---- step 2: the minimum's values ----
 namespace {
-// r(u) = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u), x sqrt(1-x^2) = 2 b sqrt(tau sigma)/a^2.
-bool radius_at(dd_ball& r, const dd_ball& coefficient, const constants& K, const trig_point& P) {
-  const dd_ball s2 = mul(P.s, P.s);
-  dd_ball root;
-  if (!ddb::sqrt(root, add(mul(P.c, P.c), mul(K.x2, s2)))) return false;
+// r(u) = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u), x sqrt(1-x^2) = 2 b sqrt(tau sigma)/a^2,
+// over the ball U.
+bool radius_over(dd_ball& r, const constants& K, const dd_ball& U) {
+  dd_ball s, c, coefficient, root;
+  ddb::sin_cos(U, s, c);
+  const dd_ball s2 = mul(s, s);
+  if (!ddb::sqrt(root, add(mul(c, c), mul(K.x2, s2)))) return false;
+  if (!ddb::div(coefficient, mul(scale(K.sqrt_ts, 2), exact(K.b)), exact(dd::of_int(std::int64_t(K.a) * std::int64_t(K.a)))))
+    return false;
   return ddb::div(r, mul(coefficient, s2), root);
-}
-
-// theta = 2 (k pi + u)/a for the lobe's order key k and u = sign(m) u* (a ball).
-bool theta_at(dd_ball& theta, const constants& K, double key, const dd_ball& u) {
-  return ddb::div(theta, scale(add(mul(K.pi, exact(key)), u), 2), exact(K.a));
 }
 
 struct minimum_values {
@@ -155,43 +147,29 @@ struct minimum_values {
   bool r_positive = false, r_below_R_half_pi = false;
 };
 
-bool prove_minimum(minimum_values& v, const constants& K, const resonant_pair<std::int64_t>& p, int m_min,
-                   const lobe_frame<int128>& first, int128 quarter_R_scaled, bool ratio) {
-  const std::int64_t a = std::int64_t(p.order());
-  const double key = double(lobe_order_key(first, int128(a)));
+bool prove_minimum(minimum_values& v, const constants& K, int m_min, const lobe_frame<int128>& first,
+                   int128 quarter_R_scaled, bool ratio) {
+  const double key = double(lobe_order_key(first, int128(std::int64_t(K.a))));
   dd_ball tmin;  // pi sqrt(tau sigma)/b
   if (!ddb::div(tmin, mul(K.pi, K.sqrt_ts), exact(K.b)) || !round_nearest(tmin, tmin, v.t_min_paper)) return false;
-  // theta at the bracket's ends, ordered: increasing in u for m > 0, decreasing for m < 0.
-  dd_ball th_lo, th_hi;
-  if (m_min == 0) {  // degenerate: u* = 0 exactly, r_res = 0 (the theorem's m_min = 0 lobes)
-    if (!theta_at(th_lo, K, key, exact(0.0))) return false;
-    th_hi = th_lo;
-    v.r_res = 0;
-  } else {
-    dd_ball U;
-    double_double ulo, uhi;
-    if (!theorem_root(U, K, m_min) || !ends_of(ulo, uhi, U)) return false;
-    const trig_point lo = trig_at(ulo), hi = trig_at(uhi);
-    dd_ball coefficient, r_lo, r_hi;
-    if (!ddb::div(coefficient, mul(scale(K.sqrt_ts, 2), exact(K.b)), exact(dd::of_int(std::int64_t(a * a)))))
-      return false;
-    if (!radius_at(r_lo, coefficient, K, lo) || !radius_at(r_hi, coefficient, K, hi)) return false;
-    if (!round_nearest(r_lo, r_hi, v.r_res)) return false;
-    v.r_positive = ddb::positive(r_lo);
-    // r_res^2 4 a^2 < 4 a^2 R(pi/2): the upper end's square against the exact integer.
-    const dd_ball four_a2 = exact(dd::of_int(int128(4) * a * a));
-    v.r_below_R_half_pi = ddb::positive(sub(exact(dd::of_int(quarter_R_scaled)), mul(mul(r_hi, r_hi), four_a2)));
-    const bool up = first.m > 0;
-    const dd_ball u_lo = exact(up ? lo.u : dd::neg(hi.u)), u_hi = exact(up ? hi.u : dd::neg(lo.u));
-    if (!theta_at(th_lo, K, key, u_lo) || !theta_at(th_hi, K, key, u_hi)) return false;
+  dd_ball U = exact(0.0);  // degenerate: u* = 0 exactly, r_res = 0 (the theorem's m_min = 0 lobes)
+  if (m_min != 0) {
+    dd_ball r;
+    if (!theorem_root(U, K, m_min) || !radius_over(r, K, U) || !round_nearest(r, r, v.r_res)) return false;
+    v.r_positive = ddb::positive(r);
+    // r_res^2 4 a^2 < 4 a^2 R(pi/2): the ball's square against the exact integer.
+    const dd_ball four_a2 = exact(dd::of_int(int128(4) * std::int64_t(K.a) * std::int64_t(K.a)));
+    v.r_below_R_half_pi = ddb::positive(sub(exact(dd::of_int(quarter_R_scaled)), mul(mul(r, r), four_a2)));
+    if (first.m < 0) U = ddb::neg(U);  // the lobe's minimiser is sign(m) u*
   }
-  if (!round_nearest(th_lo, th_hi, v.theta_first)) return false;
-  if (!round_nearest(mul(K.sqrt_ts, th_lo), mul(K.sqrt_ts, th_hi), v.t_first)) return false;
+  dd_ball theta;  // 2 (k pi + u)/a
+  if (!ddb::div(theta, scale(add(mul(K.pi, exact(key)), U), 2), exact(K.a))) return false;
+  if (!round_nearest(theta, theta, v.theta_first)) return false;
+  const dd_ball tf = mul(K.sqrt_ts, theta);
+  if (!round_nearest(tf, tf, v.t_first)) return false;
   if (ratio) {  // theta b/pi
-    dd_ball q_lo, q_hi;
-    const dd_ball b = exact(K.b);
-    if (!ddb::div(q_lo, mul(th_lo, b), K.pi) || !ddb::div(q_hi, mul(th_hi, b), K.pi)) return false;
-    if (!round_nearest(q_lo, q_hi, v.t_ratio)) return false;
+    dd_ball q;
+    if (!ddb::div(q, mul(theta, exact(K.b)), K.pi) || !round_nearest(q, q, v.t_ratio)) return false;
   }
   return true;
 }
@@ -279,7 +257,7 @@ bool paper_sigma(dd_ball& out, const constants& K, const dd_ball& t, const dd_ba
   return true;
 }
 
-bool asy_d_bracket(double_double& d_lo, double_double& d_hi, const constants& K, const dd_ball& s) {
+bool asy_difference(dd_ball& D, const constants& K, const dd_ball& s) {
   // u_a by interval Newton about the double root.
   double u0;
   try {
@@ -300,12 +278,11 @@ bool asy_d_bracket(double_double& d_lo, double_double& d_hi, const constants& K,
   const double d0 = sweep_asy_difference(K.x.m.hi, s.m.hi);
   if (!(d0 > 0)) return false;
   const double rho_d = 0x1p-30 * d0;
-  dd_ball g0, D;
+  dd_ball g0;
   if (!paper_sigma(g0, K, t, ua, cua, double_double(d0), &slope)) return false;
   // u <= 1.2 over d0 +- rho_d too (paper_sigma checked d0 with u_a's ball; rho_d < 2^-30).
   slope.r = ddb::up(slope.r + 50 * ddb::upper_abs(K.x) * rho_d);
-  if (!newton_enclosure(D, d0, rho_d, g0, slope)) return false;
-  return ends_of(d_lo, d_hi, D) && d_lo.hi > 0;
+  return newton_enclosure(D, d0, rho_d, g0, slope) && ddb::positive(D);
 }
 
 namespace {
@@ -328,16 +305,12 @@ bool prove_asy(asy_values& v, const constants& K, std::int64_t a, std::int64_t b
   }
   dd_ball s;  // pi |m|/(2b)
   if (!ddb::div(s, mul(K.pi, exact(double(am))), exact(2 * K.b))) return false;
-  double_double dl, dh;
-  if (!asy_d_bracket(dl, dh, K, s)) return false;
-  // The columns at d_lo and d_hi (each increasing in d).
-  const dd_ball d_lo = exact(dl), d_hi = exact(dh);
-  dd_ball e_lo, e_hi, r_lo, r_hi, c_lo, c_hi;
-  if (!ddb::div(e_lo, scale(d_lo, 2), exact(K.a)) || !ddb::div(e_hi, scale(d_hi, 2), exact(K.a))) return false;
-  if (!ddb::div(r_lo, scale(d_lo, 2), pi3x2) || !ddb::div(r_hi, scale(d_hi, 2), pi3x2)) return false;
-  if (!ddb::div(c_lo, scale(d_lo, 2), K.x2) || !ddb::div(c_hi, scale(d_hi, 2), K.x2)) return false;
-  if (!ddb::negative(sub(r_hi, exact(1.0)))) return false;  // ratio < 1: the check passes
-  return round_up(e_lo, e_hi, v.error) && round_up(r_lo, r_hi, v.ratio) && round_up(c_lo, c_hi, v.constant);
+  dd_ball D, e, r, c;
+  if (!asy_difference(D, K, s)) return false;
+  const dd_ball D2 = scale(D, 2);
+  if (!ddb::div(e, D2, exact(K.a)) || !ddb::div(r, D2, pi3x2) || !ddb::div(c, D2, K.x2)) return false;
+  if (!ddb::negative(sub(r, exact(1.0)))) return false;  // ratio < 1: the check passes
+  return round_up(e, e, v.error) && round_up(r, r, v.ratio) && round_up(c, c, v.constant);
 }
 
 }  // namespace
@@ -357,7 +330,7 @@ bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64
   const int128 quarter = sweep_quarter_R_scaled(a, b);
   const bool degenerate = p.delta_mod4() == 2;
   minimum_values mv;
-  if (!prove_minimum(mv, K, p, m_min, lobes.front(), quarter, !degenerate)) return false;
+  if (!prove_minimum(mv, K, m_min, lobes.front(), quarter, !degenerate)) return false;
   if (!degenerate && !(mv.r_positive && mv.r_below_R_half_pi)) return false;  // the check is the fallback's
   const bool has_asy = sweep_has_check(cfg.checks, sweep_check::asy_bound) && 2 * b < a;
   asy_values av;
