@@ -247,7 +247,7 @@ command_runner install_sweep(CLI::App& app) {
           show::with_default);
   sub.flag("--certified", a->certified,
            "decide degeneracy, paper-node, structure and asy-bound by exact integers and interval arithmetic "
-           "(the lattice theorem): a pass is a proof, and the rows' values are the proved enclosures' midpoints");
+           "(the lattice theorem): a pass is a proof, and the rows' values are the exact values rounded, each proved");
   sub.flag("--no-filter", a->no_filter,
            "with --certified: prove every row with MPFI alone, without the double-double filter first (the same "
            "rows, several times slower; for testing the filter)");

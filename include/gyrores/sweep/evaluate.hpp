@@ -8,8 +8,9 @@
 //      r_res, theta_first, t_first within one ulp, the paper's columns a few ulps;
 //      every other row (long double, float128, mpfr_real, --certified, and double beyond order
 //      2^31, where the int64 lobe arithmetic of theorem_minimum_double would overflow): the
-//      midpoints of the proved enclosures of sweep_prove_pair (sweep/certified.hpp) at the row's
-//      precision + 32 bits, rounded to T. Nothing in a row reads or writes Boost's process-wide
+//      exact values rounded to T, from proved enclosures of sweep_prove_pair (sweep/certified.hpp)
+//      at the row's precision + 32 bits or more; certified double rows first try the
+//      double-double filter (sweep/certified_filter.hpp), which prints the same values. Nothing in a row reads or writes Boost's process-wide
 //      MPFR precision: an mpfr_real row value carries sweep_bits<mpfr_real>(cfg) bits of its own;
 //  - the checks named in sweep_config::checks (each pass, fail, or not applicable):
 //    degeneracy  (P3) R(pi/2) = 0 iff delta = 2 mod 4, with R(pi/2) the exact integer
