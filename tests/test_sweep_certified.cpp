@@ -264,7 +264,8 @@ TEST_CASE("certified sweep: rows take their values from the enclosures, no other
     CHECK(b.t_min_paper == Approx(a.t_min_paper).epsilon(4e-16));
     CHECK(b.minimiser_count == a.minimiser_count);
     CHECK(b.status == a.status);
-    // The values are the enclosures' midpoints rounded to double.
+    // The values are the exact values rounded to double: every point of the enclosure, its
+    // midpoint too, rounds to them.
     const auto pr = sweep_prove_pair(p);
     REQUIRE(pr.minimum);
     const auto& M = *pr.minimum;

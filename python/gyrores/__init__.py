@@ -736,7 +736,7 @@ def pairs(taus, sigmas, digits=None, certified=False, checks="default", threads=
 
     digits=None: the sweep's row of each pair (the columns and values of sweep(): r_res,
     theta_first, t_first... in double, a few ulps from the exact values; certified=True: the
-    midpoints of proved enclosures and the checks decided by proofs, as ``gyrores sweep
+    exact values rounded, from proved enclosures, and the checks decided by proofs, as ``gyrores sweep
     --certified``), pairs with tau + sigma <= 2^40, on `threads` workers (0: every core) writing
     straight into the table without the GIL. digits=D: the proved values of pair(tau, sigma,
     digits=D) (tau, sigma, n, r_res, h_min, theta_first, t_first, t_min_paper, degenerate,

@@ -20,9 +20,11 @@
 //    in src/lib/sweep/certified.cpp); the bound pi^3 x^2/a, the ratio and
 //    the constant error a/x^2.
 // Precision: the enclosures start at opt.bits + 32 bits (opt.bits: the row's working precision;
-// with the asy error, 2 log2(a) + 8 more for all of them) and must be narrower than
-// 2^-(opt.bits + 8) relative, so that their midpoints, rounded to the row's type, are its values;
-// otherwise the precision doubles, up to 8 times the start. Every
+// with the asy error, 2 log2(a) + 8 more for all of them, whose difference d must be narrower
+// than 2^-(opt.bits + 8) relative). Every printed value's enclosure must round to one value at
+// opt.bits in the direction the row prints it (to nearest; the certified asy columns outward),
+// so that the row holds the exact values' roundings, whatever proved them; otherwise the
+// precision doubles, up to 8 times the start. Every
 // object carries its own precision (core/fixed_precision.hpp): nothing here reads or writes
 // Boost's process-wide default, so it runs on any number of threads.
 #pragma once
@@ -71,6 +73,7 @@ struct sweep_proof_options {
   unsigned bits = 53;       // the row's working precision (sweep_bits, evaluate.hpp)
   bool asy = false;         // also the paper's error (pairs with x < 1/2)
   bool minimisers = false;  // also every minimiser's theta, as the double nearest its midpoint
+  bool outward_asy = false; // the asy columns are printed outward (certified rows), not to nearest
 };
 
 // The minimum's enclosures, at `prec` bits.

@@ -8,8 +8,9 @@
 //      r_res, theta_first, t_first within one ulp, the paper's columns a few ulps;
 //      every other row (long double, float128, mpfr_real, --certified, and double beyond order
 //      2^31, where the int64 lobe arithmetic of theorem_minimum_double would overflow): the
-//      midpoints of the proved enclosures of sweep_prove_pair (sweep/certified.hpp) at the row's
-//      precision + 32 bits, rounded to T. Nothing in a row reads or writes Boost's process-wide
+//      exact values rounded to T, from proved enclosures of sweep_prove_pair (sweep/certified.hpp)
+//      at the row's precision + 32 bits or more; certified double rows first try the
+//      double-double filter (sweep/certified_filter.hpp), which prints the same values. Nothing in a row reads or writes Boost's process-wide
 //      MPFR precision: an mpfr_real row value carries sweep_bits<mpfr_real>(cfg) bits of its own;
 //  - the checks named in sweep_config::checks (each pass, fail, or not applicable):
 //    degeneracy  (P3) R(pi/2) = 0 iff delta = 2 mod 4, with R(pi/2) the exact integer
@@ -56,6 +57,7 @@
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/sweep/certified.hpp>
+#include <gyrores/sweep/certified_filter.hpp>
 #include <gyrores/sweep/checks.hpp>
 #include <gyrores/sweep/real_text.hpp>
 
@@ -147,6 +149,23 @@ void sweep_evaluate_double(sweep_row<double>& r, const resonant_pair<std::int64_
 // the reals from pr, and the cross-check if asked (compute_error if the minimum was not
 // proved); then the reals.
 sweep_proof_options sweep_proof_options_of(const resonant_pair<std::int64_t>& p, const sweep_config& cfg, unsigned bits);
+// Whether p's row is cross-checked (asked for, p not degenerate, order within the limit).
+bool sweep_cross_check_wanted(const resonant_pair<std::int64_t>& p, const sweep_config& cfg);
+// What the certified checks are decided from: exact integers and proved facts (from
+// sweep_prove_pair's enclosures, or from the filter's balls).
+struct sweep_proved_facts {
+  int128 quarter_R_scaled = 0;  // 4 a^2 R(pi/2)
+  int m_min = 0;
+  std::span<const lobe_frame<int128>> lobes;  // the minimisers' lobes, theta order
+  bool r_positive = false;         // r_res > 0
+  bool r_below_R_half_pi = false;  // r_res^2 <= R(pi/2)
+  bool has_asy = false;            // asked for and x < 1/2
+  bool asy_proved = false;         // its enclosures formed
+  bool asy_within_bound = false;   // error/bound <= 1
+};
+// Every field of the row but the reals and the cross-check, from f.
+void sweep_checks_from_facts(sweep_row_info& r, const resonant_pair<std::int64_t>& p, const sweep_proved_facts& f,
+                             const sweep_config& cfg);
 void sweep_checks_from_proof(sweep_row_info& r, const resonant_pair<std::int64_t>& p, const sweep_proof& pr,
                              const sweep_config& cfg);
 template <class T> void sweep_reals_from_proof(sweep_row<T>& r, const sweep_proof& pr, unsigned bits, bool certified) {
@@ -177,6 +196,10 @@ template <class T> void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair
       sweep_evaluate_double(r, p, cfg);
       return;
     }
+  }
+  if constexpr (std::is_same_v<T, double>) {
+    if (cfg.certified && cfg.certified_filter && !sweep_cross_check_wanted(p, cfg) && sweep_certified_filter(r, p, cfg))
+      return;
   }
   const unsigned bits = sweep_bits<T>(cfg);
   const sweep_proof pr = sweep_prove_pair(p, sweep_proof_options_of(p, cfg, bits));

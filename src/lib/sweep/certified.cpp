@@ -26,12 +26,17 @@ int cos_quarter(std::int64_t k) {
   return t[int_mod(k, std::int64_t(8))];
 }
 
-// The relative width every value must reach: its midpoint then rounds to the row's type.
+// The relative width the asy error's difference must reach before its quotients are formed.
 int narrow_bits(const sweep_proof_options& opt) { return int(opt.bits) + 8; }
 
-// X narrow enough, or exactly zero.
-bool narrow_or_zero(const fixed_mpfi& X, const sweep_proof_options& opt) {
-  return (mpfr_zero_p(X.left()) && mpfr_zero_p(X.right())) || fixed_narrow(X, narrow_bits(opt));
+// Every point of X rounds to the same value at opt.bits in direction rnd (exactly zero counts):
+// the row then prints the exact value's rounding, whichever enclosure proved it (the certified
+// filter, sweep/certified_filter.hpp, prints the same).
+bool rounds_alike(const fixed_mpfi& X, const sweep_proof_options& opt, mpfr_rnd_t rnd) {
+  fixed_mpfr lo(mpfr_prec_t(opt.bits)), hi(mpfr_prec_t(opt.bits));
+  mpfr_set(lo, X.left(), rnd);
+  mpfr_set(hi, X.right(), rnd);
+  return mpfr_equal_p(lo, hi) != 0;
 }
 
 // The minimum at K's precision (header comment); false if a step is not proved or too wide.
@@ -48,12 +53,15 @@ bool prove_minimum_at(sweep_proof& pr, sweep_minimum_enclosure& M, const theorem
   }
   auto big_frame = [](const lobe_frame<int128>& f) { return lobe_frame<big_int>{to_big(f.k), to_big(f.j), to_big(f.m)}; };
   minimiser_theta(M.theta_first, K, a, big_frame(pr.lobes.front()), z.U);
-  if (!narrow_or_zero(M.r_res, opt) || !narrow_or_zero(M.theta_first, opt)) return false;
   mpfi_mul(M.t_first, M.theta_first, K.sqrt_ts);
   mpfi_mul(M.t_min_paper, K.pi, K.sqrt_ts);
   mpfi_div(M.t_min_paper, M.t_min_paper, K.b);
   mpfi_mul(M.t_ratio, M.theta_first, K.b);
   mpfi_div(M.t_ratio, M.t_ratio, K.pi);
+  // The printed values (t_ratio only for non-degenerate pairs), to nearest.
+  for (const fixed_mpfi* X : {&M.r_res, &M.theta_first, &M.t_first, &M.t_min_paper})
+    if (!rounds_alike(*X, opt, MPFR_RNDN)) return false;
+  if (pr.m_min != 0 && !rounds_alike(M.t_ratio, opt, MPFR_RNDN)) return false;
   if (opt.minimisers) {
     fixed_mpfi th(K.prec);
     fixed_mpfr mid(K.prec);
@@ -109,7 +117,12 @@ bool prove_asy_at(sweep_asy_enclosure& E, const theorem_constants& K, std::int64
   mpfi_div(E.ratio, E.error, E.bound);
   mpfi_mul_2ui(E.constant, d, 1);
   mpfi_div(E.constant, E.constant, K.x2);
-  return true;
+  // Printed to nearest (uncertified wide rows) or outward (certified rows: bound downward).
+  const bool up = opt.outward_asy;
+  return rounds_alike(E.error, opt, up ? MPFR_RNDU : MPFR_RNDN) &&
+         rounds_alike(E.bound, opt, up ? MPFR_RNDD : MPFR_RNDN) &&
+         rounds_alike(E.ratio, opt, up ? MPFR_RNDU : MPFR_RNDN) &&
+         rounds_alike(E.constant, opt, up ? MPFR_RNDU : MPFR_RNDN);
 }
 
 void add_note(std::string& note, const std::string& what) { note += std::string(note.empty() ? "" : "; ") + what; }

@@ -29,11 +29,6 @@ void set_status(sweep_row_info& r, sweep_check c, bool ok) {
   r.status[int(c)] = ok ? sweep_status::pass : sweep_status::fail;
 }
 
-bool cross_check_wanted(const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
-  return sweep_has_check(cfg.checks, sweep_check::cross_check) && !p.degenerate() &&
-         std::int64_t(p.order()) <= cfg.cross_check_max_order;
-}
-
 // P5 (non-degenerate pairs): first_at_paper_node, paper_lobe_min and, if asked, the verdict,
 // from the minimisers' lobes k (in [0, a), theta order): alpha = k pi + u with |u| < pi/2.
 void check_paper_node(sweep_row_info& r, const resonant_pair<std::int64_t>& p, std::span<const std::int64_t> ks,
@@ -49,6 +44,34 @@ void check_paper_node(sweep_row_info& r, const resonant_pair<std::int64_t>& p, s
   if (check) set_status(r, sweep_check::paper_node, r.paper_lobe_min == 1);
 }
 
+// P7 in double (x < 1/2): the columns of the row as the header comment defines them.
+void check_asy_double(sweep_row<double>& r, std::int64_t a, std::int64_t b) {
+  const auto node = paper_fast_node(a, b);  // the smaller k on a tie
+  const std::int64_t m = a - 2 * node.k * b, am = m < 0 ? -m : m;
+  const double x = double(b) / double(a), x2 = x * x, pi3 = pi * pi * pi;
+  const double d = am == 0 ? 0.0 : sweep_asy_difference(x, pi * double(am) / double(2 * b));
+  r.has_asy = true;
+  r.asy_constant = 2 * (d / x2);
+  r.asy_error = r.asy_constant * x2 / double(a);
+  r.asy_bound = pi3 * x2 / double(a);
+  r.asy_ratio = r.asy_constant / pi3;
+  set_status(r, sweep_check::asy_bound, r.asy_ratio <= 1);
+}
+
+// P3 in double: R(pi/2) from the exact integer 4 a^2 R(pi/2), against delta mod 4 and r_res.
+void check_degeneracy_double(sweep_row_info& r, const resonant_pair<std::int64_t>& p, double r_res) {
+  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+  const int128 N = sweep_quarter_R_scaled(a, b);
+  const bool degenerate = p.delta_mod4() == 2;
+  bool ok = (N == 0) == degenerate;
+  if (ok) ok = degenerate ? r_res == 0 : r_res > 0 && sweep_r_below_quarter_R(p, r_res, N);
+  set_status(r, sweep_check::degeneracy, ok);
+  if (!ok)
+    add_note(r.note, "degeneracy: 4 a^2 R(pi/2) = " + to_decimal(N) + ", r_res = " + sweep_double_text(r_res));
+}
+
+}  // namespace
+
 // u_c - u_a >= 0 in the paper's lobe with s = pi |m|/(2b) > 0, x < 1/2, in double, without
 // cancellation (it is O(x^2 u^3) against u). f(u) = u + arctan(x tan u)/x - s has the root u_c
 // and f' = 1 + (1 + tan^2 u)/(1 + x^2 tan^2 u) >= 2; with t = tan u_a = s - u_a, f(u_a) = -D,
@@ -57,7 +80,7 @@ void check_paper_node(sweep_row_info& r, const resonant_pair<std::int64_t>& p, s
 // with t' = tan(u_a + d) and Dt = t' - t = sin d/(cos u_a cos(u_a + d)) (no difference of
 // tangents is formed), from d = D/f'(u_a); g' = f'(u_a + d), |g''| < 4. Once a step is below
 // 2^-26 d the next error is below 2^-52 d.
-double asy_difference(double x, double s) {
+double sweep_asy_difference(double x, double s) {
   // u_a to about an ulp: paper_root_double's 4 ulps, then one Newton step on u + tan u - s (its
   // residual is accurate to an ulp of s, and 1/(2 + t^2) < 1/2 of it moves u).
   double ua = paper_root_double(s);
@@ -92,33 +115,10 @@ double asy_difference(double x, double s) {
                       ", s = " + std::to_string(s) + ")");
 }
 
-// P7 in double (x < 1/2): the columns of the row as the header comment defines them.
-void check_asy_double(sweep_row<double>& r, std::int64_t a, std::int64_t b) {
-  const auto node = paper_fast_node(a, b);  // the smaller k on a tie
-  const std::int64_t m = a - 2 * node.k * b, am = m < 0 ? -m : m;
-  const double x = double(b) / double(a), x2 = x * x, pi3 = pi * pi * pi;
-  const double d = am == 0 ? 0.0 : asy_difference(x, pi * double(am) / double(2 * b));
-  r.has_asy = true;
-  r.asy_constant = 2 * (d / x2);
-  r.asy_error = r.asy_constant * x2 / double(a);
-  r.asy_bound = pi3 * x2 / double(a);
-  r.asy_ratio = r.asy_constant / pi3;
-  set_status(r, sweep_check::asy_bound, r.asy_ratio <= 1);
+bool sweep_cross_check_wanted(const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
+  return sweep_has_check(cfg.checks, sweep_check::cross_check) && !p.degenerate() &&
+         std::int64_t(p.order()) <= cfg.cross_check_max_order;
 }
-
-// P3 in double: R(pi/2) from the exact integer 4 a^2 R(pi/2), against delta mod 4 and r_res.
-void check_degeneracy_double(sweep_row_info& r, const resonant_pair<std::int64_t>& p, double r_res) {
-  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
-  const int128 N = sweep_quarter_R_scaled(a, b);
-  const bool degenerate = p.delta_mod4() == 2;
-  bool ok = (N == 0) == degenerate;
-  if (ok) ok = degenerate ? r_res == 0 : r_res > 0 && sweep_r_below_quarter_R(p, r_res, N);
-  set_status(r, sweep_check::degeneracy, ok);
-  if (!ok)
-    add_note(r.note, "degeneracy: 4 a^2 R(pi/2) = " + to_decimal(N) + ", r_res = " + sweep_double_text(r_res));
-}
-
-}  // namespace
 
 bool sweep_double_path(const resonant_pair<std::int64_t>& p) { return p.order() < (int128(1) << 31); }
 
@@ -160,49 +160,64 @@ void sweep_evaluate_double(sweep_row<double>& r, const resonant_pair<std::int64_
     if (!ok) add_note(r.note, "structure: the theorem's lobes do not check");
   }
   if (sweep_has_check(ck, sweep_check::asy_bound) && 2 * b < a) check_asy_double(r, a, b);
-  if (cross_check_wanted(p, cfg)) sweep_cross_check(r, p, M.r_res, std::span(M.minimisers.data(), M.count));
+  if (sweep_cross_check_wanted(p, cfg)) sweep_cross_check(r, p, M.r_res, std::span(M.minimisers.data(), M.count));
 }
 
 sweep_proof_options sweep_proof_options_of(const resonant_pair<std::int64_t>& p, const sweep_config& cfg, unsigned bits) {
   sweep_proof_options o;
   o.bits = bits;
   o.asy = sweep_has_check(cfg.checks, sweep_check::asy_bound);
-  o.minimisers = cross_check_wanted(p, cfg);
+  o.minimisers = sweep_cross_check_wanted(p, cfg);
+  o.outward_asy = cfg.certified;
   return o;
+}
+
+void sweep_checks_from_facts(sweep_row_info& r, const resonant_pair<std::int64_t>& p, const sweep_proved_facts& f,
+                             const sweep_config& cfg) {
+  const auto& ck = cfg.checks;
+  const bool degenerate = p.delta_mod4() == 2;
+  r.minimiser_count = int(f.lobes.size());
+  if (!degenerate) {
+    r.has_ratio = true;
+    std::array<std::int64_t, 4> ks{};
+    for (std::size_t i = 0; i < f.lobes.size() && i < ks.size(); ++i) ks[i] = std::int64_t(f.lobes[i].k);
+    check_paper_node(r, p, std::span(ks.data(), f.lobes.size()), sweep_has_check(ck, sweep_check::paper_node));
+  }
+  if (sweep_has_check(ck, sweep_check::degeneracy)) {
+    // P3: R(pi/2) = 0 exactly iff delta = 2 mod 4; r_res = 0 there by the theorem (m_min = 0),
+    // else 0 < r_res <= sqrt(R(pi/2)) from the enclosure.
+    bool ok = (f.quarter_R_scaled == 0) == degenerate;
+    if (ok) ok = degenerate ? f.m_min == 0 : f.r_positive && f.r_below_R_half_pi;
+    set_status(r, sweep_check::degeneracy, ok);
+    if (!ok) add_note(r.note, "degeneracy: 4 a^2 R(pi/2) = " + to_decimal(f.quarter_R_scaled));
+  }
+  if (sweep_has_check(ck, sweep_check::structure)) {
+    const bool ok = sweep_lobes_hold<int128>(p, f.m_min, f.lobes);
+    set_status(r, sweep_check::structure, ok);
+    if (!ok) add_note(r.note, "structure: the theorem's lobes do not check");
+  }
+  if (sweep_has_check(ck, sweep_check::asy_bound) && f.has_asy) {
+    r.has_asy = f.asy_proved;
+    set_status(r, sweep_check::asy_bound, f.asy_proved && f.asy_within_bound);
+  }
 }
 
 void sweep_checks_from_proof(sweep_row_info& r, const resonant_pair<std::int64_t>& p, const sweep_proof& pr,
                              const sweep_config& cfg) {
   if (!pr.minimum) throw compute_error(p.str() + ": " + pr.note);
-  const auto& ck = cfg.checks;
   const auto& M = *pr.minimum;
-  const bool degenerate = p.delta_mod4() == 2;
   if (!pr.note.empty()) add_note(r.note, pr.note);
-  r.minimiser_count = int(pr.lobes.size());
-  if (!degenerate) {
-    r.has_ratio = true;
-    std::array<std::int64_t, 4> ks{};
-    for (std::size_t i = 0; i < pr.lobes.size() && i < ks.size(); ++i) ks[i] = std::int64_t(pr.lobes[i].k);
-    check_paper_node(r, p, std::span(ks.data(), pr.lobes.size()), sweep_has_check(ck, sweep_check::paper_node));
-  }
-  if (sweep_has_check(ck, sweep_check::degeneracy)) {
-    // P3: R(pi/2) = 0 exactly iff delta = 2 mod 4; r_res = 0 there by the theorem (m_min = 0),
-    // else 0 < r_res <= sqrt(R(pi/2)) from the enclosure.
-    bool ok = (pr.quarter_R_scaled == 0) == degenerate;
-    if (ok) ok = degenerate ? pr.m_min == 0 : mpfr_sgn(M.r_res.left()) > 0 && pr.r_below_R_half_pi;
-    set_status(r, sweep_check::degeneracy, ok);
-    if (!ok) add_note(r.note, "degeneracy: 4 a^2 R(pi/2) = " + to_decimal(pr.quarter_R_scaled));
-  }
-  if (sweep_has_check(ck, sweep_check::structure)) {
-    const bool ok = sweep_lobes_hold<int128>(p, pr.m_min, pr.lobes);
-    set_status(r, sweep_check::structure, ok);
-    if (!ok) add_note(r.note, "structure: the theorem's lobes do not check");
-  }
-  if (sweep_has_check(ck, sweep_check::asy_bound) && pr.has_asy) {
-    r.has_asy = pr.asy != nullptr;
-    set_status(r, sweep_check::asy_bound, pr.asy && mpfr_cmp_ui(pr.asy->ratio.right(), 1) <= 0);
-  }
-  if (cross_check_wanted(p, cfg)) {
+  sweep_proved_facts f;
+  f.quarter_R_scaled = pr.quarter_R_scaled;
+  f.m_min = pr.m_min;
+  f.lobes = pr.lobes;
+  f.r_positive = mpfr_sgn(M.r_res.left()) > 0;
+  f.r_below_R_half_pi = pr.r_below_R_half_pi;
+  f.has_asy = pr.has_asy;
+  f.asy_proved = pr.asy != nullptr;
+  f.asy_within_bound = pr.asy && mpfr_cmp_ui(pr.asy->ratio.right(), 1) <= 0;
+  sweep_checks_from_facts(r, p, f, cfg);
+  if (sweep_cross_check_wanted(p, cfg)) {
     fixed_mpfr mid(M.prec);
     mpfi_mid(mid, M.r_res);
     sweep_cross_check(r, p, mpfr_get_d(mid, MPFR_RNDN), std::span(M.minimisers.data(), pr.lobes.size()));
