@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 #include <string>
 
 #include <gyrores/core/decimal.hpp>
@@ -49,6 +51,72 @@ TEST_CASE("format_scientific: correctly rounded in each direction", "[core][deci
   CHECK(gyrores::digits_settled(third, mpfr_real("1e-40"), 30));
   CHECK_FALSE(gyrores::digits_settled(mpfr_real("0.125"), mpfr_real("1e-3"), 4));
   CHECK(gyrores::digits_settled(mpfr_real(0), mpfr_real(1), 10));
+}
+
+// The directed roundings are formed by integers (core/decimal.cpp); MPFR's mpfr_get_str is the
+// independent reference, over random values of every size and the hard spots: exact decimals,
+// powers of ten and their binary neighbours (where the exponent estimate is off by one and a
+// rounding up carries into a new digit), runs of nines.
+std::string mpfr_reference_text(mpfr_srcptr v, unsigned n, mpfr_rnd_t rnd) {
+  mpfr_exp_t e = 0;
+  char* raw = mpfr_get_str(nullptr, &e, 10, n, v, rnd);
+  std::string s(raw);
+  mpfr_free_str(raw);
+  const bool neg = s[0] == '-';
+  if (neg) s.erase(0, 1);
+  if (mpfr_zero_p(v)) return gyrores::scientific_text(false, s, 0);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "e%c%02ld", e - 1 < 0 ? '-' : '+', std::labs(long(e) - 1));
+  return (neg ? "-" : "") + s.substr(0, 1) + (n > 1 ? "." + s.substr(1) : "") + buf;
+}
+
+TEST_CASE("format_scientific: directed roundings equal MPFR's", "[core][decimal]") {
+  gmp_randstate_t rs;
+  gmp_randinit_default(rs);
+  gmp_randseed_ui(rs, 20261127);
+  std::mt19937_64 gen(7);
+  long checks = 0;
+  auto check_all = [&](mpfr_srcptr v, unsigned n) {
+    for (mpfr_rnd_t r : {MPFR_RNDD, MPFR_RNDU, MPFR_RNDZ, MPFR_RNDA}) {
+      const std::string got = gyrores::format_scientific(v, n, r), want = mpfr_reference_text(v, n, r);
+      if (got != want) FAIL_CHECK(got << " != " << want << " (" << n << " digits, rounding " << int(r) << ")");
+      ++checks;
+    }
+  };
+  for (int i = 0; i < 3000; ++i) {
+    const mpfr_prec_t prec = 2 + mpfr_prec_t(gen() % (i % 10 == 0 ? 4000 : 300));
+    mpfr_t v;
+    mpfr_init2(v, prec);
+    mpfr_urandomb(v, rs);
+    if (mpfr_zero_p(v)) mpfr_set_ui(v, 1, MPFR_RNDN);
+    mpfr_mul_2si(v, v, long(gen() % 4001) - 2000, MPFR_RNDN);
+    if (gen() % 2) mpfr_neg(v, v, MPFR_RNDN);
+    check_all(v, 1 + unsigned(gen() % (i % 10 == 0 ? 1300 : 60)));
+    mpfr_clear(v);
+  }
+  for (long j = -40; j <= 40; ++j) {
+    for (mpfr_prec_t prec : {24, 53, 200}) {
+      mpfr_t p, w;
+      mpfr_inits2(prec, p, w, (mpfr_ptr)nullptr);
+      mpfr_set_si(p, j, MPFR_RNDN);
+      mpfr_exp10(p, p, MPFR_RNDN);  // 10^j rounded: exact for 0 <= j <= 10 at 24 bits
+      for (int s = -3; s <= 3; ++s) {
+        mpfr_set(w, p, MPFR_RNDN);
+        for (int t = 0; t < std::abs(s); ++t) s < 0 ? mpfr_nextbelow(w) : mpfr_nextabove(w);
+        for (unsigned n : {1u, 2u, 7u, 30u}) check_all(w, n);
+      }
+      mpfr_clears(p, w, (mpfr_ptr)nullptr);
+    }
+  }
+  for (const char* text : {"9.99999", "0.125", "999", "1e-5", "0.0999999999", "12345e300", "-7.5e-300"}) {
+    mpfr_t v;
+    mpfr_init2(v, 120);
+    mpfr_set_str(v, text, 10, MPFR_RNDN);
+    for (unsigned n = 1; n <= 8; ++n) check_all(v, n);
+    mpfr_clear(v);
+  }
+  gmp_randclear(rs);
+  CHECK(checks > 10000);
 }
 
 TEST_CASE("decimal input: integers and exact rationals", "[core][decimal]") {

@@ -57,16 +57,66 @@ _FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then mo
 _DECIMAL_TEXT = _re.compile(r"^-?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$|^-?(?:inf|nan)$")
 
 
+# The keys pair() fills on first access: the paper's asymptotics and the precision that decided
+# the report with them (their guard bits raise it). They cost most of a call (the lobes' roots and
+# their conversion) and most callers read r_res, theta_first, t_first.
+_LAZY_PAIR_KEYS = ("r_res_asy", "r_res_asy_rel_error", "asymptotic", "bits")
+
+
 class PairResult(Result):
     """What gyrores reports about one resonant pair: the fields of ``gyrores pair --json``.
 
     A Result (``r.r_res`` or ``r["r_res"]``), in the CLI's order; with ``enclosures=True`` also
-    ``r.enclosures``, the same keys with Intervals (lobes under ``asymptotic_lobes``).
+    ``r.enclosures``, the same keys with Intervals (lobes under ``asymptotic_lobes``). The
+    asymptotics (``asymptotic``, ``r_res_asy``, ``r_res_asy_rel_error``) and ``bits`` are
+    computed on first access (of them, or of the whole dict: iteration, ``dict(r)``, ``==``,
+    JSON, copies), with the values and key order an eager computation gives.
     """
+
+    def _complete(self):
+        """Fill the lazy keys (once): the report with the asymptotics, in the CLI's key order."""
+        fill = self.__dict__.pop("_lazy", None)
+        if fill is None:
+            return
+        full = fill()
+        have = dict(dict.items(self))
+        dict.clear(self)
+        for k, v in full.items():  # the returned objects of the eager keys stay the same objects
+            dict.__setitem__(self, k, v if k in _LAZY_PAIR_KEYS or k not in have else have[k])
+
+    def __getitem__(self, key):
+        if key in _LAZY_PAIR_KEYS:
+            self._complete()
+        return dict.__getitem__(self, key)
+
+    def get(self, key, default=None):
+        if key in _LAZY_PAIR_KEYS:
+            self._complete()
+        return dict.get(self, key, default)
+
+    def __contains__(self, key):
+        return (key in _LAZY_PAIR_KEYS and "_lazy" in self.__dict__) or dict.__contains__(self, key)
+
+    def __eq__(self, other):
+        self._complete()
+        if isinstance(other, PairResult):
+            other._complete()
+        return dict.__eq__(self, other)
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    __hash__ = None
+
+    def __dir__(self):
+        return list(object.__dir__(self)) + [k for k in dict.__iter__(self) if isinstance(k, str)] + [
+            k for k in _LAZY_PAIR_KEYS if "_lazy" in self.__dict__]
 
     def to_dict(self, raw=False):
         """The fields as a plain dict; ``raw=True``: exactly the JSON of ``gyrores pair --json`` at
-        the call's digits (reals as decimal strings; computed again when digits <= 15)."""
+        the call's digits (reals as decimal strings; computed again when digits <= 15 or when the
+        asymptotics were not read yet)."""
         if not raw:
             return dict(self)
         return self.__dict__["_raw_source"]()
@@ -74,8 +124,29 @@ class PairResult(Result):
     def __repr__(self):
         shown = ", ".join(f"{k}={_short(self[k])}" for k in ("r_res", "theta_first", "t_first", "n"))
         return (f"PairResult(tau={_short(self['tau'])}, sigma={_short(self['sigma'])}, {shown}, "
-                f"minimisers={len(self['minimisers'])}, "
+                f"minimisers={len(dict.__getitem__(self, 'minimisers'))}, "
                 f"degenerate={self['degenerate']}, digits={self['digits']}, proved by {self['theorem']})")
+
+
+def _completing(name):
+    """dict's method `name`, after the lazy keys are filled (everything that shows all keys)."""
+    method = getattr(dict, name)
+
+    def call(self, *args, **kwargs):
+        self._complete()
+        return method(self, *args, **kwargs)
+
+    call.__name__ = name
+    call.__doc__ = method.__doc__
+    return call
+
+
+# __iter__ overridden also makes dict(r) and {**r} go through keys() (CPython takes the storage
+# directly only when tp_iter is dict's); json.dumps calls items() on a dict subclass.
+for _name in ("__iter__", "__len__", "__reversed__", "keys", "values", "items", "copy", "pop", "popitem",
+              "setdefault", "update", "clear", "__setitem__", "__delitem__", "__or__", "__ror__", "__ior__"):
+    setattr(PairResult, _name, _completing(_name))
+del _name
 
 
 def _short(value):
@@ -229,22 +300,26 @@ def _intervals(enclosures, digits):
     return walk(enclosures)
 
 
-def _proved_pair(tau, sigma, digits, qdot0, enclosures, function):
-    """The JSON of `gyrores pair` converted: floats decided by enclosures, or mpf."""
+def _proved_pair(tau, sigma, digits, qdot0, enclosures, function, asymptotics=True):
+    """The JSON of `gyrores pair` converted: floats decided by enclosures, or mpf. Without the
+    asymptotics (asymptotics=False) its `asymptotic`, `r_res_asy`, `r_res_asy_rel_error` and
+    `bits` are not the CLI's; the raw source computes them."""
     t = _args.integer(tau, function, "tau")
     s = _args.integer(sigma, function, "sigma")
     d = _args.bounded(digits, function, "digits", 1, 10000)
     q = _args.rational(qdot0, function, "qdot0")
     enclosures = _args.flag(enclosures, function, "enclosures")
     if d > _DOUBLE_DIGITS:
-        raw = _gyrores._pair(t, s, d, q, enclosures)
+        raw = _gyrores._pair(t, s, d, q, enclosures, asymptotics)
         out = _convert({k: v for k, v in raw.items() if k != "enclosures"}, _real(d))
         if enclosures:
             out["enclosures"] = _hull_with_values(_intervals(raw["enclosures"], d), out)
+        if not asymptotics:
+            return out, lambda: _gyrores._pair(t, s, d, q, enclosures)
         return out, lambda: _copy.deepcopy(raw)
     asked = _FLOAT_SOURCE_DIGITS
     while True:
-        raw = _gyrores._pair(t, s, asked, q, True)
+        raw = _gyrores._pair(t, s, asked, q, True, asymptotics)
         try:
             out = _pair_floats(raw)
             break
@@ -269,11 +344,23 @@ def pair(tau, sigma, digits=17, qdot0=1, enclosures=False):
     double of the exact value; beyond, an mpmath.mpf, the correct rounding to `digits` digits.
     qdot0: the impulse amplitude > 0 (a rational: int, float, Fraction, Decimal, mpf, "1/4").
     enclosures: also ``r.enclosures``, an Interval holding each real (outward).
-    Returns a PairResult; raises UsageError / ComputeError; Ctrl-C stops it.
+    Returns a PairResult; raises UsageError / ComputeError; Ctrl-C stops it. The paper's
+    asymptotics (``asymptotic``, ``r_res_asy``, ``r_res_asy_rel_error``) and ``bits`` are computed
+    when first read (at once with ``enclosures=True``), with the same values.
     """
-    out, raw = _proved_pair(tau, sigma, digits, qdot0, enclosures, "pair")
+    if (isinstance(enclosures, bool) or type(enclosures).__name__ == "bool_") and enclosures:
+        # Eager: the enclosures of every real depend on the precision, which the asymptotics'
+        # guard bits raise; with them asked for, the report is computed once, as the CLI's.
+        out, raw = _proved_pair(tau, sigma, digits, qdot0, enclosures, "pair")
+        result = PairResult(out)
+        result.__dict__["_raw_source"] = raw
+        return result
+    out, raw = _proved_pair(tau, sigma, digits, qdot0, enclosures, "pair", asymptotics=False)
+    for key in _LAZY_PAIR_KEYS:
+        out.pop(key, None)
     result = PairResult(out)
     result.__dict__["_raw_source"] = raw
+    result.__dict__["_lazy"] = lambda: _proved_pair(tau, sigma, digits, qdot0, False, "pair")[0]
     return result
 
 

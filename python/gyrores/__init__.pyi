@@ -29,6 +29,11 @@ class PairResult(Result):
     t_first: Real
     minimisers: Tuple[Real, ...]
     digits: int
+    # Computed on first access (pair() leaves them out of the first computation), same values:
+    asymptotic: Result
+    r_res_asy: Optional[Real]
+    r_res_asy_rel_error: Optional[Real]
+    bits: int
     def to_dict(self, raw: bool = ...) -> dict: ...
 
 class CheckResult(Result):

@@ -1,7 +1,8 @@
 // gyrores.pair and gyrores.asymptotics: the proved report of theorem/pair_report.hpp (prove_pair)
 // as the dict of `gyrores pair --json` (same keys, same order, reals as decimal strings, each the
 // correct rounding of a proved enclosure; gyrores/__init__.py converts them), with the
-// enclosures when asked.
+// enclosures when asked, without the asymptotics when told (gyrores.pair computes them on
+// first access).
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/theorem/pair_report.hpp>
 
@@ -11,9 +12,11 @@
 namespace gyrores::python {
 namespace {
 
-pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures) {
+pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures,
+                     bool asymptotics = true) {
   pair_report_options opt;
   opt.enclosures = enclosures;
+  opt.asymptotics = asymptotics;
   opt.digits = checked_digits(digits, 1, report_digits_max);
   opt.qdot0 = qdot0;
   return run_interruptible<pair_report>([p, opt](stop_token stop) mutable {
@@ -23,9 +26,9 @@ pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const st
 }
 
 py::object pair_dict(const py::object& tau, const py::object& sigma, long long digits, const std::string& qdot0,
-                     bool enclosures) {
+                     bool enclosures, bool asymptotics) {
   const auto p = pair_of(tau, sigma);
-  return to_python(pair_report_json(p, run_pair(p, digits, qdot0, enclosures), enclosures));
+  return to_python(pair_report_json(p, run_pair(p, digits, qdot0, enclosures, asymptotics), enclosures));
 }
 
 py::object asymptotics_dict(const py::object& tau, const py::object& sigma, long long digits) {
@@ -40,9 +43,11 @@ py::object asymptotics_dict(const py::object& tau, const py::object& sigma, long
 
 void bind_pair(py::module_& m) {
   m.def("_pair", &pair_dict, py::arg("tau"), py::arg("sigma"), py::arg("digits"), py::arg("qdot0"),
-        py::arg("enclosures"),
+        py::arg("enclosures"), py::arg("asymptotics") = true,
         "The dict of `gyrores pair --json` (reals as decimal strings, each the correct rounding of a proved "
-        "enclosure), with the enclosures when asked. Use gyrores.pair.");
+        "enclosure), with the enclosures when asked. asymptotics=False skips the paper's asymptotics (and their "
+        "guard bits): `asymptotic`, `r_res_asy`, `r_res_asy_rel_error` and `bits` are then not those of the "
+        "CLI; gyrores.pair fills them on first access. Use gyrores.pair.");
   m.def("_asymptotics", &asymptotics_dict, py::arg("tau"), py::arg("sigma"), py::arg("digits"),
         "The `asymptotic` object of `gyrores pair --json` with r_res_asy, r_res_asy_rel_error and digits "
         "(qdot0 = 1). Use gyrores.asymptotics.");

@@ -107,3 +107,43 @@ def test_asymptotics_match_the_pair_report(cli_json):
 def test_asymptotics_not_applicable_for_large_x():
     a = gyrores.asymptotics(3, 1, digits=10)  # x = b/a = 1/2
     assert not a["applicable"] and a["r_res_asy"] is None and a["reason"]
+
+
+# pair() computes the asymptotics (and bits) on first access; everything a caller can read must
+# be what the eager computation (_proved_pair with the asymptotics, the path of enclosures=True
+# and of the CLI) gives, in the same key order.
+@pytest.mark.parametrize("tau, sigma, digits, qdot0", [
+    (6, 5, 15, 1), (6, 5, 17, 1), (6, 5, 30, 3), (2, 1, 12, 1), (3, 1, 20, 1), (11, 9, 25, 1),
+    (10**12 + 1, 10**12, 20, "1/4"),
+])
+def test_lazy_asymptotics_equal_the_eager_ones(tau, sigma, digits, qdot0):
+    import copy
+    import json
+    import pickle
+    eager, _ = gyrores._proved_pair(tau, sigma, digits, qdot0, False, "pair")
+    r = gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0)
+    # Reading the values most callers read computes nothing more.
+    assert (r.r_res, r["theta_first"], r.get("t_first"), r.minimisers) == (
+        eager["r_res"], eager["theta_first"], eager["t_first"], eager["minimisers"])
+    assert "asymptotic" in r and "bits" in r and "lattice-theorem/1" in repr(r) and "r_res_asy" in dir(r)
+    assert "_lazy" in r.__dict__
+    assert r.asymptotic == eager["asymptotic"] and r["bits"] == eager["bits"]
+    assert r.get("r_res_asy") == eager["r_res_asy"] and r.r_res_asy_rel_error == eager["r_res_asy_rel_error"]
+    assert "_lazy" not in r.__dict__
+    assert list(r.keys()) == list(eager.keys()) and r == eager
+    # Every way of seeing the whole dict fills it first, in the eager order.
+    for view in (lambda x: list(dict(x).items()), lambda x: list(x.items()), lambda x: list(x),
+                 lambda x: list(copy.deepcopy(x).items()), lambda x: list(pickle.loads(pickle.dumps(x)).items()),
+                 lambda x: list({**x}.items()), lambda x: len(x)):
+        want = view(eager)
+        if isinstance(want, dict):
+            want = list(want.items())
+        got = view(gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0))
+        assert (list(got.items()) if isinstance(got, dict) else got) == want
+    assert gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0) == eager
+    assert gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0).to_dict() == dict(eager)
+    if digits <= 15:
+        assert json.dumps(gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0)) == json.dumps(eager)
+    # With the enclosures the report is computed at once, as before.
+    e = gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0, enclosures=True)
+    assert "_lazy" not in e.__dict__ and e.asymptotic == eager["asymptotic"] and e.bits == eager["bits"]

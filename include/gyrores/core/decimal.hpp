@@ -2,8 +2,8 @@
 //
 // real_to_mpfr: exact conversion of any supported real into an mpfr_real (no rounding: the
 // target carries the bits of the source, whatever Boost's default precision). format_scientific:
-// correctly rounded scientific notation with D significant digits, by MPFR, to nearest by
-// default or in a given direction (outward ends of enclosures). digits_settled: Ziv's test:
+// correctly rounded scientific notation with D significant digits, to nearest by default (by
+// MPFR) or in a given direction (outward ends of enclosures; exactly, by integers). digits_settled: Ziv's test:
 // given a value known to within a relative error e, the D-digit rounding is certain only if both
 // ends of [v(1-e), v(1+e)] round to the same string. parse_big_int, real_from_decimal: decimal
 // input. Nothing here reads or writes Boost's process-wide default precision (core/real.hpp), so
