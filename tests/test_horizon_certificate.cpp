@@ -272,8 +272,8 @@ TEST_CASE("first time below a level: every field tampered is refused, naming it"
     std::vector<std::tuple<std::string, std::string, tamper>> t;
     auto add = [&](std::string what, std::string names, tamper f) { t.emplace_back(std::move(what), std::move(names), std::move(f)); };
     add("level / 2", "", [](json& j) {
-      const big_rational E = parse_rational(j["below"]["level"].get<std::string>(), "E");
-      j["below"]["level"] = rational_str(E == 0 ? big_rational(1, 1000) : E / 2);
+      const big_rational level = parse_rational(j["below"]["level"].get<std::string>(), "E");
+      j["below"]["level"] = rational_str(level == 0 ? big_rational(1, 1000) : level / 2);
     });
     add("case changed", "below.case",
         [](json& j) { j["below"]["case"] = j["below"]["case"] == "never" ? "lobe" : "never"; });

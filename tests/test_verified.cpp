@@ -13,12 +13,6 @@
 
 using namespace gyrores;
 
-namespace {
-
-resonant_pair<big_int> big_pair(std::int64_t t, std::int64_t s) { return resonant_pair<big_int>(big_int(t), big_int(s)); }
-
-}  // namespace
-
 TEST_CASE("verified digits: the precision plan follows the digits asked", "[verified]") {
   CHECK(plan_for_digits(11, false).kind == real_kind::f64);
   CHECK(plan_for_digits(11, false).bits == 53);
