@@ -80,6 +80,40 @@ TEST_CASE("double_double: sin and cos within 2^-63 for |x| < 2", "[double_double
   WARN("worst sin error " << worst_s << " x 2^-63 |sin x|, cos " << worst_c << " x 2^-63");
 }
 
+TEST_CASE("double_double: the first quadrant's sin and cos within 2^-63 for 0 <= x <= 3/2", "[double_double]") {
+  // dd_sin_cos_first_quadrant (the theorem root's Newton step) on the same kinds of arguments:
+  // random double-doubles with a full low part (its first-order term), the table's points and
+  // just below them (d near 2^-7), and tiny ones.
+  const sin_cos_table& table = dd_sin_cos_table();
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1.5), sign(-1, 1), tiny(-40, 0);
+  double worst_s = 0, worst_c = 0;
+  for (int i = 0; i < 40000; ++i) {
+    double_double x;
+    if (i % 4 == 3) x = dd::two_sum(std::pow(2.0, tiny(rng)), 0);
+    else if (i % 4 == 2) x = dd::two_sum(std::nextafter(std::ceil(unit(rng) * 128) / 128, 0), 0x1p-54 * sign(rng));
+    else x = dd::two_sum(unit(rng), 0x1p-53 * sign(rng));
+    x = dd::fast_two_sum(x.hi, x.lo);
+    if (x.hi < 0 || x.hi > 1.5) continue;
+    double_double s, c;
+    dd_sin_cos_first_quadrant(table, x, s, c);
+    REQUIRE(std::fabs(s.lo) <= 0x1p-53 * std::fabs(s.hi));  // normalised
+    REQUIRE(std::fabs(c.lo) <= 0x1p-53 * std::fabs(c.hi));
+    mp X(x), S, C;
+    mpfr_sin_cos(S, C, X, MPFR_RNDN);
+    const double es = error_in(s, S, 0x1p-63 * std::fabs(mpfr_get_d(S, MPFR_RNDN)));
+    const double ec = error_in(c, C, 0x1p-63);
+    worst_s = std::max(worst_s, es);
+    worst_c = std::max(worst_c, ec);
+    INFO("x = " << x.hi << " + " << x.lo);
+    REQUIRE(es <= 1);
+    REQUIRE(ec <= 1);
+  }
+  CHECK(worst_s > 0x1p-30);
+  CHECK(worst_c > 0x1p-30);
+  WARN("first quadrant: worst sin error " << worst_s << " x 2^-63 |sin x|, cos " << worst_c << " x 2^-63");
+}
+
 TEST_CASE("double_double: the arithmetic's error bounds", "[double_double]") {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0.5, 2);

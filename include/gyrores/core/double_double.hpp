@@ -11,7 +11,9 @@
 // <= 15u^2 + 56u^3), and sqrt by one Newton step from the double square root (relative error
 // below 4u^2). Nothing here rounds to a chosen mode or reads global state; inputs are finite.
 #pragma once
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include <gyrores/core/integer.hpp>
@@ -127,5 +129,47 @@ inline constexpr double_double pi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
 // double_double.cpp: a table of sin, cos at the multiples of 2^-7, formed once in MPFR, and
 // Taylor polynomials of the rest d, |d| < 2^-7).
 void dd_sin_cos(const double_double& x, double_double& s, double_double& c);
+
+// That table: s[i], c[i] are the double-double roundings of sin(i/128), cos(i/128) (relative
+// error <= 2^-106), i < 256. Formed on first use (thread-safe), then shared.
+struct sin_cos_table {
+  std::array<double_double, 256> s, c;
+  sin_cos_table();
+};
+const sin_cos_table& dd_sin_cos_table();
+
+// sin and cos of x = x.hi + x.lo, 0 <= x.hi <= 3/2, |x.lo| <= ulp(x.hi)/2, from the table t
+// (= dd_sin_cos_table()): sin within 2^-63 |sin x|, cos within 2^-63, as normalised double-doubles;
+// inlined and about a quarter of dd_sin_cos's cost (it forms one double-double sum where
+// dd_sin_cos forms four products and two sums). With c = i/128 <= x.hi < c + 2^-7 (i <= 192, so
+// S = sin c >= 0, C = cos c > 0) and d = x.hi - c (exact: Sterbenz's lemma for i >= 1),
+//   sin x.hi = S + C d - S g + C d p,   cos x.hi = C - S d - C g - S d p,
+// g = 1 - cos d = d^2/2 - d^4/24 + d^6/720 (next term < 2^-71.3), p = sin d/d - 1 = -d^2/6 +
+// d^4/120 - d^6/5040 (next < 2^-74.5), both in double from e = d^2 (relative errors about 4u,
+// u = 2^-53: |g| < 2^-15 and |p| < 2^-16.5 are then within 2^-65.9 and 2^-67.3). C d and S d are
+// exact products (two_prod) and S + C d, C - S d exact sums (two_sum); the low parts of the
+// table, the products and the sums, -S g + C d p (or -C g - S d p) and the first-order term of
+// x.lo (cos x.hi x.lo, -sin x.hi x.lo, with the approximations C - S d and S + C d, within
+// 2^-14.4 of them; x.lo^2 < 2^-104 x.hi^2) are added in double: seven terms of total size below
+// 2^-14.9 M, M = S + C d (sine) or C + S d (cosine), so their sum is within 6u 2^-14.9 M. In all,
+// within 2^-64.2 M; for the sine M <= (1 + 2^-14.9) sin x.hi (cos d >= 1 - 2^-15, sin d >=
+// d (1 - 2^-16.5), all terms >= 0) and x.hi <= (pi/2) sin x.hi, for the cosine M <= 1 + 2^-7.
+// The final fast_two_sums are exact (the low sums are below 2^-14 of the high parts: cos x.hi >=
+// cos(3/2) > 2^-4). (tests/test_double_double.cpp checks both against MPFR.)
+GYRORES_DD_INLINE void dd_sin_cos_first_quadrant(const sin_cos_table& t, const double_double& x, double_double& s,
+                                                double_double& c) {
+  const int i = int(x.hi * 128);
+  const double d = x.hi - i * 0x1p-7, e = d * d;
+  const double g = e * (0.5 - e * (1.0 / 24 - e * (1.0 / 720)));
+  const double dp = d * (e * (-1.0 / 6 + e * (1.0 / 120 - e * (1.0 / 5040))));  // d p
+  const double_double& S = t.s[std::size_t(i)];
+  const double_double& C = t.c[std::size_t(i)];
+  const double_double cd = dd::two_prod(C.hi, d), sd = dd::two_prod(S.hi, d);
+  const double_double sh = dd::two_sum(S.hi, cd.hi), ch = dd::two_sum(C.hi, -sd.hi);
+  const double s_lo = sh.lo + cd.lo + S.lo + C.lo * d + (C.hi * dp - S.hi * g) + (C.hi - sd.hi) * x.lo;
+  const double c_lo = ch.lo - sd.lo + C.lo - S.lo * d - (C.hi * g + S.hi * dp) - (S.hi + cd.hi) * x.lo;
+  s = dd::fast_two_sum(sh.hi, s_lo);
+  c = dd::fast_two_sum(ch.hi, c_lo);
+}
 
 }  // namespace gyrores

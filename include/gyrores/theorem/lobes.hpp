@@ -103,14 +103,14 @@ template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
 // -t is k of the pass frame, (2j+1) a - 2 k b = m_min, 0 < k < ah (k = 0 would need ah = 1).
 // The mirror (a - k) and, for m_min = 2, the shift (k + a/2) and its mirror (a/2 - k) then lie
 // in [0, a) already, and their order follows from 2k < ah or not (2k = ah is impossible: ah
-// odd). usage_error if Euclid's gcd is not 1 (tau, sigma not coprime).
-template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
-  lobe_list<L> out;
+// odd). usage_error if Euclid's gcd is not 1 (tau, sigma not coprime). Written into `out`, with
+// their count returned (the double path's minimum keeps them in its own array: no copy).
+template <class L> std::size_t minimiser_lobes_euclid_into(const L& a, const L& b, std::array<lobe_frame<L>, 4>& out) {
   const int m = theorem_m_min(a);
   if (m == 0) {
-    out.push_back({L(a / 4), L((b - 2) / 4), L(0)});
-    out.push_back({L(3 * (a / 4)), L((3 * b - 2) / 4), L(0)});
-    return out;
+    out[0] = {L(a / 4), L((b - 2) / 4), L(0)};
+    out[1] = {L(3 * (a / 4)), L((3 * b - 2) / 4), L(0)};
+    return 2;
   }
   const L ah = m == 1 ? a : L(a / 2), d = m == 1 ? L(2 * b) : b;
   L r0 = d, r1 = ah, s0 = 0, s1 = 1, t0 = 1, t1 = 0;  // r = s ah + t d throughout
@@ -129,16 +129,23 @@ template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
   const lobe_frame<L> mirror{L(a - pass.k), L(b - 1 - pass.j), L(-m)};
   const bool pass_first = 2 * pass.k < ah;
   if (m == 1) {
-    out.push_back(pass_first ? pass : mirror);
-    out.push_back(pass_first ? mirror : pass);
-    return out;
+    out[0] = pass_first ? pass : mirror;
+    out[1] = pass_first ? mirror : pass;
+    return 2;
   }
   const lobe_frame<L> shift{L(pass.k + a / 2), L(pass.j + b / 2), L(m)};
   const lobe_frame<L> shift_mirror{L(a / 2 - pass.k), L(b / 2 - 1 - pass.j), L(-m)};
-  out.push_back(pass_first ? pass : shift_mirror);
-  out.push_back(pass_first ? shift_mirror : pass);
-  out.push_back(pass_first ? shift : mirror);
-  out.push_back(pass_first ? mirror : shift);
+  out[0] = pass_first ? pass : shift_mirror;
+  out[1] = pass_first ? shift_mirror : pass;
+  out[2] = pass_first ? shift : mirror;
+  out[3] = pass_first ? mirror : shift;
+  return 4;
+}
+template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
+  std::array<lobe_frame<L>, 4> frames{};
+  lobe_list<L> out;
+  const std::size_t n = minimiser_lobes_euclid_into(a, b, frames);
+  for (std::size_t i = 0; i < n; ++i) out.push_back(frames[i]);
   return out;
 }
 

@@ -41,19 +41,25 @@ namespace gyrores {
 // if it does not converge); accurate to about an ulp. compute_error if neither converges.
 double theorem_root_double(double x, double mu);
 
-// u* = H^{-1}(mu) as a double-double, with sin u* and cos u*: Newton in double from the upper
-// end mu/(2x) (H is convex), then Newton steps in double-double on the equivalent equation
+// u* = H^{-1}(mu) as a double-double, with sin u* and cos u*: a start from two expansions of H
+// (src/lib/theorem/root.cpp theorem_root_start; within 2^-37 u* for b >= 25, or b = 1 and
+// a >= 32), Newton steps in double on tan(H(u) - mu) (no arctangent) from the others, then
+// Newton steps in double-double on the equivalent equation
 //   F(u) = x sin u cos w - cos u sin w = 0,   w = mu - x u,
 // (for 0 < u < pi/2 and 0 < mu < pi/2, |w| < pi/2 and F = cos u cos w (x tan u - tan w) has the
 // sign of H(u) - mu), F' = 2x cos u cos w + (1 + x^2) sin u sin w, which is x (cos w/cos u +
-// cos u/cos w) >= 2x at the root. Both terms of F are about x sin u there (cos u > 0.19: x tan u* =
-// tan w <= tan(pi/a) for mu <= pi/a), and each is formed from the sines and cosines of
-// core/double_double.hpp to a relative error below 2^-61 (w itself to 2^-100: w >= mu/2 near
-// the root), so a step's error is below 2^-60 x sin u/(2x) < 2^-61 u. Steps repeat until one is
-// below 2^-35 u (Newton's quadratic term is then below 2^-68 u). The result is within 2^-60 u*
-// of it, and sin u*, cos u* within 2^-60 of theirs; sin w at the returned u within 2^-62 of
-// sin(w(u)) (dd_sin_cos's 2^-63 and the first-order step), so within 2^-59.7 of sin w*
-// (|w(u) - w*| = x |u - u*| <= 2^-60 x u* <= 2^-60 w*). compute_error after 4 steps (u0 far off).
+// cos u/cos w) >= 2x at the root (and >= 1.22x on the bracket: u* <= pi m/(4b) <= pi/4 and w <=
+// mu <= pi/6). Both terms of F are about x sin u there, each formed to a relative error below
+// 2^-61.7 (root.cpp newton_step_table: the sines and cosines of core/double_double.hpp
+// dd_sin_cos_first_quadrant and double-double products; for u, w < 2^-7 newton_step_small,
+// Taylor polynomials alone, to 2^-63 x u), so a step's error is below 2^-60.7 x sin u/(2x) <=
+// 2^-61.3 u (sin u <= u, and the denominator's x cos u cos w is met by tan u <= (4/pi) u).
+// Steps repeat until one is below 2^-35 u (Newton's quadratic term is then below (1 + x^2) tan u
+// 2^-70 u^2 <= 2^-68 u: |F''/(2F')| <= (1 + x^2) tan u near the root). The result is within
+// 2^-61 u* of it, and sin u*, cos u* within 2^-60 of theirs (first-order steps, second-order
+// terms below 2^-70 u); sin w at the returned u within 2^-62 of sin(w(u)), so within 2^-59.7 of
+// sin w* (|w(u) - w*| = x |u - u*| <= 2^-61 x u* <= 2^-61 w*, as x u* <= mu/2 <= w*).
+// compute_error after 4 double-double steps (never seen: one suffices for every pair tested).
 // Preconditions (not checked): x = b/a and mu = pi m/(2a) of a pair, m = 1 or 2 (m_min).
 struct root_double_double {
   double_double u, sin_u, cos_u, sin_w;  // sin_w: sin(mu - x u)

@@ -17,32 +17,31 @@
 
 #include <mpfr.h>
 
-#include <array>
-
 namespace gyrores {
 namespace {
 
 constexpr int table_size = 256;  // c_i = i/128 for |x| < 2
 
-struct sin_cos_table {
-  std::array<double_double, table_size> s, c;
-  sin_cos_table() {
-    mpfr_t v, sn, cs, r;
-    mpfr_inits2(192, v, sn, cs, r, static_cast<mpfr_ptr>(nullptr));
-    auto to_dd = [&](mpfr_srcptr a) {
-      const double hi = mpfr_get_d(a, MPFR_RNDN);
-      mpfr_sub_d(r, a, hi, MPFR_RNDN);
-      return double_double(hi, mpfr_get_d(r, MPFR_RNDN));
-    };
-    for (int i = 0; i < table_size; ++i) {
-      mpfr_set_si_2exp(v, i, -7, MPFR_RNDN);  // exact
-      mpfr_sin_cos(sn, cs, v, MPFR_RNDN);
-      s[std::size_t(i)] = to_dd(sn);
-      c[std::size_t(i)] = to_dd(cs);
-    }
-    mpfr_clears(v, sn, cs, r, static_cast<mpfr_ptr>(nullptr));
+}  // namespace
+
+sin_cos_table::sin_cos_table() {
+  mpfr_t v, sn, cs, r;
+  mpfr_inits2(192, v, sn, cs, r, static_cast<mpfr_ptr>(nullptr));
+  auto to_dd = [&](mpfr_srcptr a) {
+    const double hi = mpfr_get_d(a, MPFR_RNDN);
+    mpfr_sub_d(r, a, hi, MPFR_RNDN);
+    return double_double(hi, mpfr_get_d(r, MPFR_RNDN));
+  };
+  for (int i = 0; i < table_size; ++i) {
+    mpfr_set_si_2exp(v, i, -7, MPFR_RNDN);  // exact
+    mpfr_sin_cos(sn, cs, v, MPFR_RNDN);
+    s[std::size_t(i)] = to_dd(sn);
+    c[std::size_t(i)] = to_dd(cs);
   }
-};
+  mpfr_clears(v, sn, cs, r, static_cast<mpfr_ptr>(nullptr));
+}
+
+namespace {
 
 // Formed on first use (thread-safe static initialisation): about 0.3 ms, once per process.
 const sin_cos_table& table() {
@@ -51,6 +50,8 @@ const sin_cos_table& table() {
 }
 
 }  // namespace
+
+const sin_cos_table& dd_sin_cos_table() { return table(); }
 
 GYRORES_DD_FAST void dd_sin_cos(const double_double& x, double_double& s, double_double& c) {
   const bool negative = x.hi < 0;

@@ -1,8 +1,6 @@
 // include/gyrores/theorem/minimum.hpp: the theorem's minimum in double and as enclosures.
 #include <gyrores/theorem/minimum.hpp>
 
-#include <type_traits>
-
 #include <gyrores/core/double_double.hpp>
 #include <gyrores/core/error.hpp>
 
@@ -11,7 +9,7 @@ namespace gyrores {
 namespace {
 
 // The double path for a pair held in machine integers I (int64 for orders below 2^62, int128
-// below 2^120; tau sigma as int128 or, for I = int128, in double-double).
+// below 2^120).
 //
 // Error budget (each quantity in double-double, then rounded once to a double): 1/a and x = b/a
 // are within 2^-104 relative for a < 2^53 (dd::quotient of exact doubles) and within 2^-98
@@ -27,15 +25,13 @@ namespace {
 template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& tau, const I& sigma) {
   const I a = I(tau + sigma), b = I(tau - sigma);
   minimum_double_of<I> out;
+  out.count = minimiser_lobes_euclid_into(a, b, out.lobes);
   out.m_min = theorem_m_min(a);
-  const bool small = a < (I(1) << 53);  // a and b are exact doubles
+  const bool small = a < (I(1) << 53);  // a, b, tau and sigma are exact doubles
   const double_double inv_a = small ? dd::quotient(1, double(a)) : dd::div(1.0, dd::of_int(a));
-  double_double ts;  // tau sigma: one rounding of the exact int128 product, or a double-double product
-  if constexpr (std::is_same_v<I, std::int64_t>) ts = dd::of_int(int128(tau) * sigma);
-  else ts = dd::mul(dd::of_int(tau), dd::of_int(sigma));
+  // tau sigma: exact (two_prod of exact doubles), or a double-double product (7u^2).
+  const double_double ts = small ? dd::two_prod(double(tau), double(sigma)) : dd::mul(dd::of_int(tau), dd::of_int(sigma));
   const double_double sqrt_ts = dd::sqrt(ts);
-  const lobe_list<I> lobes = minimiser_lobes_euclid(a, b);
-  for (const auto& f : lobes) out.lobes[out.count++] = f;
   if (out.m_min == 0) {  // r_res = 0 at theta = pi/2 and 3 pi/2 (correctly rounded: pi's double halved)
     const double_double half_pi = dd::scale(dd::pi, 0.5);
     out.theta_first = half_pi.hi;
@@ -58,7 +54,7 @@ template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& ta
   out.r_res = dd::mul(s1, dd::mul(r.sin_u, r.sin_w)).hi;
   // theta = 2 (k pi + sign(m) u*)/a (k of the first lobe; k >= 1, so k pi - u* > pi/2) and
   // t_first = sqrt(tau sigma) theta = (k pi + sign(m) u*) sqrt(1 - x^2).
-  const lobe_frame<I>& first = lobes.front();
+  const lobe_frame<I>& first = out.lobes[0];
   const double_double k_pi = dd::mul(dd::of_int(first.k), dd::pi);
   const double_double arc = dd::add(k_pi, first.m < 0 ? dd::neg(u) : u);
   out.theta_first = dd::mul(arc, two_over_a).hi;
@@ -66,7 +62,7 @@ template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& ta
   // The other minimisers: plain doubles (a few ulps).
   out.minimisers[0] = out.theta_first;
   for (std::size_t i = 1; i < out.count; ++i) {
-    const lobe_frame<I>& f = lobes[i];
+    const lobe_frame<I>& f = out.lobes[i];
     out.minimisers[i] = (double(f.k) * dd::pi.hi + (f.m < 0 ? -u.hi : u.hi)) * two_over_a.hi;
   }
   return out;
