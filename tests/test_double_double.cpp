@@ -141,6 +141,23 @@ TEST_CASE("double_double: the arithmetic's error bounds", "[double_double]") {
   CHECK(int128(b.hi) + int128(b.lo) == big);
 }
 
+TEST_CASE("double_double: integers exactly below 2^106, within 2^-106 (1 + 2^-20) below 2^126", "[double_double]") {
+  std::mt19937_64 rng(13);
+  for (int i = 0; i < 20000; ++i) {
+    const int bits = 1 + int(rng() % 125);
+    const auto raw = (static_cast<unsigned __int128>(rng()) << 64) | rng();
+    int128 v = int128(raw >> (128 - bits));
+    if (i % 3 == 0) v = -v;
+    const double_double x = dd::of_int(v);
+    INFO("bits " << bits << ", v = " << to_big(v).str());
+    REQUIRE(std::fabs(x.lo) <= 0.5 * (std::nextafter(std::fabs(x.hi), INFINITY) - std::fabs(x.hi)));  // normalised
+    // hi and lo are integers here (|lo| >= 1 or 0), so the integer sum is the value.
+    const big_int sum = to_big(int128(x.hi)) + to_big(int128(x.lo)), err = abs(sum - to_big(v));
+    if (bits <= 106) REQUIRE(err == 0);
+    else REQUIRE(err.convert_to<double>() <= 0x1p-106 * (1 + 0x1p-20) * std::fabs(x.hi));
+  }
+}
+
 TEST_CASE("double_double: u* of theorem_root_refined within 2^-60 of the root, sin w* within 2^-59.7", "[double_double]") {
   // The root by bisection in MPFR at 200 bits on x u + atan(x tan u) = pi m/(2a).
   std::mt19937_64 rng(5);

@@ -110,10 +110,19 @@ GYRORES_DD_INLINE double_double sqrt(const double_double& x) {
   return fast_two_sum(s, r.hi / (2 * s));
 }
 
-// An integer |v| < 2^126: exactly up to 106 bits, else to 2^-106 relative.
+// An integer |v| < 2^126: exactly up to 106 bits, else to 2^-106 (1 + 2^-20) relative. By 64-bit
+// conversions only (the C library's int128 ones are calls of about 25 instructions): |v| = H 2^64
+// + L1 2^32 + L0 (L1, L0 < 2^32), h = H rounded to a double (|H - h| <= 2^9 for H < 2^62), then
+// (H - h) 2^64 + L1 2^32 is an exact double (42 bits), two_sum adds it to h 2^64 exactly, and the
+// low part plus L0 is exact unless |v| >= 2^106 (integers below 2^53), where its rounding is below
+// 2^-53 (ulp(hi)/2 + 2^32). The last fast_two_sum is exact.
 GYRORES_DD_INLINE double_double of_int(int128 v) {
-  const double hi = double(v);
-  return fast_two_sum(hi, double(v - int128(hi)));
+  if (v < 0) return neg(of_int(int128(-v)));
+  const auto L = std::uint64_t(v);
+  const auto H = std::int64_t(v >> 64);
+  const double h = double(H);
+  const double_double s = two_sum(h * 0x1p64, double(H - std::int64_t(h)) * 0x1p64 + double(std::int64_t(L >> 32)) * 0x1p32);
+  return fast_two_sum(s.hi, s.lo + double(std::int64_t(L & 0xffffffffu)));
 }
 GYRORES_DD_INLINE double_double of_int(std::int64_t v) {
   if (v < (std::int64_t(1) << 53) && v > -(std::int64_t(1) << 53)) return {double(v), 0};

@@ -63,7 +63,8 @@ template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& ta
   out.minimisers[0] = out.theta_first;
   for (std::size_t i = 1; i < out.count; ++i) {
     const lobe_frame<I>& f = out.lobes[i];
-    out.minimisers[i] = (double(f.k) * dd::pi.hi + (f.m < 0 ? -u.hi : u.hi)) * two_over_a.hi;
+    const double k = small ? double(f.k) : dd::of_int(f.k).hi;  // (no int128 conversion call)
+    out.minimisers[i] = (k * dd::pi.hi + (f.m < 0 ? -u.hi : u.hi)) * two_over_a.hi;
   }
   return out;
 }
