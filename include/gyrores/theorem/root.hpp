@@ -48,12 +48,12 @@ double theorem_root_double(double x, double mu);
 //   F(u) = x sin u cos w - cos u sin w = 0,   w = mu - x u,
 // (for 0 < u < pi/2 and 0 < mu < pi/2, |w| < pi/2 and F = cos u cos w (x tan u - tan w) has the
 // sign of H(u) - mu), F' = 2x cos u cos w + (1 + x^2) sin u sin w, which is x (cos w/cos u +
-// cos u/cos w) >= 2x at the root (and >= 1.22x on the bracket: u* <= pi m/(4b) <= pi/4 and w <=
-// mu <= pi/6). Both terms of F are about x sin u there, each formed to a relative error below
-// 2^-61.7 (root.cpp newton_step_table: the sines and cosines of core/double_double.hpp
-// dd_sin_cos_first_quadrant and double-double products; for u, w < 2^-7 newton_step_small,
-// Taylor polynomials alone, to 2^-63 x u), so a step's error is below 2^-60.7 x sin u/(2x) <=
-// 2^-61.3 u (sin u <= u, and the denominator's x cos u cos w is met by tan u <= (4/pi) u).
+// cos u/cos w) >= 2x at the root and >= 2x cos u cos w everywhere. Both terms of F are about
+// x sin u cos w near the root, each formed to a relative error below 2^-61.7 (root.cpp
+// newton_step_table: the sines and cosines of core/double_double.hpp dd_sin_cos_first_quadrant
+// and double-double products; for u, w < 2^-7 newton_step_small, Taylor polynomials alone, to
+// 2^-63 x u), so a step's error is below 2^-60.7 x sin u cos w/(2x cos u cos w) = 2^-61.7 tan u
+// <= 2^-61.3 u (tan u <= (4/pi) u for the steps' u <= mu/(2x) = pi m/(4b) <= pi/4).
 // Steps repeat until one is below 2^-35 u (Newton's quadratic term is then below (1 + x^2) tan u
 // 2^-70 u^2 <= 2^-68 u: |F''/(2F')| <= (1 + x^2) tan u near the root). The result is within
 // 2^-61 u* of it, and sin u*, cos u* within 2^-60 of theirs (first-order steps, second-order

@@ -12,7 +12,8 @@ namespace {
 // below 2^120).
 //
 // Error budget (each quantity in double-double, then rounded once to a double): 1/a and x = b/a
-// are within 2^-104 relative for a < 2^53 (dd::quotient of exact doubles) and within 2^-98
+// are within 2^-104 and 2^-103 relative for a < 2^53 (dd::quotient of exact doubles, then one mul
+// by the exact b, <= 2u^2) and within 2^-98
 // above (a and b converted with relative error <= 2^-106, core/double_double.hpp of_int, then
 // one div <= 15u^2 + 56u^3 and one mul <= 7u^2, u = 2^-53), mu = pi m/(2a) within 2^-97. The root
 // u* moves by at most the relative perturbation of mu plus that of x: H(0) = 0 and H convex
@@ -39,7 +40,7 @@ template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& ta
     out.minimisers = {half_pi.hi, dd::mul(dd::pi, 1.5).hi};
     return out;
   }
-  const double_double x = small ? dd::quotient(double(b), double(a)) : dd::mul(inv_a, dd::of_int(b));
+  const double_double x = small ? dd::mul(inv_a, double(b)) : dd::mul(inv_a, dd::of_int(b));
   const double_double mu = dd::scale(dd::mul(dd::pi, inv_a), 0.5 * out.m_min);
   const root_double_double r = theorem_root_refined(x, mu);
   const double_double& u = r.u;

@@ -163,7 +163,9 @@ GYRORES_DD_INLINE bool newton_step_small(const double_double& x, const double_do
 }  // namespace
 
 GYRORES_DD_FAST root_double_double theorem_root_refined(const double_double& x, const double_double& mu) {
-  const double lo = mu.hi / (1 + x.hi), hi = mu.hi / (2 * x.hi);
+  // The root's bracket, widened below (u* >= mu/(1 + x) > mu/2; no division): the steps stay in
+  // it, so w = mu - x u >= mu/2 > 0.
+  const double lo = 0.5 * mu.hi, hi = mu.hi / (2 * x.hi);
   const root_start start = theorem_root_start(x.hi, hi);
   double u = std::clamp(start.u, lo, hi);
   root_double_double out;
