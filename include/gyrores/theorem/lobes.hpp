@@ -105,7 +105,8 @@ template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
 // in [0, a) already, and their order follows from 2k < ah or not (2k = ah is impossible: ah
 // odd). usage_error if Euclid's gcd is not 1 (tau, sigma not coprime). Written into `out`, with
 // their count returned (the double path's minimum keeps them in its own array: no copy).
-template <class L> std::size_t minimiser_lobes_euclid_into(const L& a, const L& b, std::array<lobe_frame<L>, 4>& out) {
+template <class L>
+[[gnu::always_inline]] inline std::size_t minimiser_lobes_euclid_into(const L& a, const L& b, std::array<lobe_frame<L>, 4>& out) {
   const int m = theorem_m_min(a);
   if (m == 0) {
     out[0] = {L(a / 4), L((b - 2) / 4), L(0)};
