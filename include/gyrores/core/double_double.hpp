@@ -129,3 +129,13 @@ inline constexpr double_double pi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
 void dd_sin_cos(const double_double& x, double_double& s, double_double& c);
 
 }  // namespace gyrores
+
+namespace gyrores {
+
+// sin and cos of x, |x| < 2, to about 2^-101: sin within 2^-101 |sin x|, cos within 2^-101
+// (absolute), for the certified sweep's balls (core/dd_ball.hpp). The same reduction and table
+// as dd_sin_cos, with the Taylor polynomials' leading terms in double-double (proof in src/lib/
+// core/double_double.cpp, above the definition). About twice dd_sin_cos's cost.
+void dd_sin_cos_accurate(const double_double& x, double_double& s, double_double& c);
+
+}  // namespace gyrores
