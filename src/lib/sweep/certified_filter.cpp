@@ -2,8 +2,12 @@
 #include <gyrores/sweep/certified_filter.hpp>
 
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
 
 #include <gyrores/core/dd_ball.hpp>
 #include <gyrores/core/error.hpp>
@@ -18,6 +22,40 @@ using ddb::exact;
 using ddb::mul;
 using ddb::scale;
 using ddb::sub;
+
+// ---- why a pair went to the fallback ----
+// Counted per outcome and printed to stderr at exit when the environment sets
+// GYRORES_FILTER_STATS: a diagnostic for tuning the filter; it changes no row.
+namespace {
+enum class outcome : int {
+  proved, out_of_range, constants, t_min_paper, root, r_res, theta_first, t_first, t_ratio,
+  degeneracy_check, asy_bound, asy_difference, asy_columns, count
+};
+constexpr const char* outcome_names[] = {"proved",      "out of range", "constants",        "t_min_paper",
+                                         "u*",          "r_res",        "theta_first",      "t_first",
+                                         "t_ratio",     "degeneracy check", "asy bound",    "asy difference",
+                                         "asy columns"};
+static_assert(std::size(outcome_names) == std::size_t(outcome::count));
+
+struct outcome_counts {
+  const bool enabled = std::getenv("GYRORES_FILTER_STATS") != nullptr;
+  std::array<std::atomic<std::uint64_t>, std::size_t(outcome::count)> n{};
+  ~outcome_counts() {
+    if (!enabled) return;
+    std::uint64_t total = 0;
+    for (const auto& c : n) total += c.load();
+    std::fprintf(stderr, "certified filter: %llu pairs, %llu to the fallback\n", (unsigned long long)total,
+                 (unsigned long long)(total - n[0].load()));
+    for (std::size_t i = 1; i < n.size(); ++i)
+      if (n[i].load() != 0) std::fprintf(stderr, "  %-18s %llu\n", outcome_names[i], (unsigned long long)n[i].load());
+  }
+};
+outcome_counts counts;
+
+void record(outcome o) {
+  if (counts.enabled) counts.n[std::size_t(o)].fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
 
 // ---- the rounding of a value v known to lie in [A.m - A.r, B.m + B.r] (both ends positive) ----
 // With h = A.m.hi = B.m.hi and v = h + e, |e| small: v rounds to h (to nearest) iff e lies in
@@ -147,15 +185,17 @@ struct minimum_values {
   bool r_positive = false, r_below_R_half_pi = false;
 };
 
-bool prove_minimum(minimum_values& v, const constants& K, int m_min, const lobe_frame<int128>& first,
-                   int128 quarter_R_scaled, bool ratio) {
+outcome prove_minimum(minimum_values& v, const constants& K, int m_min, const lobe_frame<int128>& first,
+                      int128 quarter_R_scaled, bool ratio) {
   const double key = double(lobe_order_key(first, int128(std::int64_t(K.a))));
   dd_ball tmin;  // pi sqrt(tau sigma)/b
-  if (!ddb::div(tmin, mul(K.pi, K.sqrt_ts), exact(K.b)) || !round_nearest(tmin, tmin, v.t_min_paper)) return false;
+  if (!ddb::div(tmin, mul(K.pi, K.sqrt_ts), exact(K.b)) || !round_nearest(tmin, tmin, v.t_min_paper))
+    return outcome::t_min_paper;
   dd_ball U = exact(0.0);  // degenerate: u* = 0 exactly, r_res = 0 (the theorem's m_min = 0 lobes)
   if (m_min != 0) {
     dd_ball r;
-    if (!theorem_root(U, K, m_min) || !radius_over(r, K, U) || !round_nearest(r, r, v.r_res)) return false;
+    if (!theorem_root(U, K, m_min)) return outcome::root;
+    if (!radius_over(r, K, U) || !round_nearest(r, r, v.r_res)) return outcome::r_res;
     v.r_positive = ddb::positive(r);
     // r_res^2 4 a^2 < 4 a^2 R(pi/2): the ball's square against the exact integer.
     const dd_ball four_a2 = exact(dd::of_int(int128(4) * std::int64_t(K.a) * std::int64_t(K.a)));
@@ -163,15 +203,16 @@ bool prove_minimum(minimum_values& v, const constants& K, int m_min, const lobe_
     if (first.m < 0) U = ddb::neg(U);  // the lobe's minimiser is sign(m) u*
   }
   dd_ball theta;  // 2 (k pi + u)/a
-  if (!ddb::div(theta, scale(add(mul(K.pi, exact(key)), U), 2), exact(K.a))) return false;
-  if (!round_nearest(theta, theta, v.theta_first)) return false;
+  if (!ddb::div(theta, scale(add(mul(K.pi, exact(key)), U), 2), exact(K.a)) ||
+      !round_nearest(theta, theta, v.theta_first))
+    return outcome::theta_first;
   const dd_ball tf = mul(K.sqrt_ts, theta);
-  if (!round_nearest(tf, tf, v.t_first)) return false;
+  if (!round_nearest(tf, tf, v.t_first)) return outcome::t_first;
   if (ratio) {  // theta b/pi
     dd_ball q;
-    if (!ddb::div(q, mul(theta, exact(K.b)), K.pi) || !round_nearest(q, q, v.t_ratio)) return false;
+    if (!ddb::div(q, mul(theta, exact(K.b)), K.pi) || !round_nearest(q, q, v.t_ratio)) return outcome::t_ratio;
   }
-  return true;
+  return outcome::proved;
 }
 
 }  // namespace
@@ -291,26 +332,27 @@ struct asy_values {
   double error = 0, bound = 0, ratio = 0, constant = 0;
 };
 
-bool prove_asy(asy_values& v, const constants& K, std::int64_t a, std::int64_t b) {
+outcome prove_asy(asy_values& v, const constants& K, std::int64_t a, std::int64_t b) {
   const auto node = paper_fast_node(a, b);  // the smaller k on a tie
   const std::int64_t m = a - 2 * node.k * b, am = m < 0 ? -m : m;
   // bound = pi^3 x^2/a and pi^3 x^2 (the ratio's divisor).
   const dd_ball pi3x2 = mul(mul(mul(K.pi, K.pi), K.pi), K.x2);
   dd_ball bound;
-  if (!ddb::div(bound, pi3x2, exact(K.a)) || !round_down(bound, bound, v.bound)) return false;
+  if (!ddb::div(bound, pi3x2, exact(K.a)) || !round_down(bound, bound, v.bound)) return outcome::asy_bound;
   if (am == 0) {  // s = 0: u_c = u_a = 0, every column 0; as the fallback prints the upper end of
     // MPFI's [0, 0], which MPFI holds as [+0, -0]: "-0"
     v.error = v.ratio = v.constant = -0.0;
-    return true;
+    return outcome::proved;
   }
   dd_ball s;  // pi |m|/(2b)
-  if (!ddb::div(s, mul(K.pi, exact(double(am))), exact(2 * K.b))) return false;
+  if (!ddb::div(s, mul(K.pi, exact(double(am))), exact(2 * K.b))) return outcome::asy_difference;
   dd_ball D, e, r, c;
-  if (!asy_difference(D, K, s)) return false;
+  if (!asy_difference(D, K, s)) return outcome::asy_difference;
   const dd_ball D2 = scale(D, 2);
-  if (!ddb::div(e, D2, exact(K.a)) || !ddb::div(r, D2, pi3x2) || !ddb::div(c, D2, K.x2)) return false;
-  if (!ddb::negative(sub(r, exact(1.0)))) return false;  // ratio < 1: the check passes
-  return round_up(e, e, v.error) && round_up(r, r, v.ratio) && round_up(c, c, v.constant);
+  if (!ddb::div(e, D2, exact(K.a)) || !ddb::div(r, D2, pi3x2) || !ddb::div(c, D2, K.x2)) return outcome::asy_columns;
+  if (!ddb::negative(sub(r, exact(1.0)))) return outcome::asy_columns;  // ratio < 1: the check passes
+  if (!round_up(e, e, v.error) || !round_up(r, r, v.ratio) || !round_up(c, c, v.constant)) return outcome::asy_columns;
+  return outcome::proved;
 }
 
 }  // namespace
@@ -319,22 +361,25 @@ bool prove_asy(asy_values& v, const constants& K, std::int64_t a, std::int64_t b
 
 namespace gyrores::detail {
 
-bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
-  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
-  if (a >= (std::int64_t(1) << 31)) return false;
+namespace {
+
+filter::outcome certified_row(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
   using namespace filter;
+  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+  if (a >= (std::int64_t(1) << 31)) return outcome::out_of_range;
   constants K;
-  if (!constants_of(K, p)) return false;
+  if (!constants_of(K, p)) return outcome::constants;
   const int m_min = theorem_m_min(a);
   const lobe_list<int128> lobes = minimiser_lobes(int128(a), int128(b));
   const int128 quarter = sweep_quarter_R_scaled(a, b);
   const bool degenerate = p.delta_mod4() == 2;
   minimum_values mv;
-  if (!prove_minimum(mv, K, m_min, lobes.front(), quarter, !degenerate)) return false;
-  if (!degenerate && !(mv.r_positive && mv.r_below_R_half_pi)) return false;  // the check is the fallback's
+  if (const outcome o = prove_minimum(mv, K, m_min, lobes.front(), quarter, !degenerate); o != outcome::proved) return o;
+  if (!degenerate && !(mv.r_positive && mv.r_below_R_half_pi)) return outcome::degeneracy_check;  // the fallback's
   const bool has_asy = sweep_has_check(cfg.checks, sweep_check::asy_bound) && 2 * b < a;
   asy_values av;
-  if (has_asy && !prove_asy(av, K, a, b)) return false;
+  if (has_asy)
+    if (const outcome o = prove_asy(av, K, a, b); o != outcome::proved) return o;
   sweep_proved_facts f;
   f.quarter_R_scaled = quarter;
   f.m_min = m_min;
@@ -343,7 +388,7 @@ bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64
   f.r_below_R_half_pi = mv.r_below_R_half_pi;
   f.has_asy = has_asy;
   f.asy_proved = has_asy;
-  f.asy_within_bound = has_asy;  // prove_asy returns true only with ratio < 1
+  f.asy_within_bound = has_asy;  // prove_asy returns proved only with ratio < 1
   sweep_checks_from_facts(r, p, f, cfg);
   r.r_res = mv.r_res;
   r.theta_first = mv.theta_first;
@@ -356,7 +401,15 @@ bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64
     r.asy_ratio = av.ratio;
     r.asy_constant = av.constant;
   }
-  return true;
+  return outcome::proved;
+}
+
+}  // namespace
+
+bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
+  const filter::outcome o = certified_row(r, p, cfg);
+  filter::record(o);
+  return o == filter::outcome::proved;
 }
 
 }  // namespace gyrores::detail
