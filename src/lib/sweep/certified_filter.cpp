@@ -136,6 +136,19 @@ trig_point trig_at(const double_double& u) {
   return t;
 }
 
+// For v = u + t (u = P.u, t in the ball U - u) Taylor's theorem gives |sin v - (sin u + t cos u)|
+// <= t^2/2 and |cos v - (cos u - t sin u)| <= t^2/2 (|sin''|, |cos''| <= 1). sin u and cos u lie
+// in P's balls, so the ball operations hold sin u + t cos u and cos u - t sin u for every such t,
+// and the radii add upper_abs(t)^2/2 (rounded up by `up`). A third of a ball sin_cos's cost.
+void sin_cos_near(const trig_point& P, const dd_ball& U, dd_ball& s, dd_ball& c) {
+  const dd_ball t = sub(U, exact(P.u));
+  const double ta = ddb::upper_abs(t), remainder = ta * ta * 0.5;
+  s = add(P.s, mul(P.c, t));
+  c = sub(P.c, mul(P.s, t));
+  s.r = ddb::up(s.r + remainder);
+  c.r = ddb::up(c.r + remainder);
+}
+
 // ---- interval Newton ----
 // For f with one root z in the ball X = u0 +- rho, f(u0) in the ball fv and f' over X in the ball
 // dfX (excluding 0): by the mean value theorem f(u0) = f'(xi) (u0 - z) with xi in X, so z lies in
@@ -158,7 +171,9 @@ dd_ball theorem_F(const constants& K, const dd_ball& mu, const trig_point& P, dd
   return sub(mul(K.x, mul(P.s, cw)), mul(P.c, sw));
 }
 
-bool theorem_root(dd_ball& U, const constants& K, int m_min) {
+namespace {
+// theorem_root, and in P the point u0 about which U was proved (radius_over's sines from it).
+bool theorem_root_at(dd_ball& U, trig_point& P, const constants& K, int m_min) {
   const dd_ball mu = mul(scale(K.pi, 0.5), quotient(m_min, K.a));  // pi m/(2a)
   double u0;
   try {
@@ -169,9 +184,16 @@ bool theorem_root(dd_ball& U, const constants& K, int m_min) {
   if (!(u0 > 0x1p-40 && u0 < 1.5)) return false;
   const double rho = 0x1p-44 * u0;
   dd_ball slope;
-  const dd_ball f0 = theorem_F(K, mu, trig_at(double_double(u0)), &slope);
+  P = trig_at(double_double(u0));
+  const dd_ball f0 = theorem_F(K, mu, P, &slope);
   slope.r = ddb::up(slope.r + 8 * rho);
   return newton_enclosure(U, u0, rho, f0, slope) && U.m.hi - U.r > 0 && U.m.hi + U.r < 1.5;
+}
+}  // namespace
+
+bool theorem_root(dd_ball& U, const constants& K, int m_min) {
+  trig_point P;
+  return theorem_root_at(U, P, K, m_min);
 }
 
 // ---- step 2: the minimum's values ----
@@ -196,10 +218,9 @@ const dd_ball& inverse_pi_cubed() {
 }
 
 // r(u) = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u), x sqrt(1-x^2) = 2 b sqrt(tau sigma)/a^2,
-// over the ball U.
-bool radius_over(dd_ball& r, const constants& K, const reciprocals& R, const dd_ball& U) {
-  dd_ball s, c, root;
-  ddb::sin_cos(U, s, c);
+// over a ball U given the balls s, c of its sine and cosine.
+bool radius_over(dd_ball& r, const constants& K, const reciprocals& R, const dd_ball& s, const dd_ball& c) {
+  dd_ball root;
   const dd_ball s2 = mul(s, s);
   if (!ddb::sqrt(root, add(mul(c, c), mul(K.x2, s2)))) return false;
   const dd_ball coefficient = mul(mul(scale(K.sqrt_ts, 2), K.x), R.a);  // 2 sqrt(tau sigma) (b/a)/a
@@ -219,9 +240,11 @@ outcome prove_minimum(minimum_values& v, const constants& K, const reciprocals& 
     return outcome::t_min_paper;
   dd_ball U = exact(0.0);  // degenerate: u* = 0 exactly, r_res = 0 (the theorem's m_min = 0 lobes)
   if (m_min != 0) {
-    dd_ball r;
-    if (!theorem_root(U, K, m_min)) return outcome::root;
-    if (!radius_over(r, K, R, U) || !round_nearest(r, r, v.r_res)) return outcome::r_res;
+    dd_ball r, s, c;
+    trig_point P;
+    if (!theorem_root_at(U, P, K, m_min)) return outcome::root;
+    sin_cos_near(P, U, s, c);
+    if (!radius_over(r, K, R, s, c) || !round_nearest(r, r, v.r_res)) return outcome::r_res;
     v.r_positive = ddb::positive(r);
     // r_res^2 4 a^2 < 4 a^2 R(pi/2): the ball's square against the exact integer.
     const dd_ball four_a2 = exact(dd::of_int(int128(4) * std::int64_t(K.a) * std::int64_t(K.a)));
@@ -332,12 +355,13 @@ bool asy_difference(dd_ball& D, const constants& K, const dd_ball& s) {
   if (!(u0 > 0x1p-40 && u0 < 1.5)) return false;
   const double rho = 0x1p-44 * u0;
   dd_ball slope, ua;
-  const dd_ball q0 = paper_q(s, trig_at(double_double(u0)), &slope);
+  const trig_point P = trig_at(double_double(u0));
+  const dd_ball q0 = paper_q(s, P, &slope);
   slope.r = ddb::up(slope.r + 7 * rho);
   if (!newton_enclosure(ua, u0, rho, q0, slope)) return false;
   const dd_ball t = sub(s, ua);
   dd_ball sua, cua;
-  ddb::sin_cos(ua, sua, cua);
+  sin_cos_near(P, ua, sua, cua);
   // d = u_c - u_a by interval Newton on sigma(., u_a) about the double estimate.
   const double d0 = sweep_asy_difference(K.x.m.hi, s.m.hi);
   if (!(d0 > 0)) return false;
