@@ -409,13 +409,19 @@ namespace gyrores::detail {
 
 namespace {
 
-// The minimisers' lobes (theorem/lobes.hpp): for orders below 2^31 minimiser_lobes_euclid's int64
-// Euclid gives minimiser_lobes's list (that header's comment; tests/test_double_double.cpp
-// compares them) at a tenth of the int128 version's cost; held as int128 frames for the checks.
-lobe_list<int128> lobes_of(std::int64_t a, std::int64_t b) {
+// The minimisers' lobes (theorem/lobes.hpp): minimiser_lobes_euclid's machine-integer Euclid
+// gives minimiser_lobes's list (that header's comment; tests/test_double_double.cpp compares
+// them) at a tenth of the int128 version's cost; held as int128 frames for the checks. Its
+// remainders, cofactors and frames stay below 2a, so int32 serves for a < 2^30 (32-bit divisions
+// take half the time of 64-bit ones), int64 above.
+template <class L> lobe_list<int128> lobes_as_int128(L a, L b) {
   lobe_list<int128> out;
   for (const auto& f : minimiser_lobes_euclid(a, b)) out.push_back({f.k, f.j, f.m});
   return out;
+}
+lobe_list<int128> lobes_of(std::int64_t a, std::int64_t b) {
+  if (a < (std::int64_t(1) << 30)) return lobes_as_int128(std::int32_t(a), std::int32_t(b));
+  return lobes_as_int128(a, b);
 }
 
 filter::outcome certified_row(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
