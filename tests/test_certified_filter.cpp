@@ -237,7 +237,9 @@ TEST_CASE("certified sweeps: the same rows and summary with the filter as withou
         ++total;
       }
   WARN("filter decided " << decided << " of " << total << " pairs to order 400");
-  CHECK(decided >= int(0.95 * total));
+  // With sines and cosines to 2^-101 (dd_sin_cos_accurate) the balls are about 2^-95 wide, so a
+  // 17-digit rounding is left undecided about once in 2^40: the filter decides (nearly) all.
+  CHECK(decided >= int(0.999 * total));
 }
 
 TEST_CASE("filter: what it must leave to the fallback, and the rows agree", "[filter][fallback]") {
