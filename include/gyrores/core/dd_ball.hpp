@@ -8,14 +8,14 @@
 // Bounds used (u = 2^-53; core/double_double.hpp, Joldes, Muller and Popescu 2017), each taken
 // relative to |m.hi| with slack for |exact| <= |m.hi| (1 + 2^-52):
 //   add 3u^2 -> 2^-104, mul 7u^2 -> 2^-103, div 15u^2 + 56u^3 -> 2^-102, sqrt 4u^2 -> 2^-103,
-//   sin within 2^-63 |sin x| -> 2^-62.99 |s.hi|, cos within 2^-63 (absolute),
+//   sin within 2^-101 |sin x| -> 2^-100.99 |s.hi|, cos within 2^-101 (absolute) (dd_sin_cos_accurate),
 //   dd::pi within 2^-106 (its low part is the double nearest pi - hi, of ulp 2^-105) -> 2^-104.
 // Radii are doubles formed in round-to-nearest from nonnegative terms in at most 12 operations,
 // then `up`: (1 + u)^13 < 1 + 2^-49, so multiplying by 1 + 2^-48 (itself rounded) and adding
 // 2^-1000 (for any underflow, each below 2^-1074) never rounds a radius below its exact value.
 // The operations are compiled in src/lib/core/dd_ball.cpp (FMA clones, GYRORES_DD_FAST).
 // Preconditions (not checked): finite values of magnitude below 2^500, sin/cos arguments with
-// |m.hi| + r < 2 (dd_sin_cos's range), divisors whose ball excludes 0 (div returns false).
+// |m.hi| + r < 2 (dd_sin_cos_accurate's range), divisors whose ball excludes 0 (div returns false).
 #pragma once
 #include <cmath>
 
@@ -34,7 +34,7 @@ double up(double v);  // v (1 + 2^-48) + 2^-1000, rounded: above the exact value
 inline double mag(const dd_ball& x) { return x.m.hi < 0 ? -x.m.hi : x.m.hi; }
 
 inline constexpr double add_bound = 0x1p-104, mul_bound = 0x1p-103, div_bound = 0x1p-102, sqrt_bound = 0x1p-103;
-inline constexpr double sin_bound = 0x1.0002p-63, cos_bound = 0x1p-63, pi_radius = 0x1p-104;
+inline constexpr double sin_bound = 0x1.0002p-101, cos_bound = 0x1p-101, pi_radius = 0x1p-104;
 
 inline dd_ball exact(double v) { return {double_double(v), 0}; }
 inline dd_ball exact(const double_double& v) { return {v, 0}; }

@@ -72,6 +72,9 @@ struct trig_point {
   dd_ball s, c;
 };
 trig_point trig_at(const double_double& u);
+// sin and cos over the ball U from their balls at the point P.u (for U near P.u: the first-order
+// Taylor terms, and t^2/2 for the rest, t over U - P.u).
+void sin_cos_near(const trig_point& P, const dd_ball& U, dd_ball& s, dd_ball& c);
 
 // Interval Newton: the root z of f in u0 +- rho lies in `out` = u0 - fv/dfX (fv: f(u0), dfX:
 // f' over u0 +- rho), and exists there, if `out` lies inside u0 +- rho; false otherwise.

@@ -6,7 +6,8 @@
 
 namespace gyrores::ddb {
 
-GYRORES_DD_FAST double up(double v) { return v * (1 + 0x1p-48) + 0x1p-1000; }
+// Not cloned (it needs no FMA), so that the operations below inline it.
+double up(double v) { return v * (1 + 0x1p-48) + 0x1p-1000; }
 
 GYRORES_DD_FAST dd_ball add(const dd_ball& x, const dd_ball& y) {
   const double_double m = dd::add(x.m, y.m);
@@ -38,9 +39,9 @@ GYRORES_DD_FAST bool sqrt(dd_ball& out, const dd_ball& x) {
   out = {s, up(x.r / (std::sqrt(low) * (1 - 0x1p-50)) + sqrt_bound * std::fabs(s.hi))};
   return true;
 }
-// dd_sin_cos is within 2^-63 |sin m| and 2^-63 of sin m, cos m; |sin m| <= |s.hi| (1 + 2^-52).
+// dd_sin_cos_accurate is within 2^-101 |sin m| and 2^-101 of sin m, cos m; |sin m| <= |s.hi| (1 + 2^-52).
 GYRORES_DD_FAST void sin_cos(const dd_ball& x, dd_ball& s, dd_ball& c) {
-  dd_sin_cos(x.m, s.m, c.m);
+  dd_sin_cos_accurate(x.m, s.m, c.m);
   s.r = up(sin_bound * std::fabs(s.m.hi) + x.r);
   c.r = up(cos_bound + x.r);
 }

@@ -2,8 +2,12 @@
 #include <gyrores/sweep/certified_filter.hpp>
 
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
 
 #include <gyrores/core/dd_ball.hpp>
 #include <gyrores/core/error.hpp>
@@ -18,6 +22,40 @@ using ddb::exact;
 using ddb::mul;
 using ddb::scale;
 using ddb::sub;
+
+// ---- why a pair went to the fallback ----
+// Counted per outcome and printed to stderr at exit when the environment sets
+// GYRORES_FILTER_STATS: a diagnostic for tuning the filter; it changes no row.
+namespace {
+enum class outcome : int {
+  proved, out_of_range, constants, t_min_paper, root, r_res, theta_first, t_first, t_ratio,
+  degeneracy_check, asy_bound, asy_difference, asy_columns, count
+};
+constexpr const char* outcome_names[] = {"proved",      "out of range", "constants",        "t_min_paper",
+                                         "u*",          "r_res",        "theta_first",      "t_first",
+                                         "t_ratio",     "degeneracy check", "asy bound",    "asy difference",
+                                         "asy columns"};
+static_assert(std::size(outcome_names) == std::size_t(outcome::count));
+
+struct outcome_counts {
+  const bool enabled = std::getenv("GYRORES_FILTER_STATS") != nullptr;
+  std::array<std::atomic<std::uint64_t>, std::size_t(outcome::count)> n{};
+  ~outcome_counts() {
+    if (!enabled) return;
+    std::uint64_t total = 0;
+    for (const auto& c : n) total += c.load();
+    std::fprintf(stderr, "certified filter: %llu pairs, %llu to the fallback\n", (unsigned long long)total,
+                 (unsigned long long)(total - n[0].load()));
+    for (std::size_t i = 1; i < n.size(); ++i)
+      if (n[i].load() != 0) std::fprintf(stderr, "  %-18s %llu\n", outcome_names[i], (unsigned long long)n[i].load());
+  }
+};
+outcome_counts counts;
+
+void record(outcome o) {
+  if (counts.enabled) counts.n[std::size_t(o)].fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
 
 // ---- the rounding of a value v known to lie in [A.m - A.r, B.m + B.r] (both ends positive) ----
 // With h = A.m.hi = B.m.hi and v = h + e, |e| small: v rounds to h (to nearest) iff e lies in
@@ -74,11 +112,20 @@ bool round_down(const dd_ball& A, const dd_ball& B, double& out) {
 }
 
 // ---- the pair's constants ----
+namespace {
+// n/d for integers 0 <= n < 2^53, 0 < d < 2^53 as a ball: dd::quotient is within 2^-104 of it
+// relatively (core/double_double.hpp), and n/d <= q.hi (1 + 2^-52). Half the divisions of ddb::div.
+dd_ball quotient(double n, double d) {
+  const double_double q = dd::quotient(n, d);
+  return {q, ddb::up(0x1.0001p-104 * q.hi)};
+}
+}  // namespace
+
 bool constants_of(constants& K, const resonant_pair<std::int64_t>& p) {
   K.a = double(std::int64_t(p.order()));
   K.b = double(p.delta());
   K.pi = ddb::pi();
-  if (!ddb::div(K.x, exact(K.b), exact(K.a))) return false;
+  K.x = quotient(K.b, K.a);
   K.x2 = mul(K.x, K.x);
   return ddb::sqrt(K.sqrt_ts, exact(dd::of_int(p.tau() * p.sigma())));  // tau sigma < 2^62: exact
 }
@@ -87,6 +134,19 @@ trig_point trig_at(const double_double& u) {
   trig_point t{u, {}, {}};
   ddb::sin_cos(exact(u), t.s, t.c);
   return t;
+}
+
+// For v = u + t (u = P.u, t in the ball U - u) Taylor's theorem gives |sin v - (sin u + t cos u)|
+// <= t^2/2 and |cos v - (cos u - t sin u)| <= t^2/2 (|sin''|, |cos''| <= 1). sin u and cos u lie
+// in P's balls, so the ball operations hold sin u + t cos u and cos u - t sin u for every such t,
+// and the radii add upper_abs(t)^2/2 (rounded up by `up`). A third of a ball sin_cos's cost.
+void sin_cos_near(const trig_point& P, const dd_ball& U, dd_ball& s, dd_ball& c) {
+  const dd_ball t = sub(U, exact(P.u));
+  const double ta = ddb::upper_abs(t), remainder = ta * ta * 0.5;
+  s = add(P.s, mul(P.c, t));
+  c = sub(P.c, mul(P.s, t));
+  s.r = ddb::up(s.r + remainder);
+  c.r = ddb::up(c.r + remainder);
 }
 
 // ---- interval Newton ----
@@ -111,9 +171,10 @@ dd_ball theorem_F(const constants& K, const dd_ball& mu, const trig_point& P, dd
   return sub(mul(K.x, mul(P.s, cw)), mul(P.c, sw));
 }
 
-bool theorem_root(dd_ball& U, const constants& K, int m_min) {
-  dd_ball mu;
-  if (!ddb::div(mu, scale(K.pi, 0.5 * m_min), exact(K.a))) return false;  // pi m/(2a)
+namespace {
+// theorem_root, and in P the point u0 about which U was proved (radius_over's sines from it).
+bool theorem_root_at(dd_ball& U, trig_point& P, const constants& K, int m_min) {
+  const dd_ball mu = mul(scale(K.pi, 0.5), quotient(m_min, K.a));  // pi m/(2a)
   double u0;
   try {
     u0 = theorem_root_double(K.x.m.hi, mu.m.hi);
@@ -123,22 +184,46 @@ bool theorem_root(dd_ball& U, const constants& K, int m_min) {
   if (!(u0 > 0x1p-40 && u0 < 1.5)) return false;
   const double rho = 0x1p-44 * u0;
   dd_ball slope;
-  const dd_ball f0 = theorem_F(K, mu, trig_at(double_double(u0)), &slope);
+  P = trig_at(double_double(u0));
+  const dd_ball f0 = theorem_F(K, mu, P, &slope);
   slope.r = ddb::up(slope.r + 8 * rho);
   return newton_enclosure(U, u0, rho, f0, slope) && U.m.hi - U.r > 0 && U.m.hi + U.r < 1.5;
+}
+}  // namespace
+
+bool theorem_root(dd_ball& U, const constants& K, int m_min) {
+  trig_point P;
+  return theorem_root_at(U, P, K, m_min);
 }
 
 // ---- step 2: the minimum's values ----
 namespace {
+// 1/a and 1/b as balls, formed once per pair, so that the quotients by a and b below are products.
+struct reciprocals {
+  dd_ball a, b;
+};
+dd_ball reciprocal(double n) { return quotient(1.0, n); }
+// 1/pi and 1/pi^3, formed once.
+const dd_ball& inverse_pi() {
+  static const dd_ball v = [] {
+    dd_ball q;
+    ddb::div(q, exact(1.0), ddb::pi());
+    return q;
+  }();
+  return v;
+}
+const dd_ball& inverse_pi_cubed() {
+  static const dd_ball v = mul(mul(inverse_pi(), inverse_pi()), inverse_pi());
+  return v;
+}
+
 // r(u) = x sqrt(1-x^2) sin^2 u/sqrt(cos^2 u + x^2 sin^2 u), x sqrt(1-x^2) = 2 b sqrt(tau sigma)/a^2,
-// over the ball U.
-bool radius_over(dd_ball& r, const constants& K, const dd_ball& U) {
-  dd_ball s, c, coefficient, root;
-  ddb::sin_cos(U, s, c);
+// over a ball U given the balls s, c of its sine and cosine.
+bool radius_over(dd_ball& r, const constants& K, const reciprocals& R, const dd_ball& s, const dd_ball& c) {
+  dd_ball root;
   const dd_ball s2 = mul(s, s);
   if (!ddb::sqrt(root, add(mul(c, c), mul(K.x2, s2)))) return false;
-  if (!ddb::div(coefficient, mul(scale(K.sqrt_ts, 2), exact(K.b)), exact(dd::of_int(std::int64_t(K.a) * std::int64_t(K.a)))))
-    return false;
+  const dd_ball coefficient = mul(mul(scale(K.sqrt_ts, 2), K.x), R.a);  // 2 sqrt(tau sigma) (b/a)/a
   return ddb::div(r, mul(coefficient, s2), root);
 }
 
@@ -147,31 +232,34 @@ struct minimum_values {
   bool r_positive = false, r_below_R_half_pi = false;
 };
 
-bool prove_minimum(minimum_values& v, const constants& K, int m_min, const lobe_frame<int128>& first,
-                   int128 quarter_R_scaled, bool ratio) {
+outcome prove_minimum(minimum_values& v, const constants& K, const reciprocals& R, int m_min,
+                      const lobe_frame<int128>& first, int128 quarter_R_scaled, bool ratio) {
   const double key = double(lobe_order_key(first, int128(std::int64_t(K.a))));
-  dd_ball tmin;  // pi sqrt(tau sigma)/b
-  if (!ddb::div(tmin, mul(K.pi, K.sqrt_ts), exact(K.b)) || !round_nearest(tmin, tmin, v.t_min_paper)) return false;
+  const dd_ball tmin = mul(mul(K.pi, K.sqrt_ts), R.b);  // pi sqrt(tau sigma)/b
+  if (!round_nearest(tmin, tmin, v.t_min_paper))
+    return outcome::t_min_paper;
   dd_ball U = exact(0.0);  // degenerate: u* = 0 exactly, r_res = 0 (the theorem's m_min = 0 lobes)
   if (m_min != 0) {
-    dd_ball r;
-    if (!theorem_root(U, K, m_min) || !radius_over(r, K, U) || !round_nearest(r, r, v.r_res)) return false;
+    dd_ball r, s, c;
+    trig_point P;
+    if (!theorem_root_at(U, P, K, m_min)) return outcome::root;
+    sin_cos_near(P, U, s, c);
+    if (!radius_over(r, K, R, s, c) || !round_nearest(r, r, v.r_res)) return outcome::r_res;
     v.r_positive = ddb::positive(r);
     // r_res^2 4 a^2 < 4 a^2 R(pi/2): the ball's square against the exact integer.
     const dd_ball four_a2 = exact(dd::of_int(int128(4) * std::int64_t(K.a) * std::int64_t(K.a)));
     v.r_below_R_half_pi = ddb::positive(sub(exact(dd::of_int(quarter_R_scaled)), mul(mul(r, r), four_a2)));
     if (first.m < 0) U = ddb::neg(U);  // the lobe's minimiser is sign(m) u*
   }
-  dd_ball theta;  // 2 (k pi + u)/a
-  if (!ddb::div(theta, scale(add(mul(K.pi, exact(key)), U), 2), exact(K.a))) return false;
-  if (!round_nearest(theta, theta, v.theta_first)) return false;
+  const dd_ball theta = mul(scale(add(mul(K.pi, exact(key)), U), 2), R.a);  // 2 (k pi + u)/a
+  if (!round_nearest(theta, theta, v.theta_first)) return outcome::theta_first;
   const dd_ball tf = mul(K.sqrt_ts, theta);
-  if (!round_nearest(tf, tf, v.t_first)) return false;
+  if (!round_nearest(tf, tf, v.t_first)) return outcome::t_first;
   if (ratio) {  // theta b/pi
-    dd_ball q;
-    if (!ddb::div(q, mul(theta, exact(K.b)), K.pi) || !round_nearest(q, q, v.t_ratio)) return false;
+    const dd_ball q = mul(mul(theta, exact(K.b)), inverse_pi());
+    if (!round_nearest(q, q, v.t_ratio)) return outcome::t_ratio;
   }
-  return true;
+  return outcome::proved;
 }
 
 }  // namespace
@@ -244,12 +332,11 @@ bool paper_sigma(dd_ball& out, const constants& K, const dd_ball& t, const dd_ba
   if (!(ddb::upper_abs(u) < 1.19)) return false;  // 1.2 over d0 +- rho_d (asy_d_bracket)
   ddb::sin_cos(u, su, cu);
   ddb::sin_cos(y, sy, cy);
-  dd_ball T;
-  if (!ddb::div(T, sd, mul(cua, cu))) return false;
-  const dd_ball Td = add(T, exact(d));
+  dd_ball inv;  // 1/(cos u_a cos u)
+  if (!ddb::div(inv, exact(1.0), mul(cua, cu))) return false;
+  const dd_ball Td = add(mul(sd, inv), exact(d));  // T + d
   if (slope) {
-    dd_ball sec2;
-    if (!ddb::div(sec2, exact(1.0), mul(cu, cu))) return false;
+    const dd_ball sec = mul(inv, cua), sec2 = mul(sec, sec);  // 1/cos u, its square
     const dd_ball B = add(add(mul(y, sy), mul(add(sec2, exact(1.0)), cy)), mul(mul(K.x, Td), sy));
     *slope = ddb::neg(mul(K.x, B));
   }
@@ -268,12 +355,13 @@ bool asy_difference(dd_ball& D, const constants& K, const dd_ball& s) {
   if (!(u0 > 0x1p-40 && u0 < 1.5)) return false;
   const double rho = 0x1p-44 * u0;
   dd_ball slope, ua;
-  const dd_ball q0 = paper_q(s, trig_at(double_double(u0)), &slope);
+  const trig_point P = trig_at(double_double(u0));
+  const dd_ball q0 = paper_q(s, P, &slope);
   slope.r = ddb::up(slope.r + 7 * rho);
   if (!newton_enclosure(ua, u0, rho, q0, slope)) return false;
   const dd_ball t = sub(s, ua);
   dd_ball sua, cua;
-  ddb::sin_cos(ua, sua, cua);
+  sin_cos_near(P, ua, sua, cua);
   // d = u_c - u_a by interval Newton on sigma(., u_a) about the double estimate.
   const double d0 = sweep_asy_difference(K.x.m.hi, s.m.hi);
   if (!(d0 > 0)) return false;
@@ -291,26 +379,26 @@ struct asy_values {
   double error = 0, bound = 0, ratio = 0, constant = 0;
 };
 
-bool prove_asy(asy_values& v, const constants& K, std::int64_t a, std::int64_t b) {
+outcome prove_asy(asy_values& v, const constants& K, const reciprocals& R, std::int64_t a, std::int64_t b) {
   const auto node = paper_fast_node(a, b);  // the smaller k on a tie
   const std::int64_t m = a - 2 * node.k * b, am = m < 0 ? -m : m;
-  // bound = pi^3 x^2/a and pi^3 x^2 (the ratio's divisor).
-  const dd_ball pi3x2 = mul(mul(mul(K.pi, K.pi), K.pi), K.x2);
-  dd_ball bound;
-  if (!ddb::div(bound, pi3x2, exact(K.a)) || !round_down(bound, bound, v.bound)) return false;
+  const dd_ball bound = mul(mul(mul(mul(K.pi, K.pi), K.pi), K.x2), R.a);  // pi^3 x^2/a
+  if (!round_down(bound, bound, v.bound)) return outcome::asy_bound;
   if (am == 0) {  // s = 0: u_c = u_a = 0, every column 0; as the fallback prints the upper end of
     // MPFI's [0, 0], which MPFI holds as [+0, -0]: "-0"
     v.error = v.ratio = v.constant = -0.0;
-    return true;
+    return outcome::proved;
   }
-  dd_ball s;  // pi |m|/(2b)
-  if (!ddb::div(s, mul(K.pi, exact(double(am))), exact(2 * K.b))) return false;
-  dd_ball D, e, r, c;
-  if (!asy_difference(D, K, s)) return false;
+  const dd_ball s = scale(mul(mul(K.pi, exact(double(am))), R.b), 0.5);  // pi |m|/(2b)
+  dd_ball D;
+  if (!asy_difference(D, K, s)) return outcome::asy_difference;
   const dd_ball D2 = scale(D, 2);
-  if (!ddb::div(e, D2, exact(K.a)) || !ddb::div(r, D2, pi3x2) || !ddb::div(c, D2, K.x2)) return false;
-  if (!ddb::negative(sub(r, exact(1.0)))) return false;  // ratio < 1: the check passes
-  return round_up(e, e, v.error) && round_up(r, r, v.ratio) && round_up(c, c, v.constant);
+  const dd_ball inverse_x = quotient(K.a, K.b);
+  const dd_ball c = mul(D2, mul(inverse_x, inverse_x));                // 2d/x^2
+  const dd_ball e = mul(D2, R.a), r = mul(c, inverse_pi_cubed());  // 2d/a, 2d/(pi^3 x^2)
+  if (!ddb::negative(sub(r, exact(1.0)))) return outcome::asy_columns;  // ratio < 1: the check passes
+  if (!round_up(e, e, v.error) || !round_up(r, r, v.ratio) || !round_up(c, c, v.constant)) return outcome::asy_columns;
+  return outcome::proved;
 }
 
 }  // namespace
@@ -319,22 +407,41 @@ bool prove_asy(asy_values& v, const constants& K, std::int64_t a, std::int64_t b
 
 namespace gyrores::detail {
 
-bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
-  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
-  if (a >= (std::int64_t(1) << 31)) return false;
+namespace {
+
+// The minimisers' lobes (theorem/lobes.hpp): minimiser_lobes_euclid's machine-integer Euclid
+// gives minimiser_lobes's list (that header's comment; tests/test_double_double.cpp compares
+// them) at a tenth of the int128 version's cost; held as int128 frames for the checks. Its
+// remainders, cofactors and frames stay below 2a, so int32 serves for a < 2^30 (32-bit divisions
+// take half the time of 64-bit ones), int64 above.
+template <class L> lobe_list<int128> lobes_as_int128(L a, L b) {
+  lobe_list<int128> out;
+  for (const auto& f : minimiser_lobes_euclid(a, b)) out.push_back({f.k, f.j, f.m});
+  return out;
+}
+lobe_list<int128> lobes_of(std::int64_t a, std::int64_t b) {
+  if (a < (std::int64_t(1) << 30)) return lobes_as_int128(std::int32_t(a), std::int32_t(b));
+  return lobes_as_int128(a, b);
+}
+
+filter::outcome certified_row(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
   using namespace filter;
+  const std::int64_t a = std::int64_t(p.order()), b = p.delta();
+  if (a >= (std::int64_t(1) << 31)) return outcome::out_of_range;
   constants K;
-  if (!constants_of(K, p)) return false;
+  if (!constants_of(K, p)) return outcome::constants;
   const int m_min = theorem_m_min(a);
-  const lobe_list<int128> lobes = minimiser_lobes(int128(a), int128(b));
+  const lobe_list<int128> lobes = lobes_of(a, b);
   const int128 quarter = sweep_quarter_R_scaled(a, b);
   const bool degenerate = p.delta_mod4() == 2;
+  const reciprocals R{reciprocal(K.a), reciprocal(K.b)};
   minimum_values mv;
-  if (!prove_minimum(mv, K, m_min, lobes.front(), quarter, !degenerate)) return false;
-  if (!degenerate && !(mv.r_positive && mv.r_below_R_half_pi)) return false;  // the check is the fallback's
+  if (const outcome o = prove_minimum(mv, K, R, m_min, lobes.front(), quarter, !degenerate); o != outcome::proved) return o;
+  if (!degenerate && !(mv.r_positive && mv.r_below_R_half_pi)) return outcome::degeneracy_check;  // the fallback's
   const bool has_asy = sweep_has_check(cfg.checks, sweep_check::asy_bound) && 2 * b < a;
   asy_values av;
-  if (has_asy && !prove_asy(av, K, a, b)) return false;
+  if (has_asy)
+    if (const outcome o = prove_asy(av, K, R, a, b); o != outcome::proved) return o;
   sweep_proved_facts f;
   f.quarter_R_scaled = quarter;
   f.m_min = m_min;
@@ -343,7 +450,7 @@ bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64
   f.r_below_R_half_pi = mv.r_below_R_half_pi;
   f.has_asy = has_asy;
   f.asy_proved = has_asy;
-  f.asy_within_bound = has_asy;  // prove_asy returns true only with ratio < 1
+  f.asy_within_bound = has_asy;  // prove_asy returns proved only with ratio < 1
   sweep_checks_from_facts(r, p, f, cfg);
   r.r_res = mv.r_res;
   r.theta_first = mv.theta_first;
@@ -356,7 +463,15 @@ bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64
     r.asy_ratio = av.ratio;
     r.asy_constant = av.constant;
   }
-  return true;
+  return outcome::proved;
+}
+
+}  // namespace
+
+bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
+  const filter::outcome o = certified_row(r, p, cfg);
+  filter::record(o);
+  return o == filter::outcome::proved;
 }
 
 }  // namespace gyrores::detail
