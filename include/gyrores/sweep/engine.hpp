@@ -14,12 +14,14 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/sweep/checks.hpp>
 #include <gyrores/sweep/evaluate.hpp>
+#include <gyrores/sweep/fast.hpp>
 #include <gyrores/sweep/summary.hpp>
 
 namespace gyrores {
@@ -66,22 +68,35 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
 // sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (computation failures become
 // error rows, they do not stop the run); format_row, if set, appends a row's text to the
 // block's `rows` (it runs on the workers).
+// Without rows (no format_row), double sweeps take the fast path of sweep/fast.hpp for the pairs
+// it decides: the same summary, at a fraction of a row's cost.
 template <class T>
 sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
                         const std::function<void(sweep_block&)>& on_block,
                         const sweep_row_formatter<T>& format_row = {}) {
-  auto evaluate = [&cfg, &format_row](const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk) {
+  const bool fast = std::is_same_v<T, double> && !format_row && detail::sweep_fast_config(cfg);
+  std::atomic<double> asy_known{0};  // the largest asy constant computed so far in this run
+  auto evaluate = [&cfg, &format_row, fast, &asy_known](const std::vector<resonant_pair<std::int64_t>>& pairs,
+                                                        sweep_block& blk) {
     // One row and one record for the whole block, overwritten pair by pair: no allocation per
     // pair (they are the same values as sweep_evaluate's and sweep_record_of's).
     sweep_row<T> row;
     sweep_record rec;
     blk.summary.t_ratios.reserve(pairs.size());
-    for (const auto& p : pairs) {
+    double known = asy_known.load(std::memory_order_relaxed);
+    std::vector<std::int64_t> pass_ks;
+    if (fast) detail::sweep_fast_pass_ks(pairs, pass_ks);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto& p = pairs[i];
+      if (fast && detail::sweep_fast_add(blk.summary, p, cfg, known, pass_ks[i])) continue;
       sweep_evaluate_to(row, p, cfg);
       sweep_record_fill(rec, row, cfg.digits);
       blk.summary.add(rec);
+      // Double rows' constants are the fast path's (sweep_asy_double_of): a valid known value.
+      if (fast && rec.has_asy && !rec.failed && rec.asy_constant > known) known = rec.asy_constant;
       if (format_row) format_row(blk.rows, row);
     }
+    if (fast) detail::sweep_fast_publish(asy_known, known);
   };
   return sweep_run_blocks(cfg, opt, evaluate, on_block);
 }
