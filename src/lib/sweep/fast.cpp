@@ -118,15 +118,22 @@ bool sweep_fast_r_below_quarter_R(std::int64_t tau, std::int64_t sigma, int m, s
 // t_max = tan u_a(pi/2) = 0.86033358901937976... (rounded up here; tests/test_sweep.cpp checks
 // it against the paper's root). The result: a few roundings (x and |m|/b from reciprocals
 // included), within 2^-47 of the bound.
-GYRORES_DD_INLINE double asy_bound_of(double x, double am_over_b) {
+namespace {
+// The bound as num/den (den in [2, 3.5]): compared by products, without the division.
+struct fraction {
+  double num, den;
+};
+GYRORES_DD_INLINE fraction asy_bound_of(double x, double am_over_b) {
   constexpr double t_max_up = 0.860333589019381;  // 1.2e-15 above t_max
   const double t = t_max_up * am_over_b;
   const double t2 = t * t, y2 = x * x * t2;
-  return (2.0 / 3) * (t2 * t) * (1 + y2) / (2 + t2 + y2);
+  return {(2.0 / 3) * (t2 * t) * (1 + y2), 2 + t2 + y2};
 }
+}  // namespace
 
 double sweep_fast_asy_bound(std::int64_t a, std::int64_t b, std::int64_t am) {
-  return asy_bound_of(double(b) / double(a), double(am) / double(b));
+  const fraction f = asy_bound_of(double(b) / double(a), double(am) / double(b));
+  return f.num / f.den;
 }
 
 // With c <= bound (1 + 2^-47) and bound <= known (1 - 2^-36): the computed constant (within
@@ -134,6 +141,14 @@ double sweep_fast_asy_bound(std::int64_t a, std::int64_t b, std::int64_t am) {
 // known (1 - 2^-37), and its ratio fl(c/pi^3) below fl(known/pi^3) (one rounding each), so
 // neither maximum of the summary can come from this pair, nor tie with the known one.
 bool sweep_fast_asy_below(double bound, double known) { return known > 0 && bound <= known * (1 - 0x1p-36); }
+
+namespace {
+// The same for bound = num/den: num <= known (1 - 2^-36) den, one more rounding (2^-52) inside
+// the margin.
+GYRORES_DD_INLINE bool asy_below(fraction bound, double known) {
+  return known > 0 && bound.num <= known * (1 - 0x1p-36) * bound.den;
+}
+}  // namespace
 
 void sweep_fast_publish(std::atomic<double>& shared, double known) {
   double seen = shared.load(std::memory_order_relaxed);
@@ -207,29 +222,38 @@ namespace {
 // 2 a < 2^29 found by rounding its double (relative error 2^-51: below 1/2); the mirror (a - k),
 // for m_min = 2 the shift (k + a/2) and its mirror (a/2 - k); pass first iff 2k < ah. The
 // structure check verifies every frame's equation, so an error here is caught, not printed.
-GYRORES_DD_INLINE lobe_list<std::int64_t> lobes_of(std::int64_t a, std::int64_t b, int m, std::int64_t k, double inv_a) {
+// At most four frames, not zero-filled first (a lobe_list's array is, at a cost comparable to the
+// frames' arithmetic).
+struct fast_lobes {
+  std::array<lobe_frame<std::int64_t>, 4> items;
+  std::size_t count = 0;
+  void push_back(const lobe_frame<std::int64_t>& f) { items[count++] = f; }
+  const lobe_frame<std::int64_t>& front() const { return items[0]; }
+  std::span<const lobe_frame<std::int64_t>> span() const { return {items.data(), count}; }
+};
+
+GYRORES_DD_INLINE void lobes_of(fast_lobes& out, std::int64_t a, std::int64_t b, int m, std::int64_t k, double inv_a) {
   using frame = lobe_frame<std::int64_t>;
-  lobe_list<std::int64_t> out;
   if (m == 0) {
     out.push_back({a / 4, (b - 2) / 4, 0});
     out.push_back({3 * (a / 4), (3 * b - 2) / 4, 0});
-    return out;
+    return;
   }
   const std::int64_t ah = m == 1 ? a : a / 2, d = m == 1 ? 2 * b : b;
-  const std::int64_t s = std::llround(double(1 + k * d) * (m == 1 ? inv_a : 2 * inv_a));
+  // The quotient is positive: rounding to nearest is adding 1/2 and truncating.
+  const std::int64_t s = std::int64_t(double(1 + k * d) * (m == 1 ? inv_a : 2 * inv_a) + 0.5);
   const frame pass{k, (s - 1) / 2, m}, mirror{a - k, b - 1 - pass.j, -m};
   const bool pass_first = 2 * k < ah;
   if (m == 1) {
     out.push_back(pass_first ? pass : mirror);
     out.push_back(pass_first ? mirror : pass);
-    return out;
+    return;
   }
   const frame shift{k + a / 2, pass.j + b / 2, m}, shift_mirror{a / 2 - k, b / 2 - 1 - pass.j, -m};
   out.push_back(pass_first ? pass : shift_mirror);
   out.push_back(pass_first ? shift_mirror : pass);
   out.push_back(pass_first ? shift : mirror);
   out.push_back(pass_first ? mirror : shift);
-  return out;
 }
 
 // What the fast path found for one pair, before any of it goes into the summary.
@@ -260,7 +284,7 @@ template <class Lobes> void paper_node_of(fast_pair& f, node_of_pair node, const
   auto in_paper = [&](std::int64_t k) { return k == node.k || (node.tie && k == node.k + 1); };
   f.first_at_paper_node = in_paper(lobes.front().k);
   bool any = false;
-  for (const auto& l : lobes) any = any || in_paper(l.k);
+  for (const auto& l : lobes.span()) any = any || in_paper(l.k);
   if (check) f.status[int(sweep_check::paper_node)] = any ? sweep_status::pass : sweep_status::fail;
 }
 
@@ -276,8 +300,9 @@ GYRORES_DD_FAST bool decide(fast_pair& f, const resonant_pair<std::int64_t>& p, 
   // The lobes are checked whether or not structure is asked for: the frames' equations with
   // |m| = m_min, k in [0, a), in theta order, 2 or 4 of them determine the lobes uniquely, so
   // what P5 and theta_first read is the theorem's lobes (a failure goes the row's way).
-  const auto lobes = lobes_of(a, b, m, pass_k, inv_a);
-  if (!sweep_lobes_hold<std::int64_t>(p, m, std::span(lobes.begin(), lobes.size()))) return false;
+  fast_lobes lobes;
+  lobes_of(lobes, a, b, m, pass_k, inv_a);
+  if (!sweep_lobes_hold<std::int64_t>(p, m, lobes.span())) return false;
   if (sweep_has_check(ck, sweep_check::structure)) f.status[int(sweep_check::structure)] = sweep_status::pass;
   if (sweep_has_check(ck, sweep_check::degeneracy)) {
     const std::int64_t N = sweep_fast_quarter_R_scaled(a, b);
@@ -296,11 +321,11 @@ GYRORES_DD_FAST bool decide(fast_pair& f, const resonant_pair<std::int64_t>& p, 
   }
   if (sweep_has_check(ck, sweep_check::asy_bound) && 2 * b < a) {
     const std::int64_t m_paper = a - 2 * node.k * b, am = m_paper < 0 ? -m_paper : m_paper;  // sweep_asy_offset
-    const double bound = asy_bound_of(x, double(am) * inv_b);
+    const fraction bound = asy_bound_of(x, double(am) * inv_b);
     // pi^3 > 31: the ratio is below 1 with room far beyond the bound's roundings.
-    if (!(bound <= 31)) return false;
+    if (!(bound.num <= 31 * bound.den)) return false;
     f.status[int(sweep_check::asy_bound)] = sweep_status::pass;
-    if (!sweep_fast_asy_below(bound, asy_known)) {
+    if (!asy_below(bound, asy_known)) {
       f.asy = sweep_asy_double_of(a, b, am);
       if (!(f.asy.ratio <= 1)) return false;  // never (the bound): the row's way would say why
       f.asy_computed = true;
