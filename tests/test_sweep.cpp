@@ -1078,6 +1078,22 @@ TEST_CASE("sweep: without rows the fast path gives the rows' summary", "[sweep]"
 TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_double", "[sweep]") {
   std::mt19937_64 rng(20261127);
   int tested = 0;
+  // The largest u* (delta near 64, m_min = 1 and 2: v up to pi/128) and x near 1 and near 0.
+  for (std::int64_t a : {131, 1001, 1002, 100003, 100002, 99999998})
+    for (std::int64_t b : {64, 65, 66, 67, 68, 69, 72, 76, 80, 1000, 1001})
+      for (std::int64_t bb : {b, a - b}) {
+        if ((a - bb) % 2 != 0 || bb >= a || bb < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+        const std::int64_t tau = (a + bb) / 2, sigma = (a - bb) / 2;
+        if (sigma < 1 || std::gcd(tau, sigma) != 1) continue;
+        const minimum_double M = theorem_minimum_double(resonant_pair<std::int64_t>(tau, sigma));
+        const double u = detail::sweep_fast_root(a, bb, M.m_min);
+        INFO(tau << "," << sigma);
+        CHECK(ulps(u, M.u_star) <= 8);
+        const auto& f = M.lobes[0];
+        CHECK(ulps(detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u), M.theta_first) <= 1);
+        ++tested;
+      }
+  CHECK(tested >= 40);
   for (std::int64_t a : {131, 1000, 4097, 99999, 1000003, 123456789}) {
     std::uniform_int_distribution<std::int64_t> sig(1, (a - 1) / 2);
     for (int n = 0; n < 400; ++n) {

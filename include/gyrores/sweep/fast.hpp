@@ -9,9 +9,9 @@
 //    are far from tight for the pairs taken here (src/lib/sweep/fast.cpp argues each); the
 //    row's double path decides the same (paper-node from the same integers, so its failures,
 //    the common case, are counted here too);
-//  - t_first/(pi/|n|) is formed from u* by a short series and one Newton step (pairs with
-//    delta >= sweep_fast_min_delta, where u* <= pi/(2 delta) is small), as theta_first within
-//    about an ulp of the exact value: the same bound as the row's theorem_minimum_double
+//  - t_first/(pi/|n|) is formed from u* by its series in mu/(2x) (pairs with delta >=
+//    sweep_fast_min_delta, where u* <= pi/(2 delta) is small), as theta_first within about an
+//    ulp of the exact value: the same bound as the row's theorem_minimum_double
 //    (theorem/minimum.hpp), so the quantiles agree with a run that writes rows except, rarely,
 //    in their last digit (a value within an ulp of a rounding boundary);
 //  - the asy ratio and constant are computed (by the row's own function, bit for bit) only for

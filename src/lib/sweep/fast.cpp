@@ -18,41 +18,27 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-// tan u for 0 <= u <= pi/128 (u* for delta >= 64, m <= 2): Taylor to u^11. The next term,
-// 21844 u^13/6081075, is below 2^-64 u there (and tan's coefficients are positive with ratio
-// below (2/pi)^2 u^2 < 2^-12, so the whole tail is too).
-GYRORES_DD_INLINE double tan_small(double u) {
-  const double z = u * u;
-  return u + u * z * (1.0 / 3 + z * (2.0 / 15 + z * (17.0 / 315 + z * (62.0 / 2835 + z * (1382.0 / 155925)))));
-}
-
-// arctan(y)/y for y^2 = y2 <= 2^-10: the alternating series to y^10 (its tail is below
-// y^12/13 < 2^-60).
-GYRORES_DD_INLINE double atan_ratio(double y2) {
-  return 1 - y2 * (1.0 / 3 - y2 * (1.0 / 5 - y2 * (1.0 / 7 - y2 * (1.0 / 9 - y2 * (1.0 / 11)))));
-}
-
 }  // namespace
 
 // H(u)/(2x) = (u + arctan(x tan u)/x)/2 = F(u) = v = mu/(2x) = pi m/(4b), and u* <= v (H(u) >=
 // 2 x u: the tangent at 0 of the convex H, src/lib/theorem/root.cpp), so u* <= pi/128 here.
-// F(u) = u + alpha u^3 + beta u^5 + O(u^7), alpha = (1 - x^2)/6, beta = 1/15 - x^2/6 + x^4/10
-// (the series of tan and arctan), inverted: u0 = v - alpha v^3 + (3 alpha^2 - beta) v^5 is
-// within about v^7/10 < 2^-36 v of u*. One Newton step on F, F' = (1 + (1 + t^2)/(1 + y^2))/2 =
-// 1 + delta (t = tan u, y = x t, y^2 < 2^-10, 0 <= delta < 2^-11), |F''| <= 2 u, leaves
-// |F''| e0^2/2 < 2^-70 v; its divisions are series, 1/(1 + y^2) = 1 - y^2 + y^4 and 1/F' =
-// 1 - delta + delta^2 (relative errors below 2^-30, times the step's 2^-36 v). So the result's
-// error is that of evaluating F - v: x and v within two roundings (u* moves by at most their
-// relative error, the sensitivity argument of src/lib/theorem/minimum.cpp), F formed to about
-// 3 ulps (the series' truncation below 2^-60): u* within about 8 ulps (tests/test_sweep.cpp).
+// F(u) = u + (1 - x^2) u^3/6 + ... (the series of tan and arctan), and its inverse series
+//   u* = v (1 + c3 w + c5 w^2 + c7 w^3 + c9 w^4 + ...),  w = v^2,
+//   c3 = -(1 - x^2)/6,  c5 = (1 - x^4)/60,  c7 = (2 - 7 x^2 + 7 x^4 - 2 x^6)/315,
+//   c9 = (-143 + 290 x^2 - 290 x^6 + 143 x^8)/45360
+// (by series reversion; each vanishes at x = 1, where F(u) = u). Truncated after v^9 its error,
+// measured at 50 digits for v = pi/128 (the largest here) and x in (0, 1), is below 2^-65 u*
+// (the next coefficient is below 2^-12, times w^5 < 2^-53). In double: x and v within two
+// roundings (u* moves by at most their relative error, the sensitivity argument of
+// src/lib/theorem/minimum.cpp), the correction v w (...) below 2^-12 v and formed to a few
+// ulps of itself, then one rounding: u* within about 3 ulps (tests/test_sweep.cpp compares it
+// with theorem_minimum_double's).
 GYRORES_DD_INLINE double root_of(double x, double v) {
-  const double x2 = x * x, v2 = v * v;
-  const double alpha = (1 - x2) * (1.0 / 6), beta = 1.0 / 15 - x2 * (1.0 / 6) + (x2 * x2) * 0.1;
-  const double u0 = v - v * v2 * (alpha - (3 * alpha * alpha - beta) * v2);
-  const double t = tan_small(u0), t2 = t * t, y2 = x2 * t2;
-  const double F = 0.5 * (u0 + t * atan_ratio(y2));
-  const double delta = 0.5 * ((1 + t2) * (1 - y2 * (1 - y2)) - 1);
-  return u0 - (F - v) * (1 - delta * (1 - delta));
+  const double x2 = x * x, w = v * v;
+  const double c3 = (x2 - 1) * (1.0 / 6), c5 = (1 - x2 * x2) * (1.0 / 60);
+  const double c7 = (2.0 / 315) + x2 * (-1.0 / 45 + x2 * (1.0 / 45 - x2 * (2.0 / 315)));
+  const double c9 = (-143.0 / 45360) + x2 * (29.0 / 4536 + x2 * x2 * (-29.0 / 4536 + x2 * (143.0 / 45360)));
+  return v + v * w * (c3 + w * (c5 + w * (c7 + w * c9)));
 }
 
 GYRORES_DD_FAST double sweep_fast_root(std::int64_t a, std::int64_t b, int m) {
@@ -139,7 +125,9 @@ double sweep_fast_asy_bound(std::int64_t a, std::int64_t b, std::int64_t am) {
 // With c <= bound (1 + 2^-47) and bound <= known (1 - 2^-36): the computed constant (within
 // 2^-47 of c: sweep_asy_difference's d to about 2^-50, then three roundings) is below
 // known (1 - 2^-37), and its ratio fl(c/pi^3) below fl(known/pi^3) (one rounding each), so
-// neither maximum of the summary can come from this pair, nor tie with the known one.
+// neither maximum of the summary can come from this pair, nor tie with the known one. (A known
+// value from an enclosure row, order >= 2^31, has its ratio within 2^-80 of known/pi^3: the
+// same holds.)
 bool sweep_fast_asy_below(double bound, double known) { return known > 0 && bound <= known * (1 - 0x1p-36); }
 
 namespace {
