@@ -68,6 +68,28 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
 // sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (computation failures become
 // error rows, they do not stop the run); format_row, if set, appends a row's text to the
 // block's `rows` (it runs on the workers).
+namespace detail {
+
+// The pairs of a block of a double sweep without rows: the fast path of sweep/fast.hpp where it
+// decides a pair, else the row's way into `row` and `rec` (the same contribution); `known` is
+// the largest asy constant computed so far (updated).
+inline void sweep_fast_block(const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk,
+                             const sweep_config& cfg, sweep_row<double>& row, sweep_record& rec, double& known) {
+  std::vector<std::int64_t> pass_ks;
+  sweep_fast_pass_ks(pairs, pass_ks);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (sweep_fast_add(blk.summary, pairs[i], cfg, known, pass_ks[i])) continue;
+    sweep_evaluate_to(row, pairs[i], cfg);
+    sweep_record_fill(rec, row, cfg.digits);
+    blk.summary.add(rec);
+    // A row's computed constant (sweep_asy_double_of, or an enclosure's midpoint) is a valid
+    // known value: a pair of this run with it is in the summary (fast.cpp, sweep_fast_asy_below).
+    if (rec.has_asy && !rec.failed && rec.asy_constant > known) known = rec.asy_constant;
+  }
+}
+
+}  // namespace detail
+
 // Without rows (no format_row), double sweeps take the fast path of sweep/fast.hpp for the pairs
 // it decides: the same summary, at a fraction of a row's cost.
 template <class T>
@@ -83,20 +105,20 @@ sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt
     sweep_row<T> row;
     sweep_record rec;
     blk.summary.t_ratios.reserve(pairs.size());
-    double known = asy_known.load(std::memory_order_relaxed);
-    std::vector<std::int64_t> pass_ks;
-    if (fast) detail::sweep_fast_pass_ks(pairs, pass_ks);
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-      const auto& p = pairs[i];
-      if (fast && detail::sweep_fast_add(blk.summary, p, cfg, known, pass_ks[i])) continue;
+    if constexpr (std::is_same_v<T, double>) {
+      if (fast) {
+        double known = asy_known.load(std::memory_order_relaxed);
+        detail::sweep_fast_block(pairs, blk, cfg, row, rec, known);
+        detail::sweep_fast_publish(asy_known, known);
+        return;
+      }
+    }
+    for (const auto& p : pairs) {
       sweep_evaluate_to(row, p, cfg);
       sweep_record_fill(rec, row, cfg.digits);
       blk.summary.add(rec);
-      // Double rows' constants are the fast path's (sweep_asy_double_of): a valid known value.
-      if (fast && rec.has_asy && !rec.failed && rec.asy_constant > known) known = rec.asy_constant;
       if (format_row) format_row(blk.rows, row);
     }
-    if (fast) detail::sweep_fast_publish(asy_known, known);
   };
   return sweep_run_blocks(cfg, opt, evaluate, on_block);
 }
