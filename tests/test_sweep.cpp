@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -26,6 +27,9 @@
 #include <gyrores/io/sweep_values_file.hpp>
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/sweep/engine.hpp>
+#include <gyrores/sweep/fast.hpp>
+#include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/root.hpp>
 
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
@@ -195,7 +199,7 @@ TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]"
   CHECK(acc.asy_ratio_max.value < 0.005);
   CHECK(acc.asy_ratio_max.value > 0.0049);
   CHECK(acc.sharp_constant.pair == sweep_pair_id{30, 29});
-  CHECK(acc.sharp_constant.value == Approx(acc.asy_ratio_max.value * M_PI * M_PI * M_PI).epsilon(1e-12));
+  CHECK(acc.sharp_constant.value == Approx(acc.asy_ratio_max.value * std::numbers::pi * std::numbers::pi * std::numbers::pi).epsilon(1e-12));
 
   // Quantiles: exact order statistics of the rows' t_first/proxy, sorted here.
   std::vector<double> ref;
@@ -407,7 +411,7 @@ TEST_CASE("sweep: paper-node verdicts agree with the minimiser thetas", "[sweep]
       lr.theta_first = double(ref.theta_first);
     }
     auto lobe = [&](double th) {
-      std::int64_t k = std::llround(double(a) * th / (2 * M_PI));
+      std::int64_t k = std::llround(double(a) * th / (2 * std::numbers::pi));
       return ((k % a) + a) % a;
     };
     std::vector<std::int64_t> paper;
@@ -1012,4 +1016,186 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
     }
     CHECK(sweep_summary_core(sweep_merge(shards)) == want);
   }
+}
+
+// ---- the fast path without rows (sweep/fast.hpp) ----
+
+namespace {
+
+// The accumulator of a run whose rows are formatted (and dropped): every pair the row's way.
+sweep_accumulator run_acc_rows(const sweep_config& c, const sweep_engine_options& e) {
+  sweep_accumulator acc;
+  acc.max_examples = c.max_examples;
+  const sweep_row_formatter<double> drop = [](std::string&, const sweep_row<double>&) {};
+  auto out = sweep_run<double>(c, e, [&](sweep_block& b) { acc.merge(b.summary); }, drop);
+  REQUIRE(out.complete);
+  return acc;
+}
+
+std::vector<double> sorted_values(const sweep_values& v) {
+  std::vector<double> all;
+  v.replay([&](const double* d, std::size_t n) { all.insert(all.end(), d, d + n); });
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
+// |x - y| in units of the last place of y.
+double ulps(double x, double y) { return std::fabs(x - y) / (std::nextafter(std::fabs(y), INFINITY) - std::fabs(y)); }
+
+}  // namespace
+
+TEST_CASE("sweep: without rows the fast path gives the rows' summary", "[sweep]") {
+  // Orders up to 700 and a window near 3000: delta from 1 to ~3000, both sides of the fast
+  // path's delta >= 64, every check, failures of paper-node (most pairs) included.
+  for (auto [lo, hi] : {std::pair<std::int64_t, std::int64_t>{3, 700}, {2990, 3010}}) {
+    sweep_config c = config(hi, lo);
+    c.max_examples = 7;
+    for (unsigned threads : {1u, 2u}) {
+      const sweep_accumulator fast = run_acc(c, engine(threads, 61));
+      const sweep_accumulator rows = run_acc_rows(c, engine(threads, 61));
+      CHECK(fast.pairs == rows.pairs);
+      CHECK(fast.degenerate == rows.degenerate);
+      CHECK(fast.first_at_paper_node == rows.first_at_paper_node);
+      for (int i = 0; i < sweep_check_count; ++i) CHECK(fast.checks[i] == rows.checks[i]);
+      CHECK(fast.errors == rows.errors);
+      // The asy extremes: bit for bit, same pair (the skipped pairs cannot reach them).
+      CHECK(fast.asy_ratio_max == rows.asy_ratio_max);
+      CHECK(fast.sharp_constant == rows.sharp_constant);
+      // t_first/(pi/|n|): each within an ulp of the row's (theta_first within an ulp of the
+      // exact value on both ways), and nearly all equal.
+      const auto fv = sorted_values(fast.t_ratios), rv = sorted_values(rows.t_ratios);
+      REQUIRE(fv.size() == rv.size());
+      std::size_t differ = 0;
+      for (std::size_t i = 0; i < fv.size(); ++i) {
+        CHECK(ulps(fv[i], rv[i]) <= 2);
+        differ += fv[i] != rv[i];
+      }
+      CHECK(differ * 100 <= fv.size());
+    }
+  }
+}
+
+TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_double", "[sweep]") {
+  std::mt19937_64 rng(20261127);
+  int tested = 0;
+  // The largest u* (delta near 64, m_min = 1 and 2: v up to pi/128) and x near 1 and near 0.
+  for (std::int64_t a : {131, 1001, 1002, 100003, 100002, 99999998})
+    for (std::int64_t b : {64, 65, 66, 67, 68, 69, 72, 76, 80, 1000, 1001})
+      for (std::int64_t bb : {b, a - b}) {
+        if ((a - bb) % 2 != 0 || bb >= a || bb < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+        const std::int64_t tau = (a + bb) / 2, sigma = (a - bb) / 2;
+        if (sigma < 1 || std::gcd(tau, sigma) != 1) continue;
+        const minimum_double M = theorem_minimum_double(resonant_pair<std::int64_t>(tau, sigma));
+        const double u = detail::sweep_fast_root(a, bb, M.m_min);
+        INFO(tau << "," << sigma);
+        CHECK(ulps(u, M.u_star) <= 8);
+        const auto& f = M.lobes[0];
+        CHECK(ulps(detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u), M.theta_first) <= 1);
+        ++tested;
+      }
+  CHECK(tested >= 40);
+  for (std::int64_t a : {131, 1000, 4097, 99999, 1000003, 123456789}) {
+    std::uniform_int_distribution<std::int64_t> sig(1, (a - 1) / 2);
+    for (int n = 0; n < 400; ++n) {
+      const std::int64_t sigma = sig(rng), tau = a - sigma, b = tau - sigma;
+      if (std::gcd(tau, sigma) != 1 || b < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+      const resonant_pair<std::int64_t> p(tau, sigma);
+      const minimum_double M = theorem_minimum_double(p);
+      const double u = detail::sweep_fast_root(a, b, M.m_min);
+      INFO(tau << "," << sigma);
+      CHECK(ulps(u, M.u_star) <= 8);
+      const auto& f = M.lobes[0];
+      const double theta = detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u);
+      CHECK(ulps(theta, M.theta_first) <= 1);
+      ++tested;
+    }
+  }
+  CHECK(tested > 1000);
+}
+
+TEST_CASE("sweep: the fast path's R(pi/2) in int64 is sweep_quarter_R_scaled", "[sweep]") {
+  for (std::int64_t a = 3; a <= 400; ++a)
+    for (std::int64_t b = a - 2; b >= 1; b -= 2) CHECK(detail::sweep_fast_quarter_R_scaled(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
+  const std::int64_t big = (std::int64_t(1) << 28) - 1;
+  for (std::int64_t a : {big, big - 1, big - 2, big - 3})
+    for (std::int64_t b : {std::int64_t(1), std::int64_t(2), a - 2, a / 2, a / 2 + 1})
+      if ((a - b) % 2 == 0 && b > 0) CHECK(detail::sweep_fast_quarter_R_scaled(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
+}
+
+TEST_CASE("sweep: the fast path's P3 bound holds, and refuses what it cannot prove", "[sweep]") {
+  // The bound r_res^2 <= (sigma/tau) pi^4 m^4/(64 a^2 b^2) against the theorem's r_res (one
+  // ulp), and the decision for every pair with delta >= 64 up to order 400.
+  for (std::int64_t a = 67; a <= 400; ++a)
+    for (std::int64_t sigma = 1; 2 * sigma < a - 63; ++sigma) {
+      const std::int64_t tau = a - sigma, b = tau - sigma;
+      if (std::gcd(tau, sigma) != 1 || a % 4 == 0) continue;
+      const resonant_pair<std::int64_t> p(tau, sigma);
+      const minimum_double M = theorem_minimum_double(p);
+      const double m4 = std::pow(double(M.m_min), 4), pi4 = std::pow(std::numbers::pi, 4);
+      const double bound = double(sigma) / double(tau) * pi4 * m4 / (64 * double(a) * double(a) * double(b) * double(b));
+      CHECK(M.r_res * M.r_res <= bound * (1 + 1e-14));
+      CHECK(detail::sweep_fast_r_below_quarter_R(tau, sigma, M.m_min, std::int64_t(sweep_quarter_R_scaled(a, b))));
+    }
+  // pi^4 sigma <= 16 b^2 tau N with tau = 2, sigma = 1 (b = 1), m = 1: 97.41 <= 32 N from N = 4 on.
+  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 3));
+  CHECK(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 4));
+  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 0));
+  // m = 2: 16 pi^4 = 1558.5 <= 32 N from N = 49 on.
+  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 2, 48));
+  CHECK(detail::sweep_fast_r_below_quarter_R(2, 1, 2, 49));
+}
+
+TEST_CASE("sweep: the fast path's asy bound is above every computed constant, and the skip keeps a margin", "[sweep]") {
+  // t_max = tan u_a(pi/2), rounded up in the bound.
+  const double ua = paper_root_double(std::numbers::pi / 2);
+  CHECK(std::tan(ua) * (1 + 1e-15) < 0.860333589019381);
+  CHECK(std::tan(ua) * (1 + 4e-15) > 0.860333589019381);  // and not by much
+  std::size_t tested = 0;
+  for (std::int64_t a = 5; a <= 700; ++a)
+    for (std::int64_t b = (a % 2 ? 1 : 2); 2 * b < a; b += 2) {
+      const std::int64_t am = detail::sweep_asy_offset(a, b);
+      const auto v = detail::sweep_asy_double_of(a, b, am);
+      const double bound = detail::sweep_fast_asy_bound(a, b, am);
+      INFO(a << " " << b << " " << am);
+      CHECK(v.constant <= bound * (1 + 0x1p-47));
+      ++tested;
+    }
+  CHECK(tested > 50000);
+  // Where s = pi/2 (b = 1, a tie: |m| = b) and x is small the bound is nearly the constant.
+  const auto v = detail::sweep_asy_double_of(2999, 1, 1);
+  CHECK(detail::sweep_fast_asy_bound(2999, 1, 1) <= v.constant * (1 + 1e-6));
+  // The skip: only strictly below a known constant, beyond the 2^-36 margin.
+  CHECK_FALSE(detail::sweep_fast_asy_below(0.1, 0));
+  CHECK_FALSE(detail::sweep_fast_asy_below(0.1, 0.1));
+  CHECK_FALSE(detail::sweep_fast_asy_below(0.1 * (1 - 0x1p-40), 0.1));
+  CHECK(detail::sweep_fast_asy_below(0.1 * (1 - 0x1p-35), 0.1));
+}
+
+TEST_CASE("sweep: the fast path's batch inverses give the pass frames' k", "[sweep]") {
+  // Blocks spanning several orders (odd, 2 mod 4, and 0 mod 4, which gets 0), as the engine
+  // hands them out; and single pairs near 2^31 (Barrett's products near 2^62).
+  std::vector<resonant_pair<std::int64_t>> pairs;
+  for (std::int64_t a = 3; a <= 260; ++a)
+    for (std::int64_t sigma = 1; 2 * sigma < a; ++sigma)
+      if (std::gcd(a, sigma) == 1) pairs.emplace_back(a - sigma, sigma);
+  const std::int64_t big = (std::int64_t(1) << 31) - 1;  // odd
+  for (std::int64_t sigma : {std::int64_t(1), std::int64_t(2), big / 2, big / 3})
+    if (std::gcd(big, sigma) == 1) pairs.emplace_back(big - sigma, sigma);
+  for (std::int64_t sigma : {std::int64_t(1), std::int64_t(3), (big - 5) / 2 - 2})
+    if (std::gcd(big - 5, sigma) == 1) pairs.emplace_back(big - 5 - sigma, sigma);  // 2 mod 4
+  std::vector<std::int64_t> ks;
+  detail::sweep_fast_pass_ks(pairs, ks);
+  REQUIRE(ks.size() == pairs.size());
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const std::int64_t a = std::int64_t(pairs[i].order()), b = pairs[i].delta();
+    INFO(pairs[i].tau() << "," << pairs[i].sigma());
+    if (a % 4 == 0) {
+      CHECK(ks[i] == 0);
+      continue;
+    }
+    CHECK(ks[i] == std::int64_t(pass_frame(int128(a), int128(b)).k));
+    ++checked;
+  }
+  CHECK(checked > 8000);
 }

@@ -144,6 +144,14 @@ bool sweep_double_path(const resonant_pair<std::int64_t>& p);
 // its rounding error, else by the proved enclosure of sweep_prove_pair (false if not proved).
 bool sweep_r_below_quarter_R(const resonant_pair<std::int64_t>& p, double r_res, int128 N);
 void sweep_evaluate_double(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg);
+// P7's columns in double for x = b/a < 1/2: the paper's lobe offset |m| = |a - 2 k b|, k =
+// round(a/(2b)) (the smaller k on a tie), and the error, bound, ratio and constant from it
+// (sweep_asy_difference, sweep/certified_filter.hpp), as the double rows hold them.
+struct sweep_asy_double {
+  double error = 0, bound = 0, ratio = 0, constant = 0;
+};
+std::int64_t sweep_asy_offset(std::int64_t a, std::int64_t b);
+sweep_asy_double sweep_asy_double_of(std::int64_t a, std::int64_t b, std::int64_t am);
 
 // The enclosure path: pr = sweep_prove_pair(p, sweep_proof_options_of(...)); every field but
 // the reals from pr, and the cross-check if asked (compute_error if the minimum was not

@@ -125,6 +125,8 @@ struct sweep_accumulator {
   sweep_values t_ratios;  // t_first/(pi/|n|), non-degenerate pairs (order irrelevant)
 
   void add(const sweep_record& r);
+  // Check i's verdict s on pair id (none: not checked), as add counts it.
+  void add_check(int i, sweep_status s, const sweep_pair_id& id);
   // Exact merge; the result does not depend on the grouping or order of merges.
   void merge(const sweep_accumulator& o);
   // Exact order statistics of t_ratios (a few passes over them when they are many).

@@ -54,8 +54,10 @@ class sweep_values {
   std::uint64_t size() const { return elsewhere_ + memory_.size(); }
   // The values in memory (the ones not handed to a source yet).
   const std::vector<double>& memory() const { return memory_; }
-  // The owner has stored the values in memory elsewhere (and will add a source for them).
-  void clear_memory() { std::vector<double>().swap(memory_); }
+  // The owner has stored the values in memory elsewhere (and will add a source for them). The
+  // capacity stays: a sweep refills it block by block (8 MB at a time), and growing it again
+  // from nothing copied every value about twice more.
+  void clear_memory() { memory_.clear(); }
   // `count` more values, replayed by `s`.
   void add_source(sweep_value_source s, std::uint64_t count);
   // Concatenation (the values are a multiset: order carries no meaning).

@@ -46,15 +46,12 @@ void check_paper_node(sweep_row_info& r, const resonant_pair<std::int64_t>& p, s
 
 // P7 in double (x < 1/2): the columns of the row as the header comment defines them.
 void check_asy_double(sweep_row<double>& r, std::int64_t a, std::int64_t b) {
-  const auto node = paper_fast_node(a, b);  // the smaller k on a tie
-  const std::int64_t m = a - 2 * node.k * b, am = m < 0 ? -m : m;
-  const double x = double(b) / double(a), x2 = x * x, pi3 = pi * pi * pi;
-  const double d = am == 0 ? 0.0 : sweep_asy_difference(x, pi * double(am) / double(2 * b));
+  const sweep_asy_double v = sweep_asy_double_of(a, b, sweep_asy_offset(a, b));
   r.has_asy = true;
-  r.asy_constant = 2 * (d / x2);
-  r.asy_error = r.asy_constant * x2 / double(a);
-  r.asy_bound = pi3 * x2 / double(a);
-  r.asy_ratio = r.asy_constant / pi3;
+  r.asy_constant = v.constant;
+  r.asy_error = v.error;
+  r.asy_bound = v.bound;
+  r.asy_ratio = v.ratio;
   set_status(r, sweep_check::asy_bound, r.asy_ratio <= 1);
 }
 
@@ -71,6 +68,23 @@ void check_degeneracy_double(sweep_row_info& r, const resonant_pair<std::int64_t
 }
 
 }  // namespace
+
+std::int64_t sweep_asy_offset(std::int64_t a, std::int64_t b) {
+  const auto node = paper_fast_node(a, b);  // the smaller k on a tie
+  const std::int64_t m = a - 2 * node.k * b;
+  return m < 0 ? -m : m;
+}
+
+sweep_asy_double sweep_asy_double_of(std::int64_t a, std::int64_t b, std::int64_t am) {
+  const double x = double(b) / double(a), x2 = x * x, pi3 = pi * pi * pi;
+  const double d = am == 0 ? 0.0 : sweep_asy_difference(x, pi * double(am) / double(2 * b));
+  sweep_asy_double v;
+  v.constant = 2 * (d / x2);
+  v.error = v.constant * x2 / double(a);
+  v.bound = pi3 * x2 / double(a);
+  v.ratio = v.constant / pi3;
+  return v;
+}
 
 // u_c - u_a >= 0 in the paper's lobe with s = pi |m|/(2b) > 0, x < 1/2, in double, without
 // cancellation (it is O(x^2 u^3) against u). f(u) = u + arctan(x tan u)/x - s has the root u_c

@@ -71,19 +71,21 @@ void sweep_accumulator::add(const sweep_record& r) {
     add_example(errors, id, max_examples);
     return;
   }
-  for (int i = 0; i < sweep_check_count; ++i) {
-    if (r.status[i] == sweep_status::none) continue;
-    ++checks[i].checked;
-    if (r.status[i] == sweep_status::fail) {
-      ++checks[i].violations;
-      add_example(checks[i], id, max_examples);
-    }
-  }
+  for (int i = 0; i < sweep_check_count; ++i) add_check(i, r.status[i], id);
   if (r.first_at_paper_node == 1) ++first_at_paper_node;
   if (r.has_ratio) t_ratios.add(r.t_ratio);
   if (r.has_asy) {
     asy_ratio_max.offer(r.asy_ratio, r.asy_ratio_text, id);
     sharp_constant.offer(r.asy_constant, r.asy_constant_text, id);
+  }
+}
+
+void sweep_accumulator::add_check(int i, sweep_status s, const sweep_pair_id& id) {
+  if (s == sweep_status::none) return;
+  ++checks[i].checked;
+  if (s == sweep_status::fail) {
+    ++checks[i].violations;
+    add_example(checks[i], id, max_examples);
   }
 }
 

@@ -95,6 +95,14 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
     for (const auto& g : candidates) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
     std::sort(slots.begin(), slots.end(), [](const slot& x, const slot& y) { return x.prefix < y.prefix; });
     const unsigned nb = std::min(opt.bits, 64 - F);  // the bits this pass resolves
+    // For a short prefix (F <= 24: the second pass), the slot of each prefix by one table
+    // look-up instead of a scan of the slots (a mispredicted branch per value; at order 10^5
+    // this pass reads 1.27e9 values).
+    std::vector<unsigned char> slot_of;
+    if (F > 0 && F <= 24 && slots.size() < 255) {
+      slot_of.assign(std::size_t(1) << F, 255);
+      for (std::size_t j = 0; j < slots.size(); ++j) slot_of[std::size_t(slots[j].prefix)] = static_cast<unsigned char>(j);
+    }
     std::uint64_t seen = 0;
     replay([&](const double* v, std::size_t n) {
       seen += n;
@@ -104,6 +112,17 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
           for (std::size_t i = 0; i < n; ++i) ++s.hist[std::size_t(sweep_value_key(v[i] == 0 ? 0.0 : v[i]) >> (64 - nb))];
         } else {
           for (std::size_t i = 0; i < n; ++i) s.keys->push_back(sweep_value_key(v[i] == 0 ? 0.0 : v[i]));
+        }
+        return;
+      }
+      if (!slot_of.empty()) {
+        for (std::size_t i = 0; i < n; ++i) {
+          const std::uint64_t k = sweep_value_key(v[i] == 0 ? 0.0 : v[i]);
+          const unsigned j = slot_of[std::size_t(k >> (64 - F))];
+          if (j == 255) continue;
+          const slot& s = slots[j];
+          if (s.hist) ++s.hist[std::size_t((k << F) >> (64 - nb))];
+          else s.keys->push_back(k);
         }
         return;
       }
