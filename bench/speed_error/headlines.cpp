@@ -255,7 +255,8 @@ headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
                       "; " + with_digits("peer_newton", *d) + ")"});
   }
   h.remark = "theorem_minimum_double also forms every minimiser (2 or 4) and its lobe; peer_newton forms theta_first "
-             "alone. Both take u* by Newton on H from the same start (pi m_min/(4b)).";
+             "alone. peer_newton takes u* by Newton on H with libm's tan and atan from pi m_min/(4b); "
+             "theorem_minimum_double starts from H's expansions and proves its last step in double-double.";
   return h;
 }
 
