@@ -116,13 +116,16 @@ GYRORES_DD_INLINE double_double sqrt(const double_double& x) {
 // (H - h) 2^64 + L1 2^32 is an exact double (42 bits), two_sum adds it to h 2^64 exactly, and the
 // low part plus L0 is exact unless |v| >= 2^106 (integers below 2^53), where its rounding is below
 // 2^-53 (ulp(hi)/2 + 2^32). The last fast_two_sum is exact.
+// (Not recursive for the sign: an always-inline function cannot call itself.)
 GYRORES_DD_INLINE double_double of_int(int128 v) {
-  if (v < 0) return neg(of_int(int128(-v)));
-  const auto L = std::uint64_t(v);
-  const auto H = std::int64_t(v >> 64);
+  const int128 m = v < 0 ? -v : v;
+  const auto L = std::uint64_t(m);
+  const auto H = std::int64_t(m >> 64);
   const double h = double(H);
-  const double_double s = two_sum(h * 0x1p64, double(H - std::int64_t(h)) * 0x1p64 + double(std::int64_t(L >> 32)) * 0x1p32);
-  return fast_two_sum(s.hi, s.lo + double(std::int64_t(L & 0xffffffffu)));
+  const double mid = double(H - std::int64_t(h)) * 0x1p64 + double(std::int64_t(L >> 32)) * 0x1p32;  // exact
+  const double_double s = two_sum(h * 0x1p64, mid);
+  const double_double r = fast_two_sum(s.hi, s.lo + double(std::int64_t(L & 0xffffffffu)));
+  return v < 0 ? neg(r) : r;
 }
 GYRORES_DD_INLINE double_double of_int(std::int64_t v) {
   if (v < (std::int64_t(1) << 53) && v > -(std::int64_t(1) << 53)) return {double(v), 0};
