@@ -50,6 +50,21 @@ double ulps(double value, mpfr_ptr ref) {
 
 void set_decimal(mpfr_ptr out, const std::string& text) { mpfr_set_str(out, text.c_str(), 10, MPFR_RNDN); }
 
+// s, c against MPFR's sin x, cos x: required within 2^-63 |sin x| and 2^-63; the worst errors
+// seen (in those units) kept in worst_s, worst_c.
+void require_sin_cos_2_63(const double_double& x, const double_double& s, const double_double& c, double& worst_s,
+                          double& worst_c) {
+  mp X(x), S, C;
+  mpfr_sin_cos(S, C, X, MPFR_RNDN);
+  const double es = error_in(s, S, 0x1p-63 * std::fabs(mpfr_get_d(S, MPFR_RNDN)));
+  const double ec = error_in(c, C, 0x1p-63);
+  worst_s = std::max(worst_s, es);
+  worst_c = std::max(worst_c, ec);
+  INFO("x = " << x.hi << " + " << x.lo);
+  REQUIRE(es <= 1);
+  REQUIRE(ec <= 1);
+}
+
 }  // namespace
 
 TEST_CASE("double_double: sin and cos within 2^-63 for |x| < 2", "[double_double]") {
@@ -64,15 +79,7 @@ TEST_CASE("double_double: sin and cos within 2^-63 for |x| < 2", "[double_double
     if (std::fabs(x.hi) >= 2) continue;
     double_double s, c;
     dd_sin_cos(x, s, c);
-    mp X(x), S, C;
-    mpfr_sin_cos(S, C, X, MPFR_RNDN);
-    const double es = error_in(s, S, 0x1p-63 * std::fabs(mpfr_get_d(S, MPFR_RNDN)));
-    const double ec = error_in(c, C, 0x1p-63);
-    worst_s = std::max(worst_s, es);
-    worst_c = std::max(worst_c, ec);
-    INFO("x = " << x.hi << " + " << x.lo);
-    REQUIRE(es <= 1);
-    REQUIRE(ec <= 1);
+    require_sin_cos_2_63(x, s, c, worst_s, worst_c);
   }
   // The bounds are not vacuous: the worst case uses a fair part of them, and 2^-90 would fail.
   CHECK(worst_s > 0x1p-30);
@@ -99,15 +106,7 @@ TEST_CASE("double_double: the first quadrant's sin and cos within 2^-63 for 0 <=
     dd_sin_cos_first_quadrant(table, x, s, c);
     REQUIRE(std::fabs(s.lo) <= 0x1p-53 * std::fabs(s.hi));  // normalised
     REQUIRE(std::fabs(c.lo) <= 0x1p-53 * std::fabs(c.hi));
-    mp X(x), S, C;
-    mpfr_sin_cos(S, C, X, MPFR_RNDN);
-    const double es = error_in(s, S, 0x1p-63 * std::fabs(mpfr_get_d(S, MPFR_RNDN)));
-    const double ec = error_in(c, C, 0x1p-63);
-    worst_s = std::max(worst_s, es);
-    worst_c = std::max(worst_c, ec);
-    INFO("x = " << x.hi << " + " << x.lo);
-    REQUIRE(es <= 1);
-    REQUIRE(ec <= 1);
+    require_sin_cos_2_63(x, s, c, worst_s, worst_c);
   }
   CHECK(worst_s > 0x1p-30);
   CHECK(worst_c > 0x1p-30);

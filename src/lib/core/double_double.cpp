@@ -49,32 +49,50 @@ const sin_cos_table& table() {
   return t;
 }
 
+// |x| = c + d with c = i 2^-7 (the reduction of the header comment; |x| < 2).
+struct reduction {
+  bool negative;
+  int i;
+  double_double d;
+};
+GYRORES_DD_INLINE reduction reduce(const double_double& x) {
+  const bool negative = x.hi < 0;
+  const double_double ax = negative ? dd::neg(x) : x;
+  const int i = int(ax.hi * 128);  // 0 <= i < 256 for |x| < 2
+  return {negative, i, dd::two_sum(ax.hi - i * 0x1p-7, ax.lo)};
+}
+
+// sin x = S_i cos d + C_i sin d and cos x = C_i cos d - S_i sin d from sd = sin d and cd = cos d
+// (for i = 0, sin d and cos d), with x's sign on the sine.
+GYRORES_DD_INLINE void add_table_angle(const reduction& r, const double_double& sd, const double_double& cd,
+                                       double_double& s, double_double& c) {
+  if (r.i == 0) {
+    s = sd;
+    c = cd;
+  } else {
+    const sin_cos_table& t = table();
+    const double_double& S = t.s[std::size_t(r.i)];
+    const double_double& C = t.c[std::size_t(r.i)];
+    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
+    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
+  }
+  if (r.negative) s = dd::neg(s);
+}
+
 }  // namespace
 
 const sin_cos_table& dd_sin_cos_table() { return table(); }
 
 GYRORES_DD_FAST void dd_sin_cos(const double_double& x, double_double& s, double_double& c) {
-  const bool negative = x.hi < 0;
-  const double_double ax = negative ? dd::neg(x) : x;
-  const int i = int(ax.hi * 128);  // 0 <= i < 256 for |x| < 2
-  const double_double d = dd::two_sum(ax.hi - i * 0x1p-7, ax.lo);
+  const reduction r = reduce(x);
+  const double_double& d = r.d;
   const double e = d.hi * d.hi;
   const double p = e * (-1.0 / 6 + e * (1.0 / 120 - e * (1.0 / 5040 - e * (1.0 / 362880))));
   const double q = e * e * (1.0 / 24 - e * (1.0 / 720 - e * (1.0 / 40320 - e * (1.0 / 3628800))));
   const double_double sd = dd::add(d, d.hi * p);
   const double_double half_d2 = dd::add(dd::scale(dd::two_prod(d.hi, d.hi), 0.5), d.hi * d.lo);
   const double_double cd = dd::add(dd::add(double_double(1.0), dd::neg(half_d2)), q);
-  if (i == 0) {
-    s = sd;
-    c = cd;
-  } else {
-    const sin_cos_table& t = table();
-    const double_double& S = t.s[std::size_t(i)];
-    const double_double& C = t.c[std::size_t(i)];
-    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
-    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
-  }
-  if (negative) s = dd::neg(s);
+  add_table_angle(r, sd, cd, s, c);
 }
 
 }  // namespace gyrores
@@ -160,23 +178,11 @@ GYRORES_DD_INLINE double_double cos_small(const double_double& e) {
 }  // namespace
 
 GYRORES_DD_FAST void dd_sin_cos_accurate(const double_double& x, double_double& s, double_double& c) {
-  const bool negative = x.hi < 0;
-  const double_double ax = negative ? dd::neg(x) : x;
-  const int i = int(ax.hi * 128);  // 0 <= i < 256 for |x| < 2
-  const double_double d = dd::two_sum(ax.hi - i * 0x1p-7, ax.lo);
+  const reduction r = reduce(x);
+  const double_double& d = r.d;
   const double_double e = dd::mul(d, d);
   const double_double sd = sin_small(d, e), cd = cos_small(e);
-  if (i == 0) {
-    s = sd;
-    c = cd;
-  } else {
-    const sin_cos_table& t = table();
-    const double_double& S = t.s[std::size_t(i)];
-    const double_double& C = t.c[std::size_t(i)];
-    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
-    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
-  }
-  if (negative) s = dd::neg(s);
+  add_table_angle(r, sd, cd, s, c);
 }
 
 }  // namespace gyrores

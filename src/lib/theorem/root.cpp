@@ -85,7 +85,8 @@ root_start theorem_root_start(double x, double v) {
 // Until a step is below 2^-18 u: H''/(2H') = (1 - x^2) sin u cos u/(E (E + 1)) <= 2/3 (E >= 1/2
 // for u <= pi/4), so the error left is about 2^-36 u^2 <= 2^-36.3 u, below the 2^-35 u the
 // double-double step accepts. Kept in [lo, hi] (the root's bracket: w >= mu/2 > 0 there).
-GYRORES_DD_INLINE double theorem_root_double_steps(const sin_cos_table& t, double x, double mu, double u, double lo, double hi) {
+GYRORES_DD_INLINE double theorem_root_double_steps(const sin_cos_table& t, double x, double mu, double u, double lo,
+                                                  double hi) {
   for (int i = 0; i < 8; ++i) {
     const sin_cos_pair su = sin_cos_rough(t, u), sw = sin_cos_rough(t, mu - x * u);
     const double F = x * su.s * sw.c - su.c * sw.s, D = su.c * sw.c + x * su.s * sw.s;
