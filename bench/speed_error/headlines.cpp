@@ -67,8 +67,8 @@ std::string h1_remark(const std::vector<measurement>& rows, const std::vector<be
   if (!units.empty())
     out = "In double theorem_minimum_double takes the time of " + format_number("%.2g", median(units)) +
           " evaluations of (q, q', z, z') (one_eval, two sin_cos; median over the pairs) for the lobes by integers, "
-          "u* by Newton on H(u) = x u + arctan(x tan u) finished in double-double, r_res, theta_first and t_first "
-          "within an ulp.";
+          "u* of H(u) = x u + arctan(x tan u) = mu by expansions and Newton steps proved in double-double, r_res, "
+          "theta_first and t_first within an ulp.";
   if (!lattice.empty())
     out += std::string(out.empty() ? "" : " ") + "The reference lattice from before the theorem (ref_lattice) takes " +
            format_number("%.2g", median(lattice)) + "x its time.";

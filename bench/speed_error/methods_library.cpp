@@ -413,8 +413,8 @@ std::vector<method_def> library_methods(const run_config&) {
        "**theorem (double)**: theorem_minimum_double (theorem/minimum.hpp): m_min and the minimisers' lobes by "
        "integers (one extended Euclid), u* = H^{-1}(pi m_min/(2a)) from H's expansions, Newton in double by the "
        "sin/cos table where they are not close, and one double-double Newton step that carries the proof, without "
-       "libm (theorem_root_refined), r_res, theta_first and t_first within one ulp (proved error bounds, no enclosure), "
-       "and every minimiser; pairs of order below 2^120 (the sweep rows, design catalogue and figures)",
+       "libm (theorem_root_refined), r_res, theta_first and t_first within one ulp (proved error bounds, no "
+       "enclosure), and every minimiser; pairs of order below 2^120 (the sweep rows, design catalogue and figures)",
        skip_theorem_double, theorem_double_case},
       {"theorem_proved", "theorem",
        "**theorem, proved (MPFI+Arb)**: the proved minimum at the digits' precision (theorem/root.hpp, "
