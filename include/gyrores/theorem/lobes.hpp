@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include <gyrores/core/integer.hpp>
@@ -26,7 +27,9 @@ inline constexpr const char* lattice_theorem_id = "lattice-theorem/1";
 // (delta odd), 2 for a = 2 mod 4 (delta = 0 mod 4). The same integer as
 // resonant_pair::strand_offset_min(), from a alone.
 template <class L> int theorem_m_min(const L& a) {
-  const int r = int(int_mod(a, L(4)));
+  int r;
+  if constexpr (std::is_same_v<L, big_int>) r = int(int_mod(a, L(4)));
+  else r = int(a & L(3));  // machine integers (two's complement): a mod 4 without a division
   return std::min(r, 4 - r);
 }
 
@@ -114,19 +117,25 @@ template <class L>
     return 2;
   }
   const L ah = m == 1 ? a : L(a / 2), d = m == 1 ? L(2 * b) : b;
-  L r0 = d, r1 = ah, s0 = 0, s1 = 1, t0 = 1, t1 = 0;  // r = s ah + t d throughout
-  while (r1 != 0) {
-    const L q = r0 / r1;
-    L v = r0 - q * r1;
-    r0 = r1, r1 = v;
-    v = s0 - q * s1;
-    s0 = s1, s1 = v;
-    v = t0 - q * t1;
-    t0 = t1, t1 = v;
+  // Euclid on (d, ah), r = s ah + t d throughout. The first quotient d/ah is 0 or 1 (d < 2 ah: b
+  // < a), so it needs no division; then the two rows take turns (no moves between them), each
+  // step one division whose quotient and remainder come together.
+  L r0 = d, r1 = ah, s0 = 0, s1 = 1, t0 = 1, t1 = 0;
+  if (r0 >= r1) r0 -= r1, s0 -= s1, t0 -= t1;
+  for (;;) {  // here r0 < r1
+    if (r0 == 0) {  // the gcd is r1
+      r0 = r1, s0 = s1, t0 = t1;
+      break;
+    }
+    L q = r1 / r0;
+    r1 -= q * r0, s1 -= q * s0, t1 -= q * t0;
+    if (r1 == 0) break;  // the gcd is r0
+    q = r0 / r1;
+    r0 -= q * r1, s0 -= q * s1, t0 -= q * t1;
   }
   if (r0 != 1) throw usage_error("minimiser lobes: tau and sigma are not coprime");
   if (s0 < 0) s0 += d, t0 -= ah;
-  const lobe_frame<L> pass{L(-t0), L((s0 - 1) / 2), L(m)};
+  const lobe_frame<L> pass{L(-t0), L((s0 - 1) >> 1), L(m)};  // s0 - 1 >= 0 and even
   const lobe_frame<L> mirror{L(a - pass.k), L(b - 1 - pass.j), L(-m)};
   const bool pass_first = 2 * pass.k < ah;
   if (m == 1) {

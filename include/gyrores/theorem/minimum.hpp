@@ -30,8 +30,11 @@ template <class L> struct minimum_double_of {
   int m_min = 0;
   double u_star = 0;                          // 0 for degenerate pairs
   double r_res = 0, theta_first = 0, t_first = 0;
-  std::array<double, 4> minimisers{};         // ascending, `count` of them
-  std::array<lobe_frame<L>, 4> lobes{};       // their lobes (k in [0, a)), same order
+  // Ascending, `count` of them, and their lobes (k in [0, a)) in the same order; the entries
+  // from `count` on are 0 in a result (left uninitialised by default construction, which the
+  // double path's result skips: `minimum_double_of r{};` zeroes them).
+  std::array<double, 4> minimisers;
+  std::array<lobe_frame<L>, 4> lobes;
   std::size_t count = 0;
 };
 using minimum_double = minimum_double_of<std::int64_t>;

@@ -41,21 +41,23 @@ namespace gyrores {
 // if it does not converge); accurate to about an ulp. compute_error if neither converges.
 double theorem_root_double(double x, double mu);
 
-// u* = H^{-1}(mu) as a double-double, with sin u* and cos u*: a start from two expansions of H
-// (src/lib/theorem/root.cpp theorem_root_start; within 2^-37 u* for b >= 25, or b = 1 and
+// u* = H^{-1}(mu) as a double-double, with sin u* and cos u* (the steps are written out, with
+// their proofs, in src/lib/theorem/root_refined.hpp): a start from two expansions of H
+// (theorem_root_start; within 2^-37 u* for b >= 25, or b = 1 and
 // a >= 32), Newton steps in double on tan(H(u) - mu) (no arctangent) from the others, then
 // Newton steps in double-double on the equivalent equation
 //   F(u) = x sin u cos w - cos u sin w = 0,   w = mu - x u,
 // (for 0 < u < pi/2 and 0 < mu < pi/2, |w| < pi/2 and F = cos u cos w (x tan u - tan w) has the
 // sign of H(u) - mu), F' = 2x cos u cos w + (1 + x^2) sin u sin w, which is x (cos w/cos u +
 // cos u/cos w) >= 2x at the root and >= 2x cos u cos w everywhere. Both terms of F are about
-// x sin u cos w near the root, each formed to a relative error below 2^-61.7 (root.cpp
-// newton_step_table: the sines and cosines of core/double_double.hpp dd_sin_cos_first_quadrant
-// and double-double products; for u, w < 2^-7 newton_step_small, Taylor polynomials alone, to
-// 2^-63 x u), so a step's error is below 2^-60.7 x sin u cos w/(2x cos u cos w) = 2^-61.7 tan u
-// <= 2^-61.3 u (tan u <= (4/pi) u for the steps' u <= mu/(2x) = pi m/(4b) <= pi/4).
+// x sin u cos w near the root, each formed to a relative error below 2^-61.7 (table_step_at: the
+// sines and cosines of core/double_double.hpp dd_sin_cos_first_quadrant and double-double
+// products; for u, w < 2^-7 small_step_at, Taylor polynomials alone, F to 2^-62.5 x u), so a
+// step's error is below 2^-60.7 x sin u cos w/(2x cos u cos w) = 2^-61.7 tan u <= 2^-61.3 u
+// (tan u <= (4/pi) u for the steps' u <= mu/(2x) = pi m/(4b) <= pi/4).
 // Steps repeat until one is below 2^-35 u (Newton's quadratic term is then below (1 + x^2) tan u
-// 2^-70 u^2 <= 2^-68 u: |F''/(2F')| <= (1 + x^2) tan u near the root). The result is within
+// 2^-70 u^2 <= 2^-68 u: |F''/(2F')| <= (1 + x^2) tan u near the root; for u, w < 2^-7 below
+// 2^-30 u, where that term is below 2^-65.9 u). The result is within
 // 2^-61 u* of it, and sin u*, cos u* within 2^-60 of theirs (first-order steps, second-order
 // terms below 2^-70 u); sin w at the returned u within 2^-62 of sin(w(u)), so within 2^-59.7 of
 // sin w* (|w(u) - w*| = x |u - u*| <= 2^-61 x u* <= 2^-61 w*, as x u* <= mu/2 <= w*).

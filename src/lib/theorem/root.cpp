@@ -10,6 +10,8 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/roots.hpp>
 
+#include "root_refined.hpp"
+
 namespace gyrores {
 
 namespace {
@@ -38,148 +40,12 @@ double theorem_root_double(double x, double mu) {
       .root;
 }
 
-namespace {
-
-// sin and cos of 0 <= v <= 3/2 to about 2^-50 from the high parts of core/double_double.hpp's
-// table and Taylor polynomials of d = v - i/128 to d^5 (the double steps' values: they need no
-// more, the double-double step below decides).
-struct sin_cos_pair {
-  double s, c;
-};
-GYRORES_DD_INLINE sin_cos_pair sin_cos_rough(const sin_cos_table& t, double v) {
-  const int i = int(v * 128);
-  const double d = v - i * 0x1p-7, e = d * d;
-  const double cd = 1 - e * (0.5 - e * (1.0 / 24)), sd = d - d * e * (1.0 / 6 - e * (1.0 / 120));
-  const double S = t.s[std::size_t(i)].hi, C = t.c[std::size_t(i)].hi;
-  return {S * cd + C * sd, C * cd - S * sd};
+void detail::root_refined_failed() {
+  throw compute_error("lattice theorem: the double-double Newton steps for x u + arctan(x tan u) = mu did not settle");
 }
-
-// The start of theorem_root_refined's Newton steps, with v = mu/(2x) = pi m/(4b) (> 1/2 only for
-// b = 1: m = 1 for b odd, b = 2 is degenerate, b >= 3 gives v <= pi/8). Only the speed depends on
-// it (the double-double step decides). Two expansions, each within 2^-37 u* where `close` says
-// so (measured against MPFR roots: the O(v^6) and O(x^6) remainders are about v^6/2 and x^6/3):
-//  - H(u)/(2x) = u + alpha u^3 + beta u^5 + O(u^7), alpha = (1 - x^2)/6, beta = (1 - x^2)(2 -
-//    3x^2)/30 (the series of tan and arctan), inverted: u* = v - alpha v^3 + (3 alpha^2 - beta) v^5
-//    + O(v^7); close for v <= 2^-5 (b >= 25: most pairs of a large sweep);
-//  - b = 1 (mu/x = pi/2, x = 1/a): H(u)/x = u + tan u - x^2 tan^3 u/3 + x^4 tan^5 u/5 - ..., so
-//    u* = u0 + c1 x^2 + c2 x^4 + O(x^6) with u0 + tan u0 = pi/2 (the x -> 0 limit), t = tan u0,
-//    c1 = t^3/(3 (2 + t^2)), c2 = (t^2 (1 + t^2) c1 - t (1 + t^2) c1^2 - t^5/5)/(2 + t^2) (the
-//    constants to double precision, from mpmath at 40 digits); close for x <= 2^-5.
-struct root_start {
-  double u;
-  bool close;
-};
-root_start theorem_root_start(double x, double v) {
-  if (v > 0.5) {
-    constexpr double u0 = 0x1.6bc1c59f8b810p-1, c1 = 0x1.3d4b245548d38p-4, c2 = -0x1.4c7d8a66b6b0fp-10;
-    const double x2 = x * x;
-    return {u0 + x2 * (c1 + x2 * c2), x <= 0x1p-5};
-  }
-  const double y = 1 - x * x, alpha = y * (1.0 / 6), beta = y * (2 - 3 * x * x) * (1.0 / 30), v2 = v * v;
-  return {v * (1 - v2 * (alpha - v2 * (3 * alpha * alpha - beta))), v <= 0x1p-5};
-}
-
-// Newton steps in double on G(u) = tan(H(u) - mu) = F/D (F as in theorem/root.hpp, D = cos u cos w
-// + x sin u sin w > 0 for w > 0), which has the root of H and needs no arctangent: G' = (1 + G^2)
-// H', H' = x (E + 1)/E, F^2 + D^2 = E = cos^2 u + x^2 sin^2 u, so the step G/G' is F D/(x (E + 1)).
-// Until a step is below 2^-18 u: H''/(2H') = (1 - x^2) sin u cos u/(E (E + 1)) <= 2/3 (E >= 1/2
-// for u <= pi/4), so the error left is about 2^-36 u^2 <= 2^-36.3 u, below the 2^-35 u the
-// double-double step accepts. Kept in [lo, hi] (the root's bracket: w >= mu/2 > 0 there).
-GYRORES_DD_INLINE double theorem_root_double_steps(const sin_cos_table& t, double x, double mu, double u, double lo,
-                                                  double hi) {
-  for (int i = 0; i < 8; ++i) {
-    const sin_cos_pair su = sin_cos_rough(t, u), sw = sin_cos_rough(t, mu - x * u);
-    const double F = x * su.s * sw.c - su.c * sw.s, D = su.c * sw.c + x * su.s * sw.s;
-    const double E = su.c * su.c + x * x * su.s * su.s;
-    const double du = F * D / (x * (E + 1));
-    u = std::clamp(u - du, lo, hi);
-    if (std::fabs(du) <= 0x1p-18 * u) break;
-  }
-  return u;
-}
-
-// The double-double Newton step of theorem/root.hpp from a double u in [lo, hi] (so w = mu - x u
-// >= mu/2 > 0): true, with `out`, if its correction delta is below 2^-35 u; else u + delta.
-//
-// Through the table (any u <= pi/4, w <= pi/6): F = x sin u cos w - cos u sin w with the sines
-// and cosines of core/double_double.hpp (dd_sin_cos_first_quadrant: sin within 2^-63 relative,
-// cos within 2^-63, so within 2^-62.5 relative as cos u >= cos(pi/4), cos w >= cos(pi/6)) and
-// two double-double products (7u^2 each): T1 = x sin u cos w and T2 = cos u sin w within 2^-61.7
-// of theirs; T1 - T2 by an exact two_sum of the high parts and the low parts in double.
-GYRORES_DD_INLINE bool newton_step_table(const sin_cos_table& table, const double_double& x, const double_double& mu,
-                                         double& u, root_double_double& out) {
-  double_double su, cu, sw, cw;
-  dd_sin_cos_first_quadrant(table, u, su, cu);
-  dd_sin_cos_first_quadrant(table, dd::sub(mu, dd::mul(x, u)), sw, cw);
-  const double_double T1 = dd::mul(dd::mul(x, su), cw), T2 = dd::mul(cu, sw);
-  const double_double f = dd::two_sum(T1.hi, -T2.hi);
-  const double F = f.hi + (f.lo + (T1.lo - T2.lo));
-  const double dF = 2 * x.hi * cu.hi * cw.hi + (1 + x.hi * x.hi) * su.hi * sw.hi;
-  const double delta = -F / dF;
-  if (!(std::fabs(delta) <= 0x1p-35 * u)) {
-    u += delta;
-    return false;
-  }
-  // sin and cos at u + delta and sin w there (w - x delta): the first-order terms (the second
-  // are below 2^-70 of them: |x delta| <= 2^-35 x u <= 2^-35 w, as x u <= mu/2 <= w).
-  out = {dd::two_sum(u, delta), dd::add(su, delta * cu.hi), dd::add(cu, -delta * su.hi),
-         dd::add(sw, -(x.hi * delta) * cw.hi)};
-  return true;
-}
-
-// The same step for u, w < 2^-7 (hi < 2^-7 and mu < 2^-7: b >= 101 m and a >= 201 m), by the
-// Taylor polynomials alone: sin v = v (1 + p(v)), cos v = 1 - g(v), p and g those of
-// dd_sin_cos_first_quadrant (|p| < 2^-16.5, |g| < 2^-15, within 2^-67.3 and 2^-65.9 in double).
-// Then F = (x u - w) + x u A - w B, A = p(u) - g(w) - p(u) g(w), B = p(w) - g(u) - p(w) g(u),
-// and x u - w = 2 x u - mu = L. L from the exact product 2 x.hi u = P: 2 P.hi - mu.hi is exact
-// when it is below mu.hi/2 (Sterbenz's lemma; an accepted step has |L| <= 2^-14 mu), the low
-// parts in double; A and B (p(w), g(w) at w.hi, within 2^-52 w: their slopes are below w < 2^-7)
-// within 2^-64.5, and x u A, w B (below 2^-14.9 x u and w) in double: F within 2^-63 (x u + w)
-// <= 2^-62 x u near the root, so the step within 2^-63 u (F' >= 2x cos u cos w > 1.99 x). The
-// outputs take the first-order terms as above, with sin u = u + u p(u) and sin w = w + w p(w)
-// (w = mu - x u by an exact two_sum of the high parts).
-GYRORES_DD_INLINE bool newton_step_small(const double_double& x, const double_double& mu, double& u,
-                                         root_double_double& out) {
-  const double_double P = dd::two_prod(x.hi, u);
-  const double_double d = dd::two_sum(mu.hi, -P.hi);
-  const double_double w = dd::fast_two_sum(d.hi, d.lo + (mu.lo - P.lo - x.lo * u));
-  const double eu = u * u, ew = w.hi * w.hi;
-  const double gu = eu * (0.5 - eu * (1.0 / 24 - eu * (1.0 / 720)));
-  const double gw = ew * (0.5 - ew * (1.0 / 24 - ew * (1.0 / 720)));
-  const double pu = eu * (-1.0 / 6 + eu * (1.0 / 120 - eu * (1.0 / 5040)));
-  const double pw = ew * (-1.0 / 6 + ew * (1.0 / 120 - ew * (1.0 / 5040)));
-  const double A = pu - gw - pu * gw, B = pw - gu - pw * gu;
-  const double F = (2 * P.hi - mu.hi) + ((2 * P.lo + 2 * x.lo * u - mu.lo) + (P.hi * A - w.hi * B));
-  const double dF = 2 * x.hi * (1 - gu) * (1 - gw) + (1 + x.hi * x.hi) * u * w.hi;
-  const double delta = -F / dF;
-  if (!(std::fabs(delta) <= 0x1p-35 * u)) {
-    u += delta;
-    return false;
-  }
-  out = {dd::two_sum(u, delta), dd::fast_two_sum(u, u * pu + delta * (1 - gu)),
-         dd::fast_two_sum(1, -(gu + delta * u)), dd::fast_two_sum(w.hi, w.lo + w.hi * pw - (x.hi * delta) * (1 - gw))};
-  return true;
-}
-
-}  // namespace
 
 GYRORES_DD_FAST root_double_double theorem_root_refined(const double_double& x, const double_double& mu) {
-  // The root's bracket, widened below (u* >= mu/(1 + x) > mu/2; no division): the steps stay in
-  // it, so w = mu - x u >= mu/2 > 0.
-  const double lo = 0.5 * mu.hi, hi = mu.hi / (2 * x.hi);
-  const root_start start = theorem_root_start(x.hi, hi);
-  double u = std::clamp(start.u, lo, hi);
-  root_double_double out;
-  if (hi < 0x1p-7 && mu.hi < 0x1p-7) {
-    for (int step = 0; step < 4; ++step, u = std::clamp(u, lo, hi))
-      if (newton_step_small(x, mu, u, out)) return out;
-  } else {
-    const sin_cos_table& table = dd_sin_cos_table();
-    if (!start.close) u = theorem_root_double_steps(table, x.hi, mu.hi, u, lo, hi);
-    for (int step = 0; step < 4; ++step, u = std::clamp(u, lo, hi))
-      if (newton_step_table(table, x, mu, u, out)) return out;
-  }
-  throw compute_error("lattice theorem: the double-double Newton steps for x u + arctan(x tan u) = mu did not settle");
+  return detail::root_refined(x, mu, x.hi, mu.hi / (2 * x.hi));
 }
 
 double paper_root_double(double s) {
