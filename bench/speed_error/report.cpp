@@ -97,7 +97,7 @@ void write_setup(std::ostream& f, const run_context& ctx) {
 
 void write_definitions(std::ostream& f, const run_context& ctx) {
   f << "**Columns.** *time*: median over repetitions of the CPU time per call (Google Benchmark 1.7.1, thread CPU "
-       "time; 5 repetitions, 3 when one call exceeds 0.5 s; each repetition runs enough calls to last about "
+       "time; 9 repetitions (5 with --quick), 3 when one call exceeds 0.5 s; each repetition runs enough calls to last about "
     << "the target time; the mpmath peer is timed inside Python with `time.process_time`, same scheme). "
        "*digits*: correct decimal digits, `-log10(|x - ref|/|ref|)`, the smallest over the quantities the method "
        "computes (theta_first and r_res; theta_c for theta_asy; theta for the root-only refiners), clipped to "
