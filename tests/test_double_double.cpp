@@ -324,6 +324,19 @@ TEST_CASE("double_double: the lobes by one Euclid are the theorem's lobes", "[do
     }
   }
   CHECK_THROWS_AS(minimiser_lobes_euclid(std::int64_t(15), std::int64_t(3)), usage_error);  // (9, 6)
+  // minimiser_lobes_big (int64 Euclid below order 2^62) against the big-integer modular inverse.
+  auto same_big = [](const big_int& a, const big_int& b) {
+    const auto fast = minimiser_lobes_big(a, b), ref = minimiser_lobes(a, b);
+    INFO("a = " << a << ", b = " << b);
+    REQUIRE(fast.size() == ref.size());
+    for (std::size_t i = 0; i < ref.size(); ++i)
+      REQUIRE((fast[i].k == ref[i].k && fast[i].j == ref[i].j && fast[i].m == ref[i].m));
+  };
+  for (const auto& p : coprime_pairs(3, 300)) same_big(to_big(p.order()), big_int(p.delta()));
+  for (int i = 0; i < 300; ++i) {
+    const auto p = random_wide_pair(rng, 40 + i % 24, i);  // orders 2^40 to 2^64: both sides of 2^62
+    same_big(p.order(), big_int(p.delta()));
+  }
 }
 
 // The int128 double path (orders 2^62 to 2^120): r_res, theta_first, t_first within one ulp of

@@ -65,7 +65,7 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
   c.digits = digits;
   c.m_min = p.strand_offset_min();
   const big_int a = p.order(), b = big_int(p.delta());
-  c.lobes = minimiser_lobes(a, b).to_vector();
+  c.lobes = minimiser_lobes_big(a, b).to_vector();
   const auto& first = c.lobes.front();
   // Relative width of each claim: at most 2^-e <= 10^-(digits + 1).
   const int e = int(digits10_to_bits(digits + 1));

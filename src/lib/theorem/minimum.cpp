@@ -190,7 +190,7 @@ bool prove_minimum(minimum_enclosure& out, const theorem_constants& K, const res
   mpfi_sqr(out.h_z_max, v);
   mpfi_div_2ui(out.h_z_max, out.h_z_max, 1);
   mpfi_sub(out.h_z_max, out.h_z_max, out.h_min);
-  out.lobes = minimiser_lobes(a, b).to_vector();
+  out.lobes = minimiser_lobes_big(a, b).to_vector();
   out.minimisers.clear();
   for (const auto& f : out.lobes) {
     out.minimisers.push_back(std::make_unique<fixed_mpfi>(K.prec));
