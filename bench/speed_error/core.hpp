@@ -71,6 +71,7 @@ struct bench_case {
 struct measurement {
   std::string method, precision, pair;
   double median_ns = std::numeric_limits<double>::quiet_NaN();  // CPU time per call, median of repetitions
+  std::vector<double> round_ns;  // CPU time per call in each repetition, in round order (runner.cpp)
   double digits_theta = std::numeric_limits<double>::quiet_NaN();
   double digits_r = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::uint64_t> evaluations;

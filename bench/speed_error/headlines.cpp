@@ -28,6 +28,20 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The time ratio n/d of two rows: the median over rounds of the ratio within each round (every
+// round runs each case once, so the two repetitions of a round are seconds apart at most and
+// share the machine's load, which cancels; a burst that slows one method's median in one round
+// and the other's in another does not). Rows without rounds (the mpmath peer, timed in its own
+// process) give the ratio of the medians.
+double paired_ratio(const measurement& n, const measurement& d) {
+  const std::size_t k = std::min(n.round_ns.size(), d.round_ns.size());
+  if (k == 0) return n.median_ns / d.median_ns;
+  std::vector<double> r;
+  for (std::size_t i = 0; i < k; ++i) r.push_back(n.round_ns[i] / d.round_ns[i]);
+  std::sort(r.begin(), r.end());
+  return k % 2 ? r[k / 2] : (r[k / 2 - 1] + r[k / 2]) / 2;
+}
+
 // A headline target met per pair when time(num)/time(den) <= limit (at_most) or >= limit, at
 // precision `prec`: one value per pair where both rows ran, "<ratio> (<describe(num, den)>)",
 // labelled by the pair name and `suffix`.
@@ -45,7 +59,7 @@ void add_ratios(headline& h, const std::vector<measurement>& rows, const std::ve
     const auto* n = find_row(rows, t.num, t.prec, bp.name);
     const auto* d = find_row(rows, t.den, t.prec, bp.name);
     if (!n || !d) continue;
-    const double r = n->median_ns / d->median_ns;
+    const double r = paired_ratio(*n, *d);
     ++h.total;
     if (t.at_most ? r <= t.limit : r >= t.limit) ++h.met;
     h.values.push_back({bp.name + t.suffix, ratio_text(r) + " (" + describe(*n, *d) + ")"});
@@ -60,8 +74,8 @@ std::string h1_remark(const std::vector<measurement>& rows, const std::vector<be
     const auto* e = find_row(rows, "theorem_double", "double", bp.name);
     const auto* o = find_row(rows, "one_eval", "double", bp.name);
     const auto* l = find_row(rows, "ref_lattice", "double", bp.name);
-    if (e && o) units.push_back(e->median_ns / o->median_ns);
-    if (e && l) lattice.push_back(l->median_ns / e->median_ns);
+    if (e && o) units.push_back(paired_ratio(*e, *o));
+    if (e && l) lattice.push_back(paired_ratio(*l, *e));
   }
   std::string out;
   if (!units.empty())
@@ -94,7 +108,7 @@ headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
           {bp.name, "n/a: theta_asy undefined for x >= 1/2 (theorem " + format_time(e->median_ns) + ")"});
       continue;
     }
-    const double r = e->median_ns / t->median_ns;
+    const double r = paired_ratio(*e, *t);
     ++h.total;
     if (r <= 1.5) ++h.met;
     h.values.push_back({bp.name, ratio_text(r) + " (theorem " + format_time(e->median_ns) + ", theta_asy " +
@@ -154,7 +168,7 @@ headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>&
       h.values.push_back({bp.name, "no simulation setting reached 1e-8 in r_res"});
       continue;
     }
-    const double r = best->median_ns / e->median_ns;
+    const double r = paired_ratio(*best, *e);
     const bool full = e->digits() >= 14.5;
     if (r >= 1000 && full) ++h.met;
     h.values.push_back({bp.name, ratio_text(r) + " (" + best->method + ": " + format_time(best->median_ns) + ", " +
@@ -176,7 +190,7 @@ headline h4(const std::vector<measurement>& rows, const std::vector<bench_pair>&
   for (const auto& bp : pairs) {
     const auto* c = find_row(rows, "certificate", "mp30", bp.name);
     const auto* l = find_row(rows, "ref_lattice", "mp30", bp.name);
-    if (c && l) lattice.push_back(c->median_ns / l->median_ns);
+    if (c && l) lattice.push_back(paired_ratio(*c, *l));
   }
   if (!lattice.empty()) {
     std::sort(lattice.begin(), lattice.end());
@@ -197,9 +211,9 @@ std::string h5_remark(const std::vector<measurement>& rows, const std::vector<be
     const auto* e = find_row(rows, "theorem_proved", prec, bp.name);
     const auto* a = find_row(rows, "arb_newton", prec, bp.name);
     if (!o || !ao || !e || !a) continue;
-    ev_ratio.push_back(o->median_ns / ao->median_ns);
-    proved_units.push_back(e->median_ns / o->median_ns);
-    arb_units.push_back(a->median_ns / ao->median_ns);
+    ev_ratio.push_back(paired_ratio(*o, *ao));
+    proved_units.push_back(paired_ratio(*e, *o));
+    arb_units.push_back(paired_ratio(*a, *ao));
   }
   if (ev_ratio.empty()) return "";
   return std::string("At ") + prec + " (medians over the pairs): one MPFR evaluation (one_eval, two real_sin_cos: " +
@@ -244,7 +258,7 @@ headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
     const auto* big = e ? nullptr : find_row(rows, "theorem_proved", "double", bp.name);
     if (!d || !(e || big)) continue;
     const measurement& n = e ? *e : *big;
-    const double r = n.median_ns / d->median_ns;
+    const double r = paired_ratio(n, *d);
     ++h.total;
     if (r <= 1.25) ++h.met;
     h.values.push_back(
@@ -265,7 +279,7 @@ std::string ratio_of(const std::vector<measurement>& rows, const std::string& nu
                      const std::string& prec, const std::string& pair) {
   const auto* n = find_row(rows, num, prec, pair);
   const auto* d = find_row(rows, den, prec, pair);
-  return n && d ? ratio_text(n->median_ns / d->median_ns) : "";
+  return n && d ? ratio_text(paired_ratio(*n, *d)) : "";
 }
 
 // L2: the certificate against peer_arb_ball, which proves the same claims and writes them (and
@@ -280,7 +294,7 @@ headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>&
       const auto* c = find_row(rows, "certificate", prec, bp.name);
       const auto* d = find_row(rows, "peer_arb_ball", prec, bp.name);
       if (!c || !d) continue;
-      const double r = c->median_ns / d->median_ns;
+      const double r = paired_ratio(*c, *d);
       ++h.total;
       if (r <= 1.3) ++h.met;
       std::string more;
@@ -320,7 +334,7 @@ std::string peer_remark(const std::vector<measurement>& rows, const std::vector<
       for (const auto& bp : pairs) {
         const auto* n = find_row(rows, method, prec, bp.name);
         const auto* d = find_row(rows, peer, prec, bp.name);
-        if (n && d) r.push_back(n->median_ns / d->median_ns);
+        if (n && d) r.push_back(paired_ratio(*n, *d));
       }
       if (!r.empty()) items.push_back(label + " " + ratio_text(median(r)));
     }
@@ -342,7 +356,7 @@ std::string h3_peer_remark(const std::vector<measurement>& rows, const std::vect
     bool any = false;
     const auto* s = fastest_simulation(rows, bp.name, any);
     const auto* d = find_row(rows, "peer_newton", "double", bp.name);
-    if (s && d) r.push_back(s->median_ns / d->median_ns);
+    if (s && d) r.push_back(paired_ratio(*s, *d));
   }
   std::string out = peer_remark(rows, pairs, "peer_newton", {{"theorem_minimum_double", "theorem_double"}}, {"double"});
   if (!r.empty())

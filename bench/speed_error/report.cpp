@@ -131,7 +131,9 @@ void write_headlines(std::ostream& f, const std::vector<measurement>& rows, cons
   f << "## Headline figures\n\n";
   f << "L1 and L2: gyrores' paths as ratios to the theorem-aware peers, the limits. H1-H5: the theorem's path "
        "against the methods from before it and the other peers, each also quoted against the theorem-aware "
-       "peers. Every ratio is of two rows of this run.\n\n";
+       "peers. Every ratio is of two rows of this run: the median over the rounds of the two rows' time ratio "
+       "within a round (each round times every case once, so load common to both cancels); the times quoted "
+       "are the medians.\n\n";
   for (const auto& h : compute_headlines(rows, pairs)) {
     f << "**" << h.id << ". " << h.target << "**: " << verdict(h) << ".\n\n";
     if (!h.remark.empty()) f << h.remark << "\n\n";

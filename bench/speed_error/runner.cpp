@@ -146,6 +146,7 @@ void time_cases(piloted_run& run) {
     auto it = rep.ns.find(case_name(m));
     if (it != rep.ns.end() && !it->second.empty()) {
       m.median_ns = median_of(it->second);
+      m.round_ns = it->second;  // the reporter receives the runs in registration order: round by round
       m.repetitions = int(it->second.size());
     }
   }
