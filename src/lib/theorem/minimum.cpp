@@ -10,21 +10,6 @@ namespace gyrores {
 
 namespace {
 
-// The double path for a pair held in machine integers I (int64 for orders below 2^62, int128
-// below 2^120).
-//
-// Error budget (each quantity in double-double, then rounded once to a double): 1/a and x = b/a
-// are within 2^-104 and 2^-103 relative for a < 2^53 (reciprocal below, then one mul by the
-// exact b, <= 2u^2) and within 2^-98
-// above (a and b converted with relative error <= 2^-106, core/double_double.hpp of_int, then
-// one div <= 15u^2 + 56u^3 and one mul <= 7u^2, u = 2^-53), mu = pi m/(2a) within 2^-97. The root
-// u* moves by at most the relative perturbation of mu plus that of x: H(0) = 0 and H convex
-// give mu <= u* H'(u*), so (mu/u*) du*/dmu = mu/(u* H') <= 1; and (x/u*) |du*/dx| =
-// (x u + x t/(1 + x^2 t^2))/(u H') <= 1 since t <= u (1 + t^2) (tan u <= u sec^2 u). So the
-// computed u* is within 2^-60 + 2^-95 relative of the exact pair's (theorem/root.hpp), and
-// r_res, theta_first, t_first are within 2^-58 of their exact values before the last rounding
-// (r_res below; theta = 2 (k pi +- u*)/a with k pi - u* >= u*), so within an ulp after it.
-// Always inlined: each target clone of the callers below gets its own (FMA or not) code.
 // 1/d for a double d (|d| < 2^53 an integer here, so nothing underflows) within 2^-105 (1 +
 // 2^-52) relative, by a multiplication where dd::quotient divides again: q = RN(1/d) has |1/d -
 // q| <= 2^-53 |q|, and its remainder r = 1 - q d is a double (the remainder of a correctly
@@ -56,6 +41,21 @@ GYRORES_DD_INLINE double_double sqrt_lean(const double_double& x) {
   return dd::fast_two_sum(s, (__builtin_fma(-s, s, x.hi) + x.lo) / (2 * s));
 }
 
+// The double path for a pair held in machine integers I (int64 for orders below 2^62, int128
+// below 2^120).
+//
+// Error budget (each quantity in double-double, then rounded once to a double): 1/a and x = b/a
+// are within 2^-104 and 2^-103 relative for a < 2^53 (reciprocal above, then one mul by the
+// exact b, <= 2u^2) and within 2^-98
+// above (a and b converted with relative error <= 2^-106, core/double_double.hpp of_int, then
+// one div <= 15u^2 + 56u^3 and one mul <= 7u^2, u = 2^-53), mu = pi m/(2a) within 2^-97. The root
+// u* moves by at most the relative perturbation of mu plus that of x: H(0) = 0 and H convex
+// give mu <= u* H'(u*), so (mu/u*) du*/dmu = mu/(u* H') <= 1; and (x/u*) |du*/dx| =
+// (x u + x t/(1 + x^2 t^2))/(u H') <= 1 since t <= u (1 + t^2) (tan u <= u sec^2 u). So the
+// computed u* is within 2^-60 + 2^-95 relative of the exact pair's (theorem/root.hpp), and
+// r_res, theta_first, t_first are within 2^-58 of their exact values before the last rounding
+// (the argument is below, where they are formed), so within an ulp after it.
+// Always inlined: each target clone of the callers below gets its own (FMA or not) code.
 template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& tau, const I& sigma) {
   const I a = I(tau + sigma), b = I(tau - sigma);
   minimum_double_of<I> out;
@@ -134,8 +134,9 @@ template <class I> minimum_double_of<I> narrowed(const minimum_double_of<int128>
 }
 
 // int64 pairs of order 2^62 and above, in int128 (out of line: the hot path below keeps a
-// small frame).
-[[gnu::noinline]] GYRORES_DD_FAST minimum_double minimum_wide(const resonant_pair<std::int64_t>& p) {
+// small frame; one version, without FMA clones: Clang refuses target_clones on a noinline
+// function, and the fused multiply-adds are exact either way, through the C library's fma).
+[[gnu::noinline]] minimum_double minimum_wide(const resonant_pair<std::int64_t>& p) {
   if (p.order() >= (int128(1) << 63)) throw usage_error("theorem_minimum_double: pair " + p.str() + " has order >= 2^63");
   return narrowed<std::int64_t>(minimum_in<int128>(p.tau(), p.sigma()));
 }
