@@ -13,6 +13,7 @@ namespace gyrores::detail {
 
 // compute_error: the steps did not settle (out of line: the hot path carries no string).
 [[noreturn, gnu::cold]] void root_refined_failed();
+
 // sin and cos of 0 <= v <= 3/2 to about 2^-50 from the high parts of core/double_double.hpp's
 // table and Taylor polynomials of d = v - i/128 to d^5 (the double steps' values: they need no
 // more, the double-double step below decides).
