@@ -26,17 +26,12 @@
 #include <utility>
 #include <vector>
 
+#include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/integer.hpp>
 #include <gyrores/core/stop.hpp>
 #include <gyrores/model/pair.hpp>
 
 namespace gyrores {
-
-// The most significant digits a report gives (and certificates state).
-inline constexpr unsigned report_digits_max = 10000;
-
-// usage_error ("digits must be in [1, 10000], got D") outside [1, report_digits_max].
-void check_report_digits(unsigned digits);
 
 // One real of a report.
 struct proved_real {

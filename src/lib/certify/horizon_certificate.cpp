@@ -16,7 +16,7 @@
 #include <gyrores/model/rotation.hpp>
 #include <gyrores/theorem/horizon.hpp>
 
-#include "../theorem/arb_ball.hpp"
+#include "../core/ball.hpp"
 
 namespace gyrores {
 namespace {

@@ -1,10 +1,13 @@
-// Arb balls for the library's proofs (src/lib only, not installed): an arb_t and an fmpz_t that
-// clean up after themselves, and exact integers, rationals and Q(sqrt d) numbers as balls.
+// The one Arb kit of the library's proofs (src/lib only, not installed): an arb_t and an fmpz_t
+// that clean up after themselves; exact integers, rationals, Q(sqrt d) numbers and enclosures as
+// balls; and the ends of a ball as exact rationals or as an enclosure (core/enclosure.hpp).
+// A source file that includes it is listed in src/CMakeLists.txt (it needs Arb's include path).
 #pragma once
 #include <arb.h>
 
 #include <algorithm>
 
+#include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/quadratic.hpp>
 #include <gyrores/core/rational.hpp>
 
@@ -74,6 +77,52 @@ inline void set_quadratic(arb_t out, const quadratic_number& v, slong prec) {
   }
   set_int(t, v.r());
   arb_div(out, out, t, prec);
+}
+
+// The exact rational value of an arf (man 2^exp); precondition: finite.
+inline big_rational arf_rational(const arf_t v) {
+  fmpz_holder man, exp;
+  arf_get_fmpz_2exp(man, exp, v);
+  const big_int m = man.value(), e = exp.value();
+  if (e >= 0) return big_rational(big_int(m << static_cast<unsigned>(e.convert_to<long>())));
+  return big_rational(m, big_int(1) << static_cast<unsigned>((-e).convert_to<long>()));
+}
+
+// A rational lower (upper) bound of every value of v (its ends rounded outward to prec bits).
+inline big_rational lower_rational(const arb_t v, slong prec) {
+  arf_t b;
+  arf_init(b);
+  arb_get_lbound_arf(b, v, prec);
+  const big_rational r = arf_rational(b);
+  arf_clear(b);
+  return r;
+}
+inline big_rational upper_rational(const arb_t v, slong prec) {
+  arf_t b;
+  arf_init(b);
+  arb_get_ubound_arf(b, v, prec);
+  const big_rational r = arf_rational(b);
+  arf_clear(b);
+  return r;
+}
+
+// The ball holding [lo, hi] (lo <= hi, exact rationals).
+inline void set_interval(arb_t out, const big_rational& lo, const big_rational& hi, slong prec) {
+  ball a, b;
+  set_rational(a, lo, prec);
+  set_rational(b, hi, prec);
+  arb_union(out, a, b, prec);
+}
+
+// The ball holding an enclosure, and the enclosure of a finite ball (its ends exactly, at `prec`
+// bits rounded outward: arb_get_interval_mpfr).
+inline void set_enclosure(arb_t out, const enclosure& e, slong prec) {
+  arb_set_interval_mpfr(out, e.lo(), e.hi(), prec);
+}
+inline enclosure enclosure_of(const arb_t v, slong prec) {
+  exact_binary lo(prec), hi(prec);
+  arb_get_interval_mpfr(lo.get(), hi.get(), v);
+  return enclosure(lo, hi);
 }
 
 }  // namespace gyrores::arb_support

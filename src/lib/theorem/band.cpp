@@ -15,7 +15,7 @@
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/model/rotation.hpp>
 
-#include "arb_ball.hpp"
+#include "../core/ball.hpp"
 #include "band_envelope.hpp"
 #include "lobe_balls.hpp"
 
@@ -40,32 +40,6 @@ void sin_cos_clipped(arb_t s, arb_t c, const arb_t a, slong p) {
   if (!arb_is_finite(c) || !arb_contains(unit, c)) arb_set(c, unit);
 }
 
-// The exact rational value of an arf (man 2^exp).
-big_rational arf_rational(const arf_t v) {
-  fmpz_holder man, exp;
-  arf_get_fmpz_2exp(man, exp, v);
-  const big_int m = man.value(), e = exp.value();
-  if (e >= 0) return big_rational(big_int(m << static_cast<unsigned>(e.convert_to<long>())));
-  return big_rational(m, big_int(1) << static_cast<unsigned>((-e).convert_to<long>()));
-}
-
-big_rational upper_of(const arb_t v, slong p) {
-  arf_t b;
-  arf_init(b);
-  arb_get_ubound_arf(b, v, p);
-  const big_rational r = arf_rational(b);
-  arf_clear(b);
-  return r;
-}
-
-big_rational lower_of(const arb_t v, slong p) {
-  arf_t b;
-  arf_init(b);
-  arb_get_lbound_arf(b, v, p);
-  const big_rational r = arf_rational(b);
-  arf_clear(b);
-  return r;
-}
 
 big_int floor_int(const arb_t v, bool upper, slong p) {
   arf_t b;
@@ -77,15 +51,6 @@ big_int floor_int(const arb_t v, bool upper, slong p) {
   arf_clear(b);
   return z.value();
 }
-
-// The ball [lo, hi] (lo <= hi rationals).
-void set_interval(arb_t out, const big_rational& lo, const big_rational& hi, slong p) {
-  ball a, b;
-  set_rational(a, lo, p);
-  set_rational(b, hi, p);
-  arb_union(out, a, b, p);
-}
-
 
 double H_double(double x, double u) { return x * u + std::atan2(x * std::sin(u), std::cos(u)); }
 
@@ -176,10 +141,10 @@ struct band_ctx {
     ball n, x;
     set_rational(n, na, prec);
     x_of_n(x, n);
-    const big_rational lo = lower_of(x, prec);
+    const big_rational lo = lower_rational(x, prec);
     set_rational(n, nb, prec);
     x_of_n(x, n);
-    return {lo, upper_of(x, prec)};
+    return {lo, upper_rational(x, prec)};
   }
   // alpha_T/pi + 1/2 = T/(pi sqrt(1 - x^2)) + 1/2, whose floor is the lobe k_c holding t = T.
   void cut_argument(arb_t out, const arb_t x) const {
@@ -299,7 +264,7 @@ struct band_ctx {
     set_interval(xs, ylo, yhi, prec);
     G_of(g, xs, u, prec);
     if (!arb_is_finite(g)) return std::nullopt;
-    return upper_of(g, prec);
+    return upper_rational(g, prec);
   }
   // inf over x in [ylo, yhi] of V_x(m), m in [0, 1/2] (a lower bound, >= 0).
   big_rational V_lower(const big_rational& ylo, const big_rational& yhi, const big_rational& m) const {
@@ -318,7 +283,7 @@ struct band_ctx {
     set_interval(xs, ylo, yhi, prec);
     G_of(g, xs, u, prec);
     if (!arb_is_finite(g)) return 0;
-    const big_rational r = lower_of(g, prec);
+    const big_rational r = lower_rational(g, prec);
     return r > 0 ? r : big_rational(0);
   }
 
@@ -440,7 +405,7 @@ struct band_ctx {
     std::optional<big_rational> lo, hi;
     for (const arb_srcptr v : {R.get(), Rm.get()}) {
       if (!arb_is_finite(v)) continue;
-      const big_rational l = lower_of(v, prec), h = upper_of(v, prec);
+      const big_rational l = lower_rational(v, prec), h = upper_rational(v, prec);
       if (!lo || l > *lo) lo = l;
       if (!hi || h < *hi) hi = h;
     }
@@ -504,7 +469,7 @@ big_rational lipschitz_bound(const band_ctx& ctx, const big_rational& n1, const 
   if (!arb_is_finite(dR)) throw compute_error("band: no finite bound of dH_q/dn");
   arb_mul_2exp_si(dR, dR, -1);  // dH_q/dn = (dR/dn)/2
   arb_abs(dR, dR);
-  return upper_of(dR, p);
+  return upper_rational(dR, p);
 }
 
 // M(n) as a proved enclosure of R = 2 H_q (the horizon theorem at an exact rational n).
@@ -655,7 +620,7 @@ struct search {
         if (v.is_rational()) return big_rational(v.p(), v.r());
         ball vb_ball;
         set_quadratic(vb_ball, v, ctx.prec);
-        const big_rational l = lower_of(vb_ball, ctx.prec);
+        const big_rational l = lower_rational(vb_ball, ctx.prec);
         return l > 0 ? l : big_rational(0);
       };
       const big_rational ma = low(va), mb = low(vb);

@@ -3,7 +3,7 @@
 
 #include <arb.h>
 
-#include "arb_ball.hpp"
+#include "../core/ball.hpp"
 #include "lobe_balls.hpp"
 
 #include <algorithm>
@@ -24,15 +24,6 @@ using namespace arb_support;
 // to one) needs more, and a tie is never decided.
 slong precision_cap(slong prec0) { return std::max<slong>(prec0 << 6, slong(1) << 16); }
 std::string bits_text(slong prec0) { return std::to_string(precision_cap(prec0)) + " bits"; }
-
-// The exact rational value of an arf (man 2^exp).
-big_rational arf_rational(const arf_t v) {
-  fmpz_holder man, exp;
-  arf_get_fmpz_2exp(man, exp, v);
-  const big_int m = man.value(), e = exp.value();
-  if (e >= 0) return big_rational(m << static_cast<unsigned>(e.convert_to<long>()));
-  return big_rational(m, big_int(1) << static_cast<unsigned>((-e).convert_to<long>()));
-}
 
 // The coupling at one precision: x, s = sqrt(n^2 + 4), |n|, sqrt(1 - x^2), pi.
 struct coupling_balls {

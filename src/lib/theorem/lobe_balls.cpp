@@ -1,7 +1,7 @@
 // src/lib/theorem/lobe_balls.hpp
 #include "lobe_balls.hpp"
 
-#include "arb_ball.hpp"
+#include "../core/ball.hpp"
 
 namespace gyrores::lobe_balls {
 

@@ -288,11 +288,6 @@ unsigned start_bits(const resonant_pair<big_int>& p, unsigned digits, bool asymp
 
 }  // namespace
 
-void check_report_digits(unsigned digits) {
-  if (digits < 1 || digits > report_digits_max)
-    throw usage_error("digits must be in [1, " + std::to_string(report_digits_max) + "], got " + std::to_string(digits));
-}
-
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt) {
   check_report_digits(opt.digits);
   const exact_values e = exact_values_of(p, opt.qdot0);

@@ -1,0 +1,66 @@
+// include/gyrores/core/enclosure.hpp: proved values and their three roundings.
+#include <gyrores/core/enclosure.hpp>
+
+#include <cmath>
+
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/core/error.hpp>
+
+namespace gyrores {
+
+namespace {
+
+// The exact rational value of a finite MPFR number.
+big_rational rational_of(mpfr_srcptr v) {
+  big_int m;
+  const long e = long(mpfr_get_z_2exp(m.backend().data(), v));
+  if (e >= 0) return big_rational(big_int(m << static_cast<unsigned>(e)));
+  return big_rational(m, big_int(1) << static_cast<unsigned>(-e));
+}
+
+}  // namespace
+
+void check_report_digits(unsigned digits) {
+  if (digits < 1 || digits > report_digits_max)
+    throw usage_error("digits must be in [1, " + std::to_string(report_digits_max) + "], got " + std::to_string(digits));
+}
+
+enclosure enclosure::exact(const big_rational& v, mpfr_prec_t bits) {
+  enclosure e;
+  exact_binary lo(bits), hi(bits);
+  mpfr_set_q(lo.get(), v.backend().data(), MPFR_RNDD);
+  mpfr_set_q(hi.get(), v.backend().data(), MPFR_RNDU);
+  e.lo_ = lo;
+  e.hi_ = hi;
+  e.exact_ = v;
+  return e;
+}
+
+std::optional<std::string> enclosure::rounded(unsigned digits) const {
+  if (exact_) return format_rational_scientific(*exact_, digits);
+  std::string out;
+  if (!enclosure_rounding(lo_, hi_, digits, out)) return std::nullopt;
+  return out;
+}
+
+std::optional<double> enclosure::nearest_double() const {
+  if (exact_) {  // rounded once from the rational (53 bits, to nearest: the double itself)
+    exact_binary t(53);
+    mpfr_set_q(t.get(), exact_->backend().data(), MPFR_RNDN);
+    return mpfr_get_d(t, MPFR_RNDN);
+  }
+  // Rounding to nearest is monotone: if both ends round to one double, every value between does.
+  const double a = mpfr_get_d(lo_, MPFR_RNDN), b = mpfr_get_d(hi_, MPFR_RNDN);
+  if (a != b || !std::isfinite(a)) return std::nullopt;
+  return a;
+}
+
+std::pair<std::string, std::string> enclosure::outward(unsigned digits) const {
+  return {format_scientific(static_cast<mpfr_srcptr>(lo_), digits, MPFR_RNDD),
+          format_scientific(static_cast<mpfr_srcptr>(hi_), digits, MPFR_RNDU)};
+}
+
+big_rational enclosure::lo_rational() const { return exact_ ? *exact_ : rational_of(lo_); }
+big_rational enclosure::hi_rational() const { return exact_ ? *exact_ : rational_of(hi_); }
+
+}  // namespace gyrores
