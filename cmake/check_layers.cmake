@@ -1,6 +1,6 @@
 # Enforces the layering of include/gyrores/ (docs/architecture.md): a header may include headers
 # of its own folder or of a lower layer, never of a higher layer or of a sibling at the same
-# layer; the mathematics never includes io/. Run by ctest (test "layers"):
+# layer; the mathematics never includes io/; only app/ (the application layer) sits above io/. Run by ctest (test "layers"):
 #   cmake -DGYRORES_INCLUDE_DIR=<repo>/include/gyrores -P cmake/check_layers.cmake
 # Exit status non-zero, with one line per violation, when the rule is broken.
 cmake_minimum_required(VERSION 3.25)
@@ -14,10 +14,12 @@ set(layer_model 1)
 set(layer_theorem 2)
 set(layer_search 2)
 set(layer_certify 3)
-set(layer_design 4)
-set(layer_sweep 4)
-set(layer_io 5)
-set(known_folders core model theorem search certify design sweep io)
+set(layer_report 4)
+set(layer_design 5)
+set(layer_sweep 5)
+set(layer_io 6)
+set(layer_app 7)
+set(known_folders core model theorem search certify report design sweep io app)
 
 set(violations 0)
 macro(violation text)
@@ -50,7 +52,7 @@ foreach(header IN LISTS headers)
       continue()
     endif()
     if(folder STREQUAL "umbrella")
-      if(target STREQUAL "io")
+      if(target STREQUAL "io" OR target STREQUAL "app")
         violation("${header}: the umbrella header must not include io/: ${line}")
       endif()
       continue()

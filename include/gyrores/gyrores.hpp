@@ -18,6 +18,7 @@
 #include <gyrores/model/model.hpp>           // the model for any real n: frequencies, impulse response, envelope
 #include <gyrores/model/resonant.hpp>        // resonant parametrisation and exact local (lobe-frame) coordinates
 #include <gyrores/model/coupling.hpp>        // any coupling n exactly: resonance test, convergents, x = sqrt(D)/(P + 4Q)
+#include <gyrores/model/inputs.hpp>          // horizons, levels and bands as the user gives them, parsed once
 #include <gyrores/model/rotation.hpp>        // the rotation by x, exactly: min ||k x - 1/2|| and first hits in O(log K)
 // theorem: the lattice theorem at the centre (lobes, the roots, the minimum, the proved pair report)
 #include <gyrores/theorem/lobes.hpp>          // the minimisers' lobes and the paper's fast node, by integers

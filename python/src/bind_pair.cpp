@@ -3,6 +3,7 @@
 // correct rounding of a proved enclosure; gyrores/__init__.py converts them), with the
 // enclosures when asked, without the asymptotics when told (gyrores.pair computes them on
 // first access).
+#include <gyrores/app/pair.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/theorem/pair_report.hpp>
 
@@ -14,14 +15,14 @@ namespace {
 
 pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures,
                      bool asymptotics = true) {
-  pair_report_options opt;
-  opt.enclosures = enclosures;
-  opt.asymptotics = asymptotics;
-  opt.digits = checked_digits(digits, 1, report_digits_max);
-  opt.qdot0 = qdot0;
-  return run_interruptible<pair_report>([p, opt](stop_token stop) mutable {
-    opt.stop = stop;
-    return prove_pair(p, opt);
+  app::pair_request request{p};
+  request.enclosures = enclosures;
+  request.asymptotics = asymptotics;
+  request.digits = checked_digits(digits, 1, report_digits_max);
+  request.qdot0 = parse_rational(qdot0, "qdot0");
+  return run_interruptible<pair_report>([request](stop_token stop) mutable {
+    request.stop = stop;
+    return app::run_pair(request);
   });
 }
 

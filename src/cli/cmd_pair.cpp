@@ -3,6 +3,7 @@
 // rounding of a proved enclosure.
 #include <sstream>
 
+#include <gyrores/app/pair.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
@@ -79,13 +80,13 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const pair_report&
 
 std::string run_pair(const pair_args& args) {
   check_digits_flag(args.digits, 1, int(report_digits_max));
-  const resonant_pair<big_int> p = parse_pair_arguments(args.tau, args.sigma);
-  if (!(parse_rational(args.qdot0, "--qdot0") > 0)) throw usage_error("--qdot0 must be > 0, got " + args.qdot0);
-  pair_report_options opt;
-  opt.digits = unsigned(args.digits);
-  opt.qdot0 = args.qdot0;
-  opt.enclosures = args.enclosures;
-  const pair_report r = prove_pair(p, opt);
+  app::pair_request request{parse_pair_arguments(args.tau, args.sigma)};
+  request.qdot0 = parse_rational(args.qdot0, "--qdot0");
+  if (!(request.qdot0 > 0)) throw usage_error("--qdot0 must be > 0, got " + args.qdot0);
+  request.digits = unsigned(args.digits);
+  request.enclosures = args.enclosures;
+  const resonant_pair<big_int>& p = request.pair;
+  const pair_report r = app::run_pair(request);
   if (!args.json) return pair_report_text(p, r, args.enclosures);
   return json_dump(pair_report_json(p, r, args.enclosures)) + "\n";
 }

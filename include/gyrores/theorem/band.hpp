@@ -78,14 +78,4 @@ struct band_report {
 band_report prove_band(const big_rational& n1, const big_rational& n2, const horizon_time& horizon,
                        const band_options& opt = {});
 
-// The bands as `gyrores coupling` and the Python module take them (src/cli/cmd_coupling.cpp,
-// python/src/bind_coupling.cpp); `what` names the argument in the usage_error messages.
-// "N1:N2" -> (n1, n2), the ends parsed as `what N1` and `what N2` (their order is check_band's).
-std::pair<big_rational, big_rational> parse_band(const std::string& text, const std::string& what);
-// A tolerance "P%" around n: the band |n| (1 -+ P/100); usage_error unless 0 < P < 100.
-std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
-                                                           const std::string& what);
-// usage_error "<what> needs 0 < n1 < n2, got n1:n2" unless it holds (prove_band checks it too, as "a band").
-void check_band(const big_rational& n1, const big_rational& n2, const std::string& what);
-
 }  // namespace gyrores

@@ -18,28 +18,12 @@
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/stop.hpp>
 #include <gyrores/model/coupling.hpp>
+#include <gyrores/model/inputs.hpp>
 #include <gyrores/theorem/pair_report.hpp>
 
 namespace gyrores {
 
 inline constexpr const char* horizon_theorem_id = "horizon-theorem/1";
-
-// A horizon T >= 0 given exactly: T = value, or T = value * pi (the paper's spans, e.g. 100 pi).
-struct horizon_time {
-  big_rational value = 0;
-  bool times_pi = false;
-  horizon_time() = default;
-  horizon_time(const big_rational& v, bool pi = false) : value(v), times_pi(pi) {}
-  std::string str() const { return rational_str(value) + (times_pi ? " pi" : ""); }
-};
-
-// T as text: a decimal, scientific or fraction, optionally times pi ("100pi", "100*pi", "1e30");
-// usage_error naming `what` for anything else or a negative T.
-horizon_time parse_horizon_time(const std::string& text, const std::string& what);
-
-// E as text: an energy (H_q(0) = qdot0^2/2 = 1/2), or a percentage of the initial energy
-// ("1%" is 1/200); usage_error naming `what` for anything else or E < 0.
-big_rational parse_energy_level(const std::string& text, const std::string& what);
 
 // Which lobe the minimum over [0, T] comes from (the integers a certificate carries).
 struct horizon_lobe {

@@ -334,30 +334,6 @@ big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const 
 
 }  // namespace
 
-horizon_time parse_horizon_time(const std::string& given, const std::string& what) {
-  std::string text = given;
-  bool pi = false;
-  if (text.size() > 2 && text.compare(text.size() - 2, 2, "pi") == 0) {
-    pi = true;
-    text.resize(text.size() - 2);
-    while (!text.empty() && (text.back() == '*' || text.back() == ' ')) text.pop_back();
-  }
-  horizon_time t(parse_rational(text, what), pi);
-  if (t.value < 0) throw usage_error(what + " must be >= 0, got " + given);
-  return t;
-}
-
-big_rational parse_energy_level(const std::string& given, const std::string& what) {
-  std::string text = given;
-  big_rational e;
-  if (!text.empty() && text.back() == '%') {
-    text.pop_back();
-    e = parse_rational(text, what) / 200;
-  } else e = parse_rational(text, what);
-  if (e < 0) throw usage_error(what + " must be >= 0, got " + given);
-  return e;
-}
-
 horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const horizon_time& T, unsigned digits,
                                              stop_token stop) {
   check_report_digits(digits);

@@ -1,0 +1,40 @@
+// Every user input that is more than a number, parsed and validated once, into typed values: the
+// layers below take these types, never text. Each parser names the argument (`what`) in its one-
+// line usage_error, so the CLI and the Python module report the user's own spelling.
+//   horizons  "37", "1e30", "5/2", "100pi", "100*pi"   -> horizon_time (exact, or exact times pi)
+//   levels    "1e-3", "1/200", "1%" (of H_q(0) = 1/2)  -> an exact energy E >= 0
+//   bands     "N1:N2"; a tolerance "P%" around n        -> exact ends 0 < n1 < n2
+#pragma once
+#include <string>
+#include <utility>
+
+#include <gyrores/core/rational.hpp>
+
+namespace gyrores {
+
+// A horizon T >= 0 given exactly: T = value, or T = value * pi (the paper's spans, e.g. 100 pi).
+struct horizon_time {
+  big_rational value = 0;
+  bool times_pi = false;
+  horizon_time() = default;
+  horizon_time(const big_rational& v, bool pi = false) : value(v), times_pi(pi) {}
+  std::string str() const { return rational_str(value) + (times_pi ? " pi" : ""); }
+};
+
+// T as text: a decimal, scientific or fraction, optionally times pi ("100pi", "100*pi", "1e30");
+// usage_error naming `what` for anything else or a negative T.
+horizon_time parse_horizon_time(const std::string& text, const std::string& what);
+
+// E as text: an energy (H_q(0) = qdot0^2/2 = 1/2), or a percentage of the initial energy
+// ("1%" is 1/200); usage_error naming `what` for anything else or E < 0.
+big_rational parse_energy_level(const std::string& text, const std::string& what);
+
+// "N1:N2" -> (n1, n2), the ends parsed as `what N1` and `what N2` (their order is check_band's).
+std::pair<big_rational, big_rational> parse_band(const std::string& text, const std::string& what);
+// A tolerance "P%" around n: the band |n| (1 -+ P/100); usage_error unless 0 < P < 100.
+std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
+                                                           const std::string& what);
+// usage_error "<what> needs 0 < n1 < n2, got n1:n2" unless it holds.
+void check_band(const big_rational& n1, const big_rational& n2, const std::string& what);
+
+}  // namespace gyrores
