@@ -39,10 +39,10 @@ def _target(tau, sigma, n, function):
 
 
 def phase_data(tau=None, sigma=None, n=None, qdot0=1.0, t_span=0.0):
-    """The data of phase(): a dict of NumPy arrays (trajectory, envelope: (N, 2)) and numbers."""
+    """The data of phase(): a dict of NumPy arrays (trajectory, envelope: (N, 2)) and numbers.
+
+    A coupling n is drawn over [0, t_span] (0: 200 pi/n, as the CLI and the paper's Fig. 1a)."""
     t, s, nv = _target(tau, sigma, n, "phase")
-    if nv is not None and not t_span:
-        t_span = 200 * math.pi / nv  # as the CLI and the paper's Fig. 1a
     return _gyrores._phase_data(t, s, nv, float(qdot0), float(t_span))
 
 
@@ -50,7 +50,7 @@ def energy_data(tau=None, sigma=None, n=None, qdot0=1.0, t_end=0.0):
     """The data of energy(): t, h_q, h_z (NumPy arrays), t_first, h_min, t_proxy, t_end."""
     t, s, nv = _target(tau, sigma, n, "energy")
     if nv is not None and not t_end:
-        t_end = 200 * math.pi / nv
+        t_end = 200 * math.pi / nv  # the span of phase(); the CLI's `plot energy` draws 8 pi/n
     return _gyrores._energy_data(t, s, nv, float(qdot0), float(t_end))
 
 

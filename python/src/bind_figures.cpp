@@ -1,12 +1,13 @@
-// The data of the CLI's figures (design/figures.hpp), for gyrores.plot: phase portraits and
-// H_q/H_z series of a pair or of any coupling n, as dicts of NumPy arrays (double: plotting
-// data; the marked values come from the exact solvers, as the figures' header says).
+// The data of the CLI's figures (the application layer, include/gyrores/app/figures.hpp), for
+// gyrores.plot: phase portraits and H_q/H_z series of a pair or of any coupling n (a double, drawn
+// as a coupling that is not resonant), as dicts of NumPy arrays (double: plotting data; the
+// marked values come from the exact solvers, as design/figures.hpp says).
 #include <pybind11/numpy.h>
 
 #include <vector>
 
 #include <gyrores/core/error.hpp>
-#include <gyrores/design/figures.hpp>
+#include <gyrores/app/figures.hpp>
 
 #include "common.hpp"
 #include "interruptible.hpp"
@@ -53,39 +54,30 @@ py::dict energy_dict(const energy_series& e) {
 }
 
 // A pair (tau, sigma) or a coupling n: exactly one of them.
-bool is_pair(const py::object& tau, const py::object& sigma, const py::object& n) {
+app::figure_subject subject_of(const py::object& tau, const py::object& sigma, const py::object& n) {
   if (n.is_none() == (tau.is_none() || sigma.is_none()))
     throw usage_error("give a pair (tau, sigma) or a coupling n, not both");
-  return n.is_none();
+  if (n.is_none()) return app::figure_subject_of(pair_of(tau, sigma));
+  return {std::nullopt, n.cast<double>()};
 }
 
 py::dict phase_data(const py::object& tau, const py::object& sigma, const py::object& n, double qdot0, double t_span) {
-  if (is_pair(tau, sigma, n)) {
-    const auto p = figure_pair_of(pair_of(tau, sigma));
-    return phase_dict(run_interruptible<phase_portrait>([p, qdot0](stop_token) { return phase_portrait_of_pair(p, qdot0); }));
-  }
-  const double nv = n.cast<double>();
-  return phase_dict(run_interruptible<phase_portrait>(
-      [nv, qdot0, t_span](stop_token) { return phase_portrait_of_coupling(nv, qdot0, t_span); }));
+  const app::figure_subject s = subject_of(tau, sigma, n);
+  return phase_dict(run_interruptible<phase_portrait>([=](stop_token) { return app::phase_figure(s, qdot0, t_span); }));
 }
 
 py::dict energy_data(const py::object& tau, const py::object& sigma, const py::object& n, double qdot0, double t_end) {
-  if (is_pair(tau, sigma, n)) {
-    const auto p = figure_pair_of(pair_of(tau, sigma));
-    return energy_dict(run_interruptible<energy_series>([p, qdot0, t_end](stop_token) { return energy_of_pair(p, qdot0, t_end); }));
-  }
-  const double nv = n.cast<double>();
-  return energy_dict(run_interruptible<energy_series>(
-      [nv, qdot0, t_end](stop_token) { return energy_of_coupling(nv, qdot0, t_end); }));
+  const app::figure_subject s = subject_of(tau, sigma, n);
+  return energy_dict(run_interruptible<energy_series>([=](stop_token) { return app::energy_figure(s, qdot0, t_end); }));
 }
 
 }  // namespace
 
 void bind_figures(py::module_& m) {
   m.def("_phase_data", &phase_data, py::arg("tau"), py::arg("sigma"), py::arg("n"), py::arg("qdot0"), py::arg("t_span"),
-        "The phase portrait of the CLI's `plot phase` (design/figures.hpp). Use gyrores.plot.phase.");
+        "The phase portrait of the CLI's `plot phase` (app/figures.hpp). Use gyrores.plot.phase.");
   m.def("_energy_data", &energy_data, py::arg("tau"), py::arg("sigma"), py::arg("n"), py::arg("qdot0"), py::arg("t_end"),
-        "H_q(t), H_z(t) of the CLI's `plot energy` (design/figures.hpp). Use gyrores.plot.energy.");
+        "H_q(t), H_z(t) of the CLI's `plot energy` (app/figures.hpp). Use gyrores.plot.energy.");
 }
 
 }  // namespace gyrores::python
