@@ -3,6 +3,7 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
+#include <gyrores/design/design.hpp>
 
 namespace gyrores::cli {
 
@@ -21,6 +22,11 @@ void add_digits_option(const options& sub, int& digits, const std::string& help)
 }
 
 void add_json_flag(const options& sub, bool& json) { sub.flag("--json", json, "one JSON object on stdout"); }
+
+void add_output_options(const options& sub, int& digits, bool& json) {
+  add_digits_option(sub, digits);
+  add_json_flag(sub, json);
+}
 
 void add_size_option(const options& sub, std::string& size, const std::string& help) { sub.add("--size", size, help); }
 
@@ -45,12 +51,6 @@ big_rational parse_positive_flag(const std::string& text, const std::string& fla
   big_rational v = parse_rational(text, flag);
   if (!(v > 0)) throw usage_error(flag + " must be > 0, got " + text);
   return v;
-}
-
-pareto_orientation parse_orientation_flag(const std::string& text) {
-  if (text == "absorb") return pareto_orientation::absorb;
-  if (text == "contain") return pareto_orientation::contain;
-  throw usage_error("--orientation must be 'absorb' or 'contain', got '" + text + "'");
 }
 
 }  // namespace gyrores::cli

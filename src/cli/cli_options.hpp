@@ -12,7 +12,6 @@
 
 #include <gyrores/core/integer.hpp>
 #include <gyrores/core/rational.hpp>
-#include <gyrores/design/design.hpp>
 #include <gyrores/model/pair.hpp>
 
 namespace CLI {
@@ -58,6 +57,8 @@ resonant_pair<big_int> parse_pair_arguments(const std::string& tau, const std::s
 void add_digits_option(const options& sub, int& digits, const std::string& help = "significant digits of every real printed");
 // --json: "one JSON object on stdout".
 void add_json_flag(const options& sub, bool& json);
+// Both, as the commands that list pairs with their proved values (design, pareto) take them.
+void add_output_options(const options& sub, int& digits, bool& json);
 // --size WxH of an image.
 void add_size_option(const options& sub, std::string& size, const std::string& help);
 
@@ -69,7 +70,5 @@ void check_flag_range(std::int64_t value, std::int64_t lo, std::int64_t hi, cons
 void check_max_order_flag(std::int64_t max_order);
 // A rational flag that must be > 0 (--tmax, --beat): usage_error naming the flag otherwise.
 big_rational parse_positive_flag(const std::string& text, const std::string& flag);
-// --orientation absorb|contain.
-pareto_orientation parse_orientation_flag(const std::string& text);
 
 }  // namespace gyrores::cli

@@ -3,18 +3,18 @@
 // gyrores plot pareto --max-order M [--orientation absorb|contain] [--proxy] [--exclude-degenerate]
 //                     [--out FILE.svg|png] [--size WxH]
 // Each figure is written with its data (NAME.dat) and gnuplot script (NAME.gp) beside it; if
-// gnuplot is missing the command says so and still writes both (exit 0).
+// gnuplot is missing the command says so and still writes both (exit 0). The data are the
+// application layer's (include/gyrores/app/figures.hpp, app/pareto.hpp); frontend/plots.hpp draws.
+#include <cstdio>
 #include <sstream>
 
-#include <gyrores/design/coupling.hpp>
-#include <gyrores/design/design.hpp>
-#include <gyrores/design/figures.hpp>
-#include <gyrores/model/resonant.hpp>
+#include <gyrores/app/figures.hpp>
+#include <gyrores/app/pareto.hpp>
 
 #include "cli_options.hpp"
-#include "cli_process.hpp"
 #include "commands.hpp"
-#include "plots.hpp"
+#include "frontend/plots.hpp"
+#include "frontend/process.hpp"
 
 namespace gyrores::cli {
 namespace {
@@ -25,43 +25,27 @@ struct plot_args {
   bool proxy = false, exclude_degenerate = false;
 };
 
-// The subject of a phase or energy plot: a resonant pair, or a non-resonant coupling n.
-struct plot_subject {
-  std::optional<resonant_pair<std::int64_t>> pair;
-  double n = 0;
-  std::string label;
-};
-
-plot_subject subject_of(const plot_args& a) {
+// The subject: TAU SIGMA, --n N or --n2 P/Q (a resonant coupling is its pair).
+app::figure_subject subject_of(const plot_args& a) {
   const bool have_pair = !a.tau.empty() || !a.sigma.empty();
   const int given = int(have_pair) + int(!a.n.empty()) + int(!a.n2.empty());
   if (given != 1) throw usage_error("give exactly one of TAU SIGMA, --n N or --n2 P/Q");
-  plot_subject s;
-  std::optional<resonant_pair<big_int>> bp;
-  if (have_pair) {
-    if (a.tau.empty() || a.sigma.empty()) throw usage_error("a pair needs both TAU and SIGMA");
-    bp = parse_pair_arguments(a.tau, a.sigma);
-  } else {
-    auto spec = !a.n.empty() ? coupling_spec::from_n(parse_rational(a.n, "--n")) : coupling_spec::from_n2(parse_rational(a.n2, "--n2"));
-    bp = coupling_resonant_pair(spec);
-    if (!bp) {
-      s.n = spec.abs_n<double>();
-      s.label = (!a.n.empty() ? "n = " + a.n : "n^2 = " + a.n2) + " (not resonant)";
-      return s;
-    }
-  }
-  s.pair = figure_pair_of(*bp);
-  s.n = resonant_constants_of<double>(*s.pair, 1.0).n;
-  s.label = "pair " + s.pair->str();
-  return s;
+  if (!have_pair)
+    return app::figure_subject_of(!a.n.empty() ? coupling_spec::from_n(parse_rational(a.n, "--n"))
+                                               : coupling_spec::from_n2(parse_rational(a.n2, "--n2")));
+  if (a.tau.empty() || a.sigma.empty()) throw usage_error("a pair needs both TAU and SIGMA");
+  return app::figure_subject_of(parse_pair_arguments(a.tau, a.sigma));
 }
+
+// "n = N (not resonant)" or "n^2 = P/Q (not resonant)".
+std::string coupling_label(const plot_args& a) { return (!a.n.empty() ? "n = " + a.n : "n^2 = " + a.n2) + " (not resonant)"; }
 
 double tmax_of(const plot_args& a) {
   if (a.tmax.empty()) return 0;
   return parse_positive_flag(a.tmax, "--tmax").convert_to<double>();
 }
 
-std::string files_text(const figure_output& f) {
+std::string files_text(const frontend::figure_output& f) {
   std::ostringstream os;
   for (auto& im : f.images) os << "figure: " << im.string() << "\n";
   os << "data:   " << f.data.string() << "\nscript: " << f.script.string() << "\n";
@@ -69,68 +53,54 @@ std::string files_text(const figure_output& f) {
   return os.str();
 }
 
+// "(tau, sigma): " of a figure's title.
+std::string pair_title(const resonant_pair<std::int64_t>& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%lld, %lld): ", (long long)p.tau(), (long long)p.sigma());
+  return buf;
+}
+
 std::string run_phase(const plot_args& a) {
-  auto s = subject_of(a);
-  auto spec = figure_spec_from_out(a.out.empty() ? "phase.svg" : a.out, a.size, 1200, 640);
-  const double pi = real_pi<double>();
-  phase_portrait f;
-  std::string title;
-  if (s.pair) {
-    if (!a.tmax.empty()) throw usage_error("--tmax does not apply to a resonant pair (one full period is drawn)");
-    f = phase_portrait_of_pair(*s.pair);
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "(%lld, %lld): n = %.6g, r_res = %.6g%s", (long long)s.pair->tau(),
-                  (long long)s.pair->sigma(), f.n, f.r_inscribed, s.pair->degenerate() ? " (degenerate)" : "");
-    title = buf;
-  } else {
-    double span = tmax_of(a);
-    if (span == 0) span = 200 * pi / s.n;
-    f = phase_portrait_of_coupling(s.n, 1.0, span);
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "%s, t in [0, %.6g]; min radius on span %.4g", s.label.c_str(), span, f.r_inscribed);
-    title = buf;
-  }
-  return files_text(write_phase_figure(spec, f, title));
+  const auto s = subject_of(a);
+  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "phase.svg" : a.out, a.size, 1200, 640);
+  if (s.pair && !a.tmax.empty()) throw usage_error("--tmax does not apply to a resonant pair (one full period is drawn)");
+  const phase_portrait f = app::phase_figure(s, 1.0, tmax_of(a));
+  char buf[200];
+  if (s.pair)
+    std::snprintf(buf, sizeof buf, "%sn = %.6g, r_res = %.6g%s", pair_title(*s.pair).c_str(), f.n, f.r_inscribed,
+                  s.pair->degenerate() ? " (degenerate)" : "");
+  else
+    std::snprintf(buf, sizeof buf, "%s, t in [0, %.6g]; min radius on span %.4g", coupling_label(a).c_str(), f.t_span,
+                  f.r_inscribed);
+  return files_text(frontend::write_phase_figure(spec, f, buf));
 }
 
 std::string run_energy(const plot_args& a) {
-  auto s = subject_of(a);
-  auto spec = figure_spec_from_out(a.out.empty() ? "energy.svg" : a.out, a.size, 900, 500);
-  const double pi = real_pi<double>();
-  energy_series e;
-  std::string title, label;
-  if (s.pair) {
-    e = energy_of_pair(*s.pair, 1.0, tmax_of(a));
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "(%lld, %lld): n = %.6g, H_q min = %.6g", (long long)s.pair->tau(),
-                  (long long)s.pair->sigma(), e.n, e.h_min);
-    title = buf;
-    label = "exact t_{first}";
-  } else {
-    double span = tmax_of(a);
-    if (span == 0) span = 8 * pi / s.n;
-    e = energy_of_coupling(s.n, 1.0, span);
-    title = s.label;
-    label = "first min on span, t";
-  }
-  return files_text(write_energy_figure(spec, e, title, label));
+  const auto s = subject_of(a);
+  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "energy.svg" : a.out, a.size, 900, 500);
+  const energy_series e = app::energy_figure(s, 1.0, tmax_of(a));
+  if (!s.pair) return files_text(frontend::write_energy_figure(spec, e, coupling_label(a), "first min on span, t"));
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%sn = %.6g, H_q min = %.6g", pair_title(*s.pair).c_str(), e.n, e.h_min);
+  return files_text(frontend::write_energy_figure(spec, e, buf, "exact t_{first}"));
 }
 
 std::string run_pareto_plot(const plot_args& a) {
-  const pareto_orientation o = parse_orientation_flag(a.orientation);
-  auto spec = figure_spec_from_out(a.out.empty() ? "pareto.svg" : a.out, a.size, 900, 640);
+  app::pareto_request r;
+  r.orientation = app::parse_pareto_orientation(a.orientation, "--orientation");
+  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "pareto.svg" : a.out, a.size, 900, 640);
   check_max_order_flag(a.max_order);
-  progress_stage("evaluating every pair up to order " + std::to_string(a.max_order));
-  auto cat = design_catalogue(a.max_order);
-  std::vector<design_point> pts;
-  for (auto& p : cat)
-    if (!a.exclude_degenerate || !p.degenerate) pts.push_back(p);
-  const design_time which = a.proxy ? design_time::proxy : design_time::first_hit;
-  auto front = pareto_front(pts, o, which);
-  std::string title = "Pareto front, tau+sigma <= " + std::to_string(a.max_order) + " (" + pareto_orientation_caption(o) +
-                      (a.exclude_degenerate ? ", degenerate pairs excluded" : "") + ")";
-  auto f = write_pareto_figure(spec, pts, front, which, title);
-  return std::to_string(front.size()) + " front points of " + std::to_string(pts.size()) + " pairs\n" + files_text(f);
+  r.max_order = a.max_order;
+  r.filter.exclude_degenerate = a.exclude_degenerate;
+  r.time = a.proxy ? design_time::proxy : design_time::first_hit;
+  r.values = false;
+  r.progress = frontend::progress_stage;
+  const app::pareto_outcome p = app::run_pareto(r);
+  const std::string title = "Pareto front, tau+sigma <= " + std::to_string(a.max_order) + " (" +
+                            frontend::pareto_orientation_caption(r.orientation) +
+                            (a.exclude_degenerate ? ", degenerate pairs excluded" : "") + ")";
+  const auto f = frontend::write_pareto_figure(spec, p.pairs, p.front, r.time, title);
+  return std::to_string(p.front.size()) + " front points of " + std::to_string(p.pairs.size()) + " pairs\n" + files_text(f);
 }
 
 command_runner install_plot(CLI::App& app) {

@@ -21,9 +21,9 @@
 #include <gyrores/core/stop.hpp>
 
 #include "cli_options.hpp"
-#include "cli_process.hpp"
 #include "cli_output.hpp"
 #include "commands.hpp"
+#include "frontend/process.hpp"
 
 namespace gyrores::cli {
 namespace {
@@ -144,7 +144,7 @@ int run(int argc, char** argv, bool execute) {
       std::string out;
       {
         // A command still running after 2 s says so on a terminal (the sweep draws its own bar).
-        std::optional<progress_line> progress;
+        std::optional<frontend::progress_line> progress;
         if (sub->get_name() != "sweep") progress.emplace(sub->get_name());
         out = runners.at(sub->get_name())();
       }
@@ -194,7 +194,7 @@ void reserve_standard_fds() {
 
 int main(int argc, char** argv) {
   reserve_standard_fds();
-  gyrores::cli::install_interrupt_handlers();  // SIGINT, SIGTERM: exit 130 (cli_process.hpp)
+  gyrores::frontend::install_interrupt_handlers();  // SIGINT, SIGTERM: exit 130 (frontend/process.hpp)
   int status = gyrores::cli::run(argc, argv, true);
   // The final flush and close: a full disk may only show here.
   if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && status == 0) status = gyrores::cli::cannot_write_stdout(errno);

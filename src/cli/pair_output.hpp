@@ -1,23 +1,22 @@
-// How the CLI prints a pair and its verified values (design, pareto, coupling, report): the
-// Pareto CSV row and text.
+// How the CLI prints pairs and their proved values in its tables (design, pareto, coupling).
+// The JSON objects and the Pareto CSV are io/'s (io/report_json.hpp, io/design_output.hpp),
+// shared with Python.
 #pragma once
+#include <cstddef>
 #include <string>
 
-#include <gyrores/design/design.hpp>
 #include <gyrores/theorem/pair_report.hpp>
-#include <gyrores/io/json.hpp>
-#include <gyrores/io/report_json.hpp>
-#include <gyrores/model/pair.hpp>
 
 namespace gyrores::cli {
 
-// The JSON objects (pair_json, pair_values_json) are io/report_json.hpp's, shared with Python.
-
-// The Pareto front CSV (pareto --out, report's pareto-front.csv): header line and one row.
-inline constexpr const char* pareto_csv_header = "tau,sigma,order,delta,degenerate,n,r_res,t_first,t_min_paper\n";
-std::string pareto_csv_row(const design_point& p, const pair_report& v);
-
 // r_res for text output: "0 (exact, delta = 2 mod 4)" for degenerate pairs.
 std::string radius_text(const pair_report& v);
+
+// `text` then spaces up to `width` columns (at least one).
+std::string padded(const std::string& text, std::size_t width);
+// The rank column of row i (rank i + 1), 6 columns wide below rank 10.
+std::string rank_cell(std::size_t i);
+// "n  r_res  t_first  pi/|n|": the values columns of the tables.
+std::string values_columns(const pair_report& v);
 
 }  // namespace gyrores::cli

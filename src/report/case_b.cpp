@@ -4,9 +4,9 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 namespace {
 
 // The paper's asymptotics for (6, 5), lobe k = 6 (theta_asy = 3.30), proved, 6 digits.
@@ -46,14 +46,11 @@ std::string case_b_claims(context& c) {
 }  // namespace
 
 std::string case_b_section(context& c) {
-  std::ostringstream md;
-  md << "## 3. Case B (containment): the pair (6, 5)\n\n" << case_b_claims(c);
-  md << draw_case_figures(c, resonant_pair<std::int64_t>(6, 5),
-                          {"fig3a-phase-6-5", "Fig. 3a: containment case (6, 5)",
-                           "Figure 3a: (6, 5), trajectory, envelope and the non-zero inscribed circle (zoom), first minimiser marked.",
-                           "fig3b-energy-6-5", "Fig. 3b: containment case (6, 5)",
-                           "Figure 3b: (6, 5), H_q(t) and H_z(t); the exact first minimum comes before the proxy pi/n."});
-  return md.str();
+  const std::string claims = case_b_claims(c);
+  return "## 3. Case B (containment): the pair (6, 5)\n\n" + claims +
+         draw_case_figures(c, resonant_pair<std::int64_t>(6, 5),
+                           {3, "containment", "", "trajectory, envelope and the non-zero inscribed circle (zoom), first minimiser marked.",
+                            "H_q(t) and H_z(t); the exact first minimum comes before the proxy pi/n."});
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

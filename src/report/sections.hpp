@@ -1,6 +1,6 @@
-// `gyrores report`, in sections: each section of REPORT.md is one function (one file each)
-// that returns its markdown and records the figures it draws. cmd_report.cpp runs them in
-// order and writes the files.
+// The sections of REPORT.md: each is one function (one file each) that returns its markdown and
+// records the figures it draws (frontend/plots.hpp). report/report.cpp runs them in order and
+// writes the files.
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -12,9 +12,14 @@
 #include <gyrores/design/design.hpp>
 #include <gyrores/theorem/pair_report.hpp>
 
-#include "../plots.hpp"
+#include "frontend/plots.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
+
+namespace fs = std::filesystem;
+using frontend::figure_output;
+using frontend::figure_spec;
+using frontend::num;
 
 // The figures of the report (DIR/figures): which were drawn, and the notes when one was not.
 struct figure_set {
@@ -29,10 +34,11 @@ struct figure_set {
   std::string md(const std::string& stem, const std::string& caption) const;
 };
 
-// The two figures of a paper case for one pair: (a) its phase portrait, (b) its energy exchange.
+// The two figures of the paper's case of one pair, Figure <number>a (its phase portrait) and
+// <number>b (its energy exchange): "Fig. 2a: absorption case (11, 9)<phase_note>" and the captions.
 struct case_figures {
-  std::string phase_stem, phase_title, phase_caption;
-  std::string energy_stem, energy_title, energy_caption;
+  int number;
+  std::string name, phase_note, phase_caption, energy_caption;
 };
 
 // What every section shares.
@@ -40,12 +46,10 @@ struct context {
   unsigned digits;                       // of every verified real printed
   fs::path dir;                          // the output directory
   figure_set figs;
-  std::vector<design_point> catalogue;   // every pair up to max(Pareto order, 200), for sections 2-5
+  std::vector<design_point> catalogue;   // every pair up to max(Pareto order, 200), for sections 2-4
 
   // The first k pairs of the catalogue (enumeration order) with tau - sigma = delta and beat >= 10.
   std::vector<design_point> smallest(std::int64_t delta, std::size_t k) const;
-  // The catalogue's entry for (t, s) (computed if the catalogue does not reach it).
-  design_point find(std::int64_t t, std::int64_t s) const;
   // prove_pair_values(t, s, digits): every real proved.
   pair_report values(std::int64_t t, std::int64_t s) const;
 };
@@ -74,4 +78,4 @@ std::string sweep_section(std::int64_t max_order);
 std::string coupling_section(context& c);
 std::string files_section(const figure_set& figs);
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

@@ -1,4 +1,4 @@
-// gnuplot for the figure commands: running gnuplot on a script kept beside its figure (files
+// gnuplot for the figures (frontend/plots.hpp): running gnuplot on a script kept beside its figure (files
 // are written atomically by io/files.hpp).
 //
 // Every figure is three files in one directory: NAME.dat (the data, gnuplot blocks separated by
@@ -16,10 +16,9 @@
 #include <filesystem>
 #include <string>
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 
 namespace fs = std::filesystem;
-
 
 // gnuplot string literal in double quotes (backslash and quote escaped).
 std::string gnuplot_string(const std::string& s);
@@ -51,4 +50,4 @@ struct render_result {
 // SIGINT or SIGTERM.
 render_result gnuplot_render(const fs::path& dir, const std::string& script, const std::string& image);
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

@@ -1,5 +1,5 @@
-// src/cli/gnuplot.hpp
-#include "gnuplot.hpp"
+// src/frontend/gnuplot.hpp
+#include "frontend/gnuplot.hpp"
 
 #include <unistd.h>
 
@@ -13,9 +13,9 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/files.hpp>
 
-#include "cli_process.hpp"
+#include "frontend/process.hpp"
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 
 std::string gnuplot_string(const std::string& s) {
   std::string out = "\"";
@@ -105,4 +105,4 @@ render_result gnuplot_render(const fs::path& dir, const std::string& script, con
   return r;
 }
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

@@ -1,19 +1,20 @@
-// src/cli/plots.hpp
-#include "plots.hpp"
+// src/frontend/plots.hpp
+#include "frontend/plots.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
+#include <gyrores/app/figures.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/io/files.hpp>
 
-#include "cli_process.hpp"
-#include "gnuplot.hpp"
+#include "frontend/gnuplot.hpp"
+#include "frontend/process.hpp"
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 namespace {
 
 // Writes the data and script, then draws every image (a failure is reported, not thrown).
@@ -117,82 +118,31 @@ std::string phase_script(const figure_spec& s, const phase_portrait& f, const st
   return g.str();
 }
 
-// Above this many pairs the scatter is thinned: one pair per cell of 2 x 2 pixels in the plot's
-// log coordinates (a vector image of every pair of order 5000, 7.6 million points, was 395 MB;
-// thinned it stays under a few MB and looks the same). The front is never thinned.
-constexpr std::size_t pareto_thin_above = 50000;
-
-// The pairs of `all` to draw: every one, or one per cell of a (w/2) x (h/2) grid over
-// [log t] x [log r] (r_res > 0) or over [log t] alone (r_res = 0).
-std::vector<const design_point*> pareto_scatter(const std::vector<design_point>& all, design_time which, int w, int h,
-                                                bool zeros) {
-  std::vector<const design_point*> pts;
-  for (const auto& p : all)
-    if ((p.r_res == 0) == zeros) pts.push_back(&p);
-  if (all.size() <= pareto_thin_above || pts.empty()) return pts;
-  double t0 = 1e300, t1 = 0, r0 = 1e300, r1 = 0;
-  for (const auto* p : pts) {
-    const double t = design_time_of(*p, which);
-    t0 = std::min(t0, t), t1 = std::max(t1, t);
-    if (!zeros) r0 = std::min(r0, p->r_res), r1 = std::max(r1, p->r_res);
-  }
-  const int cx = std::max(1, w / 2), cy = zeros ? 1 : std::max(1, h / 2);
-  auto cell = [](double v, double lo, double hi, int n) {
-    if (!(hi > lo)) return 0;
-    return std::clamp(int((std::log(v) - std::log(lo)) / (std::log(hi) - std::log(lo)) * n), 0, n - 1);
-  };
-  std::vector<char> taken(std::size_t(cx) * std::size_t(cy), 0);
-  std::vector<const design_point*> kept;
-  for (const auto* p : pts) {
-    const int i = cell(design_time_of(*p, which), t0, t1, cx), j = zeros ? 0 : cell(p->r_res, r0, r1, cy);
-    char& c = taken[std::size_t(j) * std::size_t(cx) + std::size_t(i)];
-    if (!c) kept.push_back(p), c = 1;
-  }
-  return kept;
-}
-
 // Pareto data: every pair with r_res > 0, the degenerate pairs, the front, labelled front points.
-std::string pareto_data(const std::vector<design_point>& all, const std::vector<design_point>& front, design_time which,
-                        const std::string& title, int w, int h) {
+std::string pareto_data(const app::pareto_figure_points& f, design_time which, const std::string& title) {
   const std::string tname = which == design_time::first_hit ? "t_first" : "pi/n";
-  auto row = [&](std::ostringstream& d, const design_point& p) {
-    d << num(design_time_of(p, which)) << " " << num(p.r_res) << " " << p.tau << " " << p.sigma << "\n";
-  };
-  const auto positive = pareto_scatter(all, which, w, h, false), zeros = pareto_scatter(all, which, w, h, true);
   std::ostringstream d;
+  auto rows = [&](const std::vector<design_point>& pts, const char* none) {
+    for (const auto& p : pts) d << num(design_time_of(p, which)) << " " << num(p.r_res) << " " << p.tau << " " << p.sigma << "\n";
+    if (pts.empty()) d << none;
+  };
   d << "# gyrores Pareto front: " << title << "\n";
-  if (all.size() > pareto_thin_above)
-    d << "# thinned: " << positive.size() + zeros.size() << " of " << all.size()
+  if (f.pairs > app::pareto_thin_above)
+    d << "# thinned: " << f.positive.size() + f.zeros.size() << " of " << f.pairs
       << " pairs drawn, one per cell of 2x2 pixels in log coordinates (the front is complete)\n";
   d << "# index 0: pairs with r_res > 0: " << tname << " r_res tau sigma\n";
-  for (const auto* p : positive) row(d, *p);
-  if (positive.empty()) d << "NaN NaN 0 0\n";
+  rows(f.positive, "NaN NaN 0 0\n");
   d << "\n\n# index 1: degenerate pairs (r_res = 0 exactly): " << tname << " r_res tau sigma\n";
-  for (const auto* p : zeros) d << num(design_time_of(*p, which)) << " 0 " << p->tau << " " << p->sigma << "\n";
-  if (zeros.empty()) d << "NaN NaN 0 0\n";
+  for (const auto& p : f.zeros) d << num(design_time_of(p, which)) << " 0 " << p.tau << " " << p.sigma << "\n";
+  if (f.zeros.empty()) d << "NaN NaN 0 0\n";
   d << "\n\n# index 2: the front (r_res > 0): " << tname << " r_res tau sigma\n";
-  bool any = false;
-  for (const auto& p : front)
-    if (p.r_res > 0) row(d, p), any = true;
-  if (!any) d << "NaN NaN 0 0\n";
+  rows(f.front_positive, "NaN NaN 0 0\n");
   d << "\n\n# index 3: labelled front points (ends, and steps of half a decade in r_res): " << tname << " r_res label\n";
-  double last = 0;
-  bool labelled = false;
-  for (std::size_t i = 0; i < front.size(); ++i) {
-    if (!(front[i].r_res > 0)) continue;
-    const double lr = std::log10(front[i].r_res);
-    if (!labelled || i + 1 == front.size() || std::fabs(lr - last) >= 0.5) {
-      d << num(design_time_of(front[i], which)) << " " << num(front[i].r_res) << " \"(" << front[i].tau << ","
-        << front[i].sigma << ")\"\n";
-      last = lr, labelled = true;
-    }
-  }
-  if (!labelled) d << "NaN NaN \"\"\n";
+  for (const auto& p : f.labelled)
+    d << num(design_time_of(p, which)) << " " << num(p.r_res) << " \"(" << p.tau << "," << p.sigma << ")\"\n";
+  if (f.labelled.empty()) d << "NaN NaN \"\"\n";
   d << "\n\n# index 4: front pairs with r_res = 0: " << tname << " r_res tau sigma\n";
-  any = false;
-  for (const auto& p : front)
-    if (p.r_res == 0) row(d, p), any = true;
-  if (!any) d << "NaN NaN 0 0\n";
+  rows(f.front_zeros, "NaN NaN 0 0\n");
   return d.str();
 }
 
@@ -201,13 +151,11 @@ std::string pareto_data(const std::vector<design_point>& all, const std::vector<
 // right of the upper panel. Empty when the front has fewer than two pairs with r_res > 0.
 std::string pareto_inset(const figure_spec& s, const std::vector<design_point>& front, design_time which) {
   double t0 = 1e300, t1 = 0, r0 = 1e300, r1 = 0;
-  int n = 0;
-  for (const auto& p : front)
-    if (p.r_res > 0) {
-      const double t = design_time_of(p, which);
-      t0 = std::min(t0, t), t1 = std::max(t1, t), r0 = std::min(r0, p.r_res), r1 = std::max(r1, p.r_res), ++n;
-    }
-  if (n < 2 || !(t1 > t0) || !(r1 > r0)) return "";
+  for (const auto& p : front) {
+    const double t = design_time_of(p, which);
+    t0 = std::min(t0, t), t1 = std::max(t1, t), r0 = std::min(r0, p.r_res), r1 = std::max(r1, p.r_res);
+  }
+  if (front.size() < 2 || !(t1 > t0) || !(r1 > r0)) return "";
   std::ostringstream g;
   g << "# inset: the front alone, over its own ranges\n"
     << "set origin 0.55, 0.31\nset size 0.43, (small ? 0.3 : 0.32)\n"
@@ -227,16 +175,12 @@ std::string pareto_inset(const figure_spec& s, const std::vector<design_point>& 
 
 // Two panels sharing the time axis: r_res > 0 on a log axis above, and the pairs with r_res = 0
 // on a strip of their own below it (a log axis has no 0: no stand-in floor value is drawn).
-std::string pareto_script(const figure_spec& s, const std::vector<design_point>& all,
-                          const std::vector<design_point>& front, design_time which, const std::string& title) {
-  double t0 = 1e300, t1 = 0;
-  for (const auto& p : all) {
-    const double t = design_time_of(p, which);
-    t0 = std::min(t0, t), t1 = std::max(t1, t);
-  }
+std::string pareto_script(const figure_spec& s, const app::pareto_figure_points& f, design_time which,
+                          const std::string& title) {
+  double t0 = f.t_lo, t1 = f.t_hi;
   if (!(t1 > t0)) t0 = t0 / 2, t1 = t1 * 2 + 1;
-  const std::string thinned = all.size() > pareto_thin_above
-                                  ? " (" + std::to_string(all.size()) + " pairs, thinned to one per 2x2 pixels)"
+  const std::string thinned = f.pairs > app::pareto_thin_above
+                                  ? " (" + std::to_string(f.pairs) + " pairs, thinned to one per 2x2 pixels)"
                                   : "";
   std::ostringstream g;
   g << script_head("Pareto front", title, s)
@@ -254,7 +198,7 @@ std::string pareto_script(const figure_spec& s, const std::vector<design_point>&
     << "plot datafile index 0 using 1:2 with points pt 7 ps 0.35 lc rgb \"#999999\" title \"resonant pairs\", \\\n"
     << "     '' index 2 using 1:2 with linespoints pt 7 ps 0.8 lw 1.5 lc rgb \"#d62728\" title \"Pareto front\", \\\n"
     << "     '' index 3 using 1:2:3 with labels left offset 0.6,0.6 " << font_of(s, -2) << " notitle\n"
-    << pareto_inset(s, front, which)
+    << pareto_inset(s, f.front_positive, which)
     << "# lower panel: the pairs with r_res = 0 exactly (delta = 2 mod 4)\n"
     << "set origin 0, 0\nset size 1, 0.27\n"
     << "set tmargin 0.3\nset bmargin 3\nunset logscale y\nset yrange [-1:1]\nunset ytics\n"
@@ -358,8 +302,8 @@ figure_output write_energy_figure(const figure_spec& s, const energy_series& e, 
 figure_output write_pareto_figure(const figure_spec& s, const std::vector<design_point>& all,
                                   const std::vector<design_point>& front, design_time which,
                                   const std::string& title) {
-  return figure_finish(s, pareto_data(all, front, which, title, s.width, s.height),
-                       pareto_script(s, all, front, which, title));
+  const auto points = app::pareto_figure_points_of(all, front, which, s.width, s.height);
+  return figure_finish(s, pareto_data(points, which, title), pareto_script(s, points, which, title));
 }
 
 std::string figure_script_head(const std::string& kind, const std::string& title, const figure_spec& s) {
@@ -374,4 +318,4 @@ std::string pareto_orientation_caption(pareto_orientation o) {
   return o == pareto_orientation::absorb ? "absorb: min r_res, min time" : "contain: max r_res, min time";
 }
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

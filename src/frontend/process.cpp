@@ -1,5 +1,5 @@
-// src/cli/cli_process.hpp
-#include "cli_process.hpp"
+// src/frontend/process.hpp
+#include "frontend/process.hpp"
 
 #include <fcntl.h>
 #include <pthread.h>
@@ -21,7 +21,7 @@
 #include <gyrores/core/stop.hpp>
 #include <gyrores/io/files.hpp>
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 namespace {
 
 // What the handler cleans up: set before a helper starts, cleared after (async-signal-safe reads).
@@ -207,4 +207,4 @@ progress_line::~progress_line() {
   delete p_;
 }
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

@@ -1,13 +1,13 @@
-// src/cli/report/report.hpp: what the sections share.
+// src/report/sections.hpp: what the sections share.
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include <gyrores/design/figures.hpp>
+#include <gyrores/app/figures.hpp>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 
 figure_spec figure_set::spec(const std::string& stem, int w, int h) const {
   figure_spec s;
@@ -16,7 +16,7 @@ figure_spec figure_set::spec(const std::string& stem, int w, int h) const {
   s.width = w;
   s.height = h;
   s.images = {stem + ".png", stem + ".svg"};
-  check_figure_outputs(s);
+  frontend::check_figure_outputs(s);
   return s;
 }
 
@@ -54,21 +54,21 @@ std::vector<design_point> context::smallest(std::int64_t delta, std::size_t k) c
   return out;
 }
 
-design_point context::find(std::int64_t t, std::int64_t s) const {
-  for (const auto& p : catalogue)
-    if (p.tau == t && p.sigma == s) return p;
-  return design_point_of(resonant_pair<std::int64_t>(t, s));
-}
-
 pair_report context::values(std::int64_t t, std::int64_t s) const {
   return prove_pair_values(resonant_pair<big_int>(big_int(t), big_int(s)), digits);
 }
 
 std::string draw_case_figures(context& c, const resonant_pair<std::int64_t>& p, const case_figures& f) {
-  c.figs.record(f.phase_stem, write_phase_figure(c.figs.spec(f.phase_stem, 1200, 640), phase_portrait_of_pair(p), f.phase_title));
-  c.figs.record(f.energy_stem, write_energy_figure(c.figs.spec(f.energy_stem, 900, 500), energy_of_pair(p), f.energy_title,
-                                                   "exact t_{first}"));
-  return c.figs.md(f.phase_stem, f.phase_caption) + c.figs.md(f.energy_stem, f.energy_caption);
+  const std::string fig = "Fig. " + std::to_string(f.number), figure = "Figure " + std::to_string(f.number);
+  const std::string stem = std::to_string(p.tau()) + "-" + std::to_string(p.sigma());
+  const std::string phase = "fig" + std::to_string(f.number) + "a-phase-" + stem, energy = "fig" + std::to_string(f.number) + "b-energy-" + stem;
+  const app::figure_subject s{p};
+  c.figs.record(phase, frontend::write_phase_figure(c.figs.spec(phase, 1200, 640), app::phase_figure(s),
+                                                    fig + "a: " + f.name + " case " + p.str() + f.phase_note));
+  c.figs.record(energy, frontend::write_energy_figure(c.figs.spec(energy, 900, 500), app::energy_figure(s),
+                                                      fig + "b: " + f.name + " case " + p.str(), "exact t_{first}"));
+  return c.figs.md(phase, figure + "a: " + p.str() + ", " + f.phase_caption) +
+         c.figs.md(energy, figure + "b: " + p.str() + ", " + f.energy_caption);
 }
 
 std::string pair_name(std::int64_t t, std::int64_t s) {
@@ -104,4 +104,4 @@ std::string verdict(bool ok) { return ok ? "agrees" : "**differs**"; }
 
 const char* const claims_table_head = "| claim (paper) | gyrores | verdict |\n|---|---|---|\n";
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

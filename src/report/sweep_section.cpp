@@ -4,9 +4,9 @@
 
 #include <gyrores/sweep/sweep.hpp>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 namespace {
 
 std::string examples_of(const sweep_tally& t) {
@@ -58,4 +58,4 @@ std::string sweep_section(std::int64_t S) {
   return md.str();
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

@@ -14,10 +14,10 @@
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/theorem/horizon.hpp>
 
-#include "../gnuplot.hpp"
-#include "report.hpp"
+#include "frontend/gnuplot.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 namespace {
 
 // (a): the horizons, 24 per decade from 1 to 10^12 (4 significant digits, exact decimals), and
@@ -77,7 +77,7 @@ std::string horizon_data(const std::vector<std::vector<horizon_row>>& curves) {
 // A guide of slope -4 through the last point of n = 2 (at T = 10^12).
 std::string horizon_script(const figure_spec& s, const std::vector<horizon_row>& n2, const std::string& title) {
   std::ostringstream g;
-  g << figure_script_head("report figure", title, s) << "set title " << gnuplot_string(title) << " noenhanced\n"
+  g << frontend::figure_script_head("report figure", title, s) << "set title " << frontend::gnuplot_string(title) << " noenhanced\n"
     << "set logscale xy\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\n"
     << "set xlabel \"horizon T\"\nset ylabel \"min of H_q over [0, T]\"\n"
     << "set grid lc rgb \"#dddddd\"\nset key bottom left box opaque\n"
@@ -143,7 +143,7 @@ std::string absorb_data(const std::vector<absorb_point>& dec, const std::vector<
 // reach the level on a strip of their own above (a log axis has no "never").
 std::string absorb_script(const figure_spec& s, const std::string& title) {
   std::ostringstream g;
-  g << figure_script_head("report figure", title, s) << "set multiplot title " << gnuplot_string(title) << " noenhanced\n"
+  g << frontend::figure_script_head("report figure", title, s) << "set multiplot title " << frontend::gnuplot_string(title) << " noenhanced\n"
     << "set logscale x\nset xrange [0.045:5.5]\nset grid lc rgb \"#dddddd\"\n"
     << "set lmargin (small ? 9 : 11)\nset rmargin (small ? 2 : 3)\n"
     << "# upper strip: resonant pairs whose H_q min exceeds the level\n"
@@ -189,7 +189,7 @@ std::string part_a(context& c) {
   const std::string title = "min of H_q over [0, T]: n = 2 (Fig. 1a) and n = 0.1832, horizon theorem";
   const auto spec = c.figs.spec("fig-coupling-horizon", 900, 560);
   c.figs.record("fig-coupling-horizon",
-                write_figure_files(spec, horizon_data(curves), horizon_script(spec, curves[0], title)));
+                frontend::write_figure_files(spec, horizon_data(curves), horizon_script(spec, curves[0], title)));
   md << c.figs.md("fig-coupling-horizon",
                   "The minimum of H_q over [0, T] against T (log-log), 24 proved horizons per decade drawn as steps; "
                   "the dashed line has slope -4.");
@@ -243,7 +243,7 @@ std::string part_b(context& c) {
   md << "\n";
   const std::string title = "first t with H_q <= 1% of H_q(0), against n (horizon theorem)";
   const auto spec = c.figs.spec("fig-coupling-absorb", 900, 600);
-  c.figs.record("fig-coupling-absorb", write_figure_files(spec, absorb_data(dec, pairs), absorb_script(spec, title)));
+  c.figs.record("fig-coupling-absorb", frontend::write_figure_files(spec, absorb_data(dec, pairs), absorb_script(spec, title)));
   md << c.figs.md("fig-coupling-absorb",
                   "The first time H_q falls to 1% of its initial value against n (log-log): decimal couplings (blue), "
                   "resonant pairs that get there (red circles) and those whose H_q min stays above 1% (strip on top).");
@@ -256,4 +256,4 @@ std::string coupling_section(context& c) {
   return "## 7. Couplings that are not resonant: any horizon, any level\n\n" + part_a(c) + part_b(c);
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

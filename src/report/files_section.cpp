@@ -1,9 +1,9 @@
 // The report's closing sections: the list of files, and the notes on figures not drawn.
 #include <sstream>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 
 std::string files_section(const figure_set& figs) {
   std::ostringstream md;
@@ -24,5 +24,5 @@ std::string files_section(const figure_set& figs) {
   return md.str();
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report
 

@@ -1,16 +1,17 @@
-// The CLI process as a whole: how SIGINT and SIGTERM end a command, helper processes (gnuplot)
-// run without a shell, and the progress line of long commands on a terminal.
+// The process of a program around the library (the gyrores tool, src/cli/, with the report
+// generator, src/report/): how SIGINT and SIGTERM end a command, helper processes (gnuplot) run
+// without a shell, and the progress line of long commands on a terminal.
 //
 // Interrupts (docs/formats.md, "Exit statuses"): main() installs a handler that ends any
 // command with exit 130 ("gyrores: interrupted" on stderr), after stopping a helper process
 // started by run_helper and removing its private directory; a sweep replaces it for its run
-// (cmd_sweep.cpp: a checkpoint first). A signal ignored when gyrores starts (nohup, `&` in a
-// script) stays ignored.
+// (src/cli/cmd_sweep.cpp: a checkpoint first). A signal ignored when gyrores starts (nohup, `&`
+// in a script) stays ignored.
 #pragma once
 #include <string>
 #include <vector>
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 
 // Called once by main(): the handlers above.
 void install_interrupt_handlers();
@@ -29,7 +30,7 @@ bool program_in_path(const std::string& name);
 
 // The progress line: on a terminal (stderr), a command still running after 2 s shows
 // "gyrores CMD: STAGE, N s (Ctrl-C stops it)", redrawn every second and erased when it ends.
-// Nothing when stderr is not a terminal (logs stay clean). The sweep has its own (cmd_sweep.cpp).
+// Nothing when stderr is not a terminal (logs stay clean). The sweep has its own (src/cli/cmd_sweep.cpp).
 class progress_line {
  public:
   explicit progress_line(std::string command);
@@ -45,4 +46,4 @@ class progress_line {
 // What the running command is doing, for the progress line ("proving the band's extremes").
 void progress_stage(const std::string& stage);
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

@@ -2,9 +2,9 @@
 // constraint and with the paper's proxy.
 #include <sstream>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 namespace {
 
 // One row: a problem and T_max, the pair chosen with the exact time and with the proxy.
@@ -88,4 +88,4 @@ std::string design_section(context& c) {
   return md.str();
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

@@ -2,9 +2,9 @@
 // delta does with the exact time and with the paper's proxy.
 #include <sstream>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 namespace {
 
 std::string case_a_claims(context& c) {
@@ -73,14 +73,11 @@ std::string delta_table(context& c) {
 }  // namespace
 
 std::string case_a_section(context& c) {
-  std::ostringstream md;
-  md << "## 2. Case A (absorption): the pair (11, 9)\n\n" << case_a_claims(c) << delta_table(c);
-  md << draw_case_figures(c, resonant_pair<std::int64_t>(11, 9),
-                          {"fig2a-phase-11-9", "Fig. 2a: absorption case (11, 9), r_res = 0",
-                           "Figure 2a: (11, 9), closed Lissajous curve through the origin (degenerate inscribed circle).",
-                           "fig2b-energy-11-9", "Fig. 2b: absorption case (11, 9)",
-                           "Figure 2b: (11, 9), H_q(t) and H_z(t); exact t_first and the proxy pi/n coincide for delta = 2."});
-  return md.str();
+  const std::string claims = case_a_claims(c), deltas = delta_table(c);
+  return "## 2. Case A (absorption): the pair (11, 9)\n\n" + claims + deltas +
+         draw_case_figures(c, resonant_pair<std::int64_t>(11, 9),
+                           {2, "absorption", ", r_res = 0", "closed Lissajous curve through the origin (degenerate inscribed circle).",
+                            "H_q(t) and H_z(t); exact t_first and the proxy pi/n coincide for delta = 2."});
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

@@ -1,7 +1,8 @@
-// The three figure kinds (paper Figs. 1-4): phase portrait, energy exchange, Pareto front. Each
-// writes NAME.dat and NAME.gp beside the image(s) and draws with gnuplot (gnuplot.hpp). The data
-// come from include/gyrores/design/figures.hpp and design.hpp (double, plotting resolution; the
-// marked r_res and t_first come from the exact solvers).
+// The three figure kinds (paper Figs. 1-4) of `gyrores plot`, `gyrores pareto --plot` and the
+// report: phase portrait, energy exchange, Pareto front. Each writes NAME.dat and NAME.gp beside
+// the image(s) and draws with gnuplot (frontend/gnuplot.hpp). The data come from the application
+// layer, include/gyrores/app/figures.hpp (double, plotting resolution; the marked r_res and
+// t_first come from the exact solvers).
 #pragma once
 #include <filesystem>
 #include <string>
@@ -11,7 +12,7 @@
 #include <gyrores/design/figures.hpp>
 #include <gyrores/io/files.hpp>
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 
 namespace fs = std::filesystem;
 
@@ -53,8 +54,8 @@ figure_output write_energy_figure(const figure_spec& s, const energy_series& e, 
 // Pareto: every pair with r_res > 0 (grey) and the front (red, some pairs labelled) on log axes,
 // an inset with the front alone over its own ranges (on the whole time axis it is a sliver), and
 // the degenerate pairs (r_res = 0) on a strip of their own below, sharing the time axis.
-// Above 50000 pairs the grey and the strip are thinned to one pair per 2x2 pixels (said in the
-// title and the data file), so that a vector image stays a few MB.
+// The points are app::pareto_figure_points_of's: thinned above app::pareto_thin_above pairs (said
+// in the title and the data file), so that a vector image stays a few MB.
 figure_output write_pareto_figure(const figure_spec& s, const std::vector<design_point>& all,
                                   const std::vector<design_point>& front, design_time which,
                                   const std::string& title);
@@ -68,4 +69,4 @@ figure_output write_figure_files(const figure_spec& s, const std::string& data, 
 // "absorb: min r_res, min time" or "contain: max r_res, min time" (figure titles).
 std::string pareto_orientation_caption(pareto_orientation o);
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

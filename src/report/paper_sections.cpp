@@ -1,14 +1,13 @@
 // The report's introduction and Section 1 (the paper's Figure 1: n = 2 and n = 1/sqrt(12)).
 #include <sstream>
 
-#include <gyrores/core/real.hpp>
-#include <gyrores/design/coupling.hpp>
-#include <gyrores/design/coupling_report.hpp>
-#include <gyrores/design/figures.hpp>
+#include <gyrores/app/figures.hpp>
+#include <gyrores/model/coupling.hpp>
+#include <gyrores/theorem/horizon.hpp>
 
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 
 std::string intro_section(unsigned digits) {
   std::ostringstream md;
@@ -29,10 +28,9 @@ std::string intro_section(unsigned digits) {
 std::string figure1_section(context& c) {
   std::ostringstream md;
   md << "## 1. Figure 1: n = 2 and n = 1/sqrt(12)\n\n";
-  const auto s2 = coupling_spec::from_n(big_rational(2));
+  const auto s2 = coupling_spec::from_n(big_rational(2)), s12 = coupling_spec::from_n2(big_rational(1, 12));
   const auto p2 = coupling_resonant_pair(s2);
-  const auto p12 = coupling_resonant_pair(coupling_spec::from_n2(big_rational(1, 12)));
-  const double span = 200 * real_pi<double>() / 2;
+  const auto p12 = coupling_resonant_pair(s12);
   // min of H_q over the paper's span [0, 200 pi/n] = [0, 100 pi], proved (the horizon theorem)
   const auto h = prove_horizon_minimum(s2, horizon_time(big_rational(100), true), c.digits);
   md << claims_table_head
@@ -50,14 +48,16 @@ std::string figure1_section(context& c) {
   const auto v43 = c.values(4, 3);
   md << "For (4, 3): n = " << v43.n << ", r_res = " << v43.r_res << ", H_q min = " << v43.h_min << ", t_first = " << v43.t_first
      << ", proxy pi/n = " << v43.t_min_paper << " (`gyrores coupling --n2 1/12`).\n\n";
-  c.figs.record("fig1a-phase-n2", write_phase_figure(c.figs.spec("fig1a-phase-n2", 1200, 640), phase_portrait_of_coupling(2.0, 1.0, span),
-                                                      "Fig. 1a: n = 2 (not resonant), t in [0, 200 pi/n]"));
-  c.figs.record("fig1b-phase-4-3", write_phase_figure(c.figs.spec("fig1b-phase-4-3", 1200, 640),
-                                                       phase_portrait_of_pair(resonant_pair<std::int64_t>(4, 3)),
-                                                       "Fig. 1b: n = 1/sqrt(12), the pair (4, 3)"));
+  // Over the paper's span [0, 200 pi/n] (app::phase_figure's default) and over the period of (4, 3).
+  c.figs.record("fig1a-phase-n2", frontend::write_phase_figure(c.figs.spec("fig1a-phase-n2", 1200, 640),
+                                                                app::phase_figure(app::figure_subject_of(s2)),
+                                                                "Fig. 1a: n = 2 (not resonant), t in [0, 200 pi/n]"));
+  c.figs.record("fig1b-phase-4-3", frontend::write_phase_figure(c.figs.spec("fig1b-phase-4-3", 1200, 640),
+                                                                 app::phase_figure(app::figure_subject_of(s12)),
+                                                                 "Fig. 1b: n = 1/sqrt(12), the pair (4, 3)"));
   md << c.figs.md("fig1a-phase-n2", "Figure 1a: n = 2, trajectory over [0, 200 pi/n], envelope x_d, maximal circle; the zoom shows the smallest radius reached on that span.")
      << c.figs.md("fig1b-phase-4-3", "Figure 1b: n = 1/sqrt(12), the closed Lissajous curve of (4, 3) with its inscribed circle.");
   return md.str();
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report

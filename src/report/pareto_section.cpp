@@ -1,12 +1,13 @@
 // The report's Section 5: the Pareto front (the paper's Figure 4), its table, CSV and figure.
 #include <sstream>
 
+#include <gyrores/app/pareto.hpp>
+#include <gyrores/io/design_output.hpp>
 #include <gyrores/io/files.hpp>
 
-#include "../pair_output.hpp"
-#include "report.hpp"
+#include "report/sections.hpp"
 
-namespace gyrores::cli::report {
+namespace gyrores::report {
 namespace {
 
 // One markdown table row for a pair with proved values.
@@ -36,31 +37,27 @@ std::string front_observation(const context& c, const std::vector<design_point>&
 std::string pareto_section(context& c, std::int64_t M) {
   std::ostringstream md;
   md << "## 5. Pareto front (Figure 4), pairs with tau + sigma <= " << M << "\n\n";
-  std::vector<design_point> pts, nondeg;
-  for (const auto& p : c.catalogue)
-    if (p.order() <= M) pts.push_back(p);
-  for (const auto& p : pts)
-    if (!p.degenerate) nondeg.push_back(p);
-  const auto front = pareto_front(pts, pareto_orientation::absorb, design_time::first_hit);
+  app::pareto_request r;  // `gyrores pareto --max-order M`
+  r.max_order = M;
+  r.digits = c.digits;
+  const app::pareto_outcome p = app::run_pareto(r);
+  std::vector<design_point> nondeg;
+  for (const auto& q : p.pairs)
+    if (!q.degenerate) nondeg.push_back(q);
   const auto front_nd = pareto_front(nondeg, pareto_orientation::absorb, design_time::first_hit);
   md << "Orientation: absorption, lower r_res and lower exact t_first are better (`gyrores pareto --max-order " << M
-     << "`). " << front.size() << " of " << pts.size() << " pairs are non-dominated"
+     << "`). " << p.front.size() << " of " << p.pairs.size() << " pairs are non-dominated"
      << " (" << front_nd.size() << " when degenerate pairs are excluded, `--exclude-degenerate`).\n\n"
-     << front_observation(c, front) << pair_table_head;
-  std::ostringstream csv;
-  csv << pareto_csv_header;
-  for (const auto& p : front) {
-    const auto v = c.values(p.tau, p.sigma);
-    md << pair_row(p, v);
-    csv << pareto_csv_row(p, v);
-  }
-  write_file_atomically(c.dir / "pareto-front.csv", csv.str());
+     << front_observation(c, p.front) << pair_table_head;
+  for (std::size_t i = 0; i < p.front.size(); ++i) md << pair_row(p.front[i], p.values[i]);
+  write_file_atomically(c.dir / "pareto-front.csv", pareto_csv(p.front, p.values));
   md << "\nThe front as CSV: [pareto-front.csv](pareto-front.csv).\n\n";
-  c.figs.record("fig4-pareto", write_pareto_figure(c.figs.spec("fig4-pareto", 900, 640), pts, front, design_time::first_hit,
-                                                    "Fig. 4: Pareto front, tau+sigma <= " + std::to_string(M) +
-                                                        " (absorb: min r_res, min t_first)"));
+  c.figs.record("fig4-pareto", frontend::write_pareto_figure(c.figs.spec("fig4-pareto", 900, 640), p.pairs, p.front,
+                                                              design_time::first_hit,
+                                                              "Fig. 4: Pareto front, tau+sigma <= " + std::to_string(M) +
+                                                                  " (absorb: min r_res, min t_first)"));
   md << c.figs.md("fig4-pareto", "Figure 4: r_res against the exact first-hit time (log axes) for every pair; degenerate pairs (r_res = 0) on the bottom line; the Pareto front in red.");
   return md.str();
 }
 
-}  // namespace gyrores::cli::report
+}  // namespace gyrores::report
