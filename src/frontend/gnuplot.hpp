@@ -1,5 +1,5 @@
-// gnuplot for the figures (frontend/plots.hpp): running gnuplot on a script kept beside its figure (files
-// are written atomically by io/files.hpp).
+// gnuplot for the figures (frontend/plots.hpp): running gnuplot on a script kept beside its
+// figure (files are written atomically by io/files.hpp).
 //
 // Every figure is three files in one directory: NAME.dat (the data, gnuplot blocks separated by
 // two blank lines, `index k`), NAME.gp (the script; it picks the terminal from the output

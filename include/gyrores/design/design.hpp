@@ -19,8 +19,8 @@
 // (theorem/minimum.hpp: O(log tau) integers and one root per pair; degenerate pairs are exact
 // zeros by integer arithmetic). Decisions that double cannot make safely are made on proved
 // 256-bit enclosures (theorem/minimum.hpp): a time within a relative 1e-9 of T_max, and
-// neighbouring r_res values within a relative 1e-11 among the reported ranks. The CLI prints the
-// reported pairs' values proved and correctly rounded (prove_pair_values, theorem/pair_report.hpp).
+// neighbouring r_res values within a relative 1e-11 among the reported ranks. The application
+// layer (app/design.hpp) lists the reported pairs' values proved and correctly rounded.
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,7 @@
-// Data behind the figures (paper Figs. 1-4): trajectory samples on (q, q'), the analytic
-// envelope x_d(phi), the inscribed and maximal circles, H_q(t) and H_z(t), and the Pareto
-// scatter. Only data: drawing (gnuplot) lives in the CLI (src/cli/gnuplot.hpp, src/cli/plots.hpp).
+// Data behind the figures (paper Figs. 1-3): trajectory samples on (q, q'), the analytic
+// envelope x_d(phi), the inscribed and maximal circles, H_q(t) and H_z(t). Only data: what a
+// figure shows is chosen in the application layer (app/figures.hpp, also the Pareto figure's
+// points), drawing (gnuplot) lives beside the CLI (src/frontend/plots.hpp).
 //
 // Everything here is for plotting, in double. The marked values (r_res, t_first) come from the
 // exact solvers (the lattice theorem in double for pairs, theorem/minimum.hpp; horizon_minimum
@@ -41,9 +42,6 @@ struct phase_portrait {
   // trajectory is sampled at plotting resolution only.
   std::vector<std::vector<plane_point<double>>> near_minimisers;
 };
-
-// The envelope boundary x_d(phi) (paper eq. boundary) at `samples` + 1 points, phi in [0, 2 pi].
-std::vector<plane_point<double>> envelope_curve(double n, double v, std::size_t samples);
 
 // Phase portrait of a resonant pair over one period theta in [0, 2 pi) (t in [0, 2 pi sqrt(tau sigma)]).
 // Throws usage_error beyond figure_max_order.

@@ -74,6 +74,11 @@ struct pair_figure_basis {
   }
 };
 
+// The envelope boundary x_d(phi) (paper eq. boundary) at `samples` + 1 points, phi in [0, 2 pi].
+std::vector<plane_point<double>> envelope_curve(double n, double v, std::size_t samples) {
+  return sample_uniform(2 * real_pi<double>(), samples, [&](double phi) { return envelope_boundary(n, v, phi); });
+}
+
 plane_point<double> impulse_point(double n, double v, double t) {
   auto s = impulse_response(n, v, t);
   return {s.q, s.qdot};
@@ -84,10 +89,6 @@ plane_point<double> impulse_point(double n, double v, double t) {
 resonant_pair<std::int64_t> figure_pair_of(const resonant_pair<big_int>& p) {
   if (!pair_fits_int64(p) || p.order() > big_int(figure_max_order)) throw_figure_order(p.str());
   return pair_cast<std::int64_t>(p);
-}
-
-std::vector<plane_point<double>> envelope_curve(double n, double v, std::size_t samples) {
-  return sample_uniform(2 * real_pi<double>(), samples, [&](double phi) { return envelope_boundary(n, v, phi); });
 }
 
 phase_portrait phase_portrait_of_pair(const resonant_pair<std::int64_t>& p, double v) {
