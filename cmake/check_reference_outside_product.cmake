@@ -1,12 +1,13 @@
 # The tests' oracles (tests/reference/, e.g. the retired cover certificate) are not part of the
-# product: no source of the library, the I/O part, the tool, the checker or the Python module may
-# include them. Run by ctest (test "reference_outside_product"):
+# product: no source of the library, the I/O part, the application layer, the tool and its report
+# generator, the checker or the Python module may include them. Run by ctest (test
+# "reference_outside_product"):
 #   cmake -DGYRORES_SOURCE_DIR=<repo> -P cmake/check_reference_outside_product.cmake
 cmake_minimum_required(VERSION 3.25)
 if(NOT GYRORES_SOURCE_DIR)
   message(FATAL_ERROR "check_reference_outside_product: pass -DGYRORES_SOURCE_DIR=<repo>")
 endif()
-set(product_dirs include/gyrores src/lib src/io src/cli src/checker python/src)
+set(product_dirs include/gyrores src/lib src/io src/app src/frontend src/report src/cli src/checker python/src)
 set(violations 0)
 foreach(dir ${product_dirs})
   file(GLOB_RECURSE sources ${GYRORES_SOURCE_DIR}/${dir}/*.hpp ${GYRORES_SOURCE_DIR}/${dir}/*.cpp)
