@@ -1,4 +1,4 @@
-// The cross-check: sweep rows against the global search (search/global_search.hpp), which
+// The cross-check: sweep rows against the global search (tests/reference/global_search.hpp), which
 // assumes nothing of the lattice theorem: it brackets every root of q' and z' (all 4 tau critical
 // points of R) and keeps the smallest R. Until sweep format version 2 this was the sweep's opt-in
 // check `cross-check` (docs/formats.md, "Sweep format versions"); it is a test of the sources
@@ -9,7 +9,7 @@
 // both sides):
 //  - double rows: their values are the theorem's minimum in double (theorem_minimum_double), and
 //    that minimum passes cross_check_global: the same r_res and every minimiser to a relative
-//    1e-9, with a clear gap to the next critical value (search/cross_check.hpp);
+//    1e-9, with a clear gap to the next critical value (tests/reference/cross_check.hpp);
 //  - certified double rows (proved roundings of the exact values): r_res, theta_first and the
 //    minimiser count as the global search's in double, to a relative 1e-9;
 //  - MPFR rows at 40 digits: the same against the global search at 50 digits, to 1e-30.
@@ -23,11 +23,11 @@
 #include <string>
 
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/search/cross_check.hpp>
-#include <gyrores/search/global_search.hpp>
 #include <gyrores/sweep/evaluate.hpp>
 #include <gyrores/theorem/minimum.hpp>
 
+#include "reference/cross_check.hpp"
+#include "reference/global_search.hpp"
 #include "testing/test_support.hpp"
 
 using namespace gyrores;

@@ -1,7 +1,5 @@
 // Umbrella header: the whole mathematical library, layer by layer in the order the data flows
 // (docs/architecture.md). File and JSON I/O is the separate io/ part: include <gyrores/io/...>.
-// The skeptic's cross-validation (search/: the global search over every critical point) is on
-// no default path and not included here: include <gyrores/search/...> for it.
 #pragma once
 // core: errors, integers, reals, decimal text, fixed-precision MPFR/MPFI, roots, precision and verified digits
 #include <gyrores/core/error.hpp>            // usage_error (bad input), compute_error (could not compute honestly)
