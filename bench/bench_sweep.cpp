@@ -4,13 +4,13 @@
 //
 //   bench_sweep                                   orders <= 2000 in double (1, 2 threads), the
 //                                                 certified sweep, MPFR rows at 40 digits (1, 2
-//                                                 threads), the opt-in cross-check's cost
+//                                                 threads)
 //   GYRORES_BENCH_SWEEP_FULL=1 bench_sweep --benchmark_filter=full
 //                                                 the speed target: every pair of order <= 10^4
 //                                                 (1.52e7 pairs), the default checks, all cores, once
 // The same number comes from the CLI: `gyrores sweep --max-order 10000` prints pairs/s.
-// Arguments of each case: max_order, threads, checks (bit mask, sweep.hpp order), cross-check
-// limit, mode (0 double, 1 double --certified, 2 mpfr_real at 40 digits). The work is
+// Arguments of each case: max_order, threads, checks (bit mask, sweep.hpp order), mode (0 double,
+// 1 double --certified, 2 mpfr_real at 40 digits). The work is
 // deterministic (the enumeration), so there is no seed.
 #include <benchmark/benchmark.h>
 
@@ -38,8 +38,7 @@ void sweep_summary_only(benchmark::State& st) {
   gyrores::sweep_config c;
   c.max_order = st.range(0);
   c.checks = gyrores::sweep_check_set(st.range(2));
-  c.cross_check_max_order = st.range(3);
-  const auto mode = st.range(4);
+  const auto mode = st.range(3);
   c.certified = mode == 1;
   if (mode == 2) c.digits = 40;
   gyrores::sweep_engine_options eo;
@@ -61,34 +60,26 @@ void sweep_summary_only(benchmark::State& st) {
 }
 
 constexpr std::int64_t defaults = gyrores::sweep_default_checks;
-constexpr std::int64_t cross_only = 1u << int(gyrores::sweep_check::cross_check);
-const std::vector<std::string> arg_names = {"max_order", "threads", "checks", "xcheck", "mode"};
+const std::vector<std::string> arg_names = {"max_order", "threads", "checks", "mode"};
 
 BENCHMARK(sweep_summary_only)
     ->Name("sweep/M2000/default-checks")
-    ->Args({2000, 1, defaults, 0, 0})
-    ->Args({2000, 2, defaults, 0, 0})
+    ->Args({2000, 1, defaults, 0})
+    ->Args({2000, 2, defaults, 0})
     ->ArgNames(arg_names)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(sweep_summary_only)
     ->Name("sweep/M1000/certified")
-    ->Args({1000, 2, defaults, 0, 1})
+    ->Args({1000, 2, defaults, 1})
     ->ArgNames(arg_names)
     ->UseRealTime()
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(sweep_summary_only)
     ->Name("sweep/M500/mpfr40")
-    ->Args({500, 1, defaults, 0, 2})
-    ->Args({500, 2, defaults, 0, 2})
-    ->ArgNames(arg_names)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(sweep_summary_only)
-    ->Name("sweep/M300/cross-check-only")
-    ->Args({300, 2, cross_only, 300, 0})
+    ->Args({500, 1, defaults, 2})
+    ->Args({500, 2, defaults, 2})
     ->ArgNames(arg_names)
     ->UseRealTime()
     ->Iterations(1)
@@ -99,7 +90,7 @@ const bool full_registered = [] {
   const char* e = std::getenv("GYRORES_BENCH_SWEEP_FULL");
   if (e && *e && *e != '0')
     benchmark::RegisterBenchmark("sweep/full/M10000/default-checks", sweep_summary_only)
-        ->Args({10000, 0, defaults, gyrores::sweep_cross_check_default_max_order, 0})
+        ->Args({10000, 0, defaults, 0})
         ->ArgNames(arg_names)
         ->UseRealTime()
         ->Iterations(1)

@@ -1,12 +1,12 @@
 // The paper's lobe in the proof programs verify_error_bound and verify_section5: for a fast node
 // k (lobe frame (k, 0), m = a - 2 k b, |m| <= b when x < 1/2), the exact root u_c of q' and the
 // paper's u_asy, the root of u + tan u = s, s = pi m/(2b), both enclosed by interval Newton
-// (core/interval_newton.hpp) from floating-point guesses.
+// (tests/reference/interval_newton.hpp) from floating-point guesses.
 #pragma once
 #include <cstdint>
 #include <optional>
 
-#include "reference/proof_steps.hpp"
+#include "reference/lobe_intervals.hpp"
 
 namespace gyrores::proofs {
 

@@ -1,32 +1,34 @@
-// verify_degenerate: paper Thm. degenerate (docs/mathematics.md §2, P3), for every pair up to --max-order,
-// independently of certify_pair (it reuses only the proof steps: lobe frames, basins, cover).
+// verify_degenerate: paper Thm. degenerate (docs/mathematics.md §2, P3), for every pair up to --max-order.
 //
 // The theorem is proved in proofs/README.md (P3) and proofs/global-minimality.md §1. Per pair
-// this program decides, with exact integers and MPFI:
+// this program decides, with exact integers, MPFI and the lattice theorem's certificate
+// (gyrores-certificate/2, proofs/lattice-theorem.md, re-proved by the independent checker of
+// src/checker/):
 //   P3.zero        delta = 2 mod 4  =>  q(pi/2) = q'(pi/2) = 0: tau, sigma odd and
 //                  tau + sigma = 0 mod 4 (integers), so cos(tau pi/2) = cos(sigma pi/2) = 0 and
 //                  sin(tau pi/2) = -sin(sigma pi/2) (exact); MPFI enclosures of the paper's
 //                  q(pi/2), q'(pi/2) must contain 0 (consistency only).
 //   P3.zero-set    delta = 2 mod 4  =>  the zeros of R in [0, 2 pi) are exactly pi/2 and 3 pi/2, so
-//                  pi/2 is the first: around each, in the lobe frame (a/4, (b-2)/4) (m = 0) and its
-//                  mirror, a basin Y is proved (q' strictly monotone with a sign change, z' != 0:
-//                  the zero is the only critical point of R in Y) and the cover proves R > 0 on
-//                  [0, 2 pi) outside the two basins.
-//   P3.positive    delta != 2 mod 4  =>  R > 0 on all of [0, 2 pi) (cover with bound 0, no basins),
-//                  so r_res > 0.
+//                  pi/2 is the first: the certificate states m_min = 0, r_res = 0 and exactly the
+//                  two lobes (a/4, (b-2)/4) and (3a/4, (3b-2)/4) with m = 0 and u* = 0, i.e.
+//                  theta = 2 k pi/a = pi/2, 3 pi/2: by the theorem these are all the global
+//                  minimisers, the zeros of R.
+//   P3.positive    delta != 2 mod 4  =>  R > 0 on all of [0, 2 pi): the certificate's r_res has a
+//                  positive lower end.
 //   P3.iff         r_res = 0 <=> delta = 2 mod 4: the conjunction of the above for the pair.
-// Cover strategy: "all-lobes" (every fast lobe bisected) when a <= 8 b, "slow-nodes" (Rayleigh
-// bound away from the slow nodes, the lobes at each node bisected) otherwise; both are
-// proof::run_cover (reference/cover.hpp) with bound 0 (proofs/global-minimality.md §6, §7).
-#include <limits>
+// A certificate the checker does not accept decides nothing (undecided). (Up to commit 9cd03bc
+// this program proved the last three by interval covers of every lobe, without the theorem; its
+// runs are the logs of proofs/README.md.)
+#include <gyrores/certify/theorem_certificate.hpp>
+#include <gyrores/io/certificate_json.hpp>
 
-#include "reference/cover.hpp"
+#include "certificate_checker.hpp"
+#include "reference/lobe_intervals.hpp"
 #include "verify_common.hpp"
 
 using namespace gyrores;
 using namespace gyrores::proofs;
 using I = gyrores::proof::I;
-using P = gyrores::proof::P;
 
 namespace {
 
@@ -37,31 +39,26 @@ struct degenerate_claims {
 degenerate_claims add_claims(run& R) {
   return {R.add_claim("P3.zero", "delta = 2 mod 4 => q(pi/2) = q'(pi/2) = 0 (integers; MPFI consistent)", true),
           R.add_claim("P3.zero-set",
-                      "delta = 2 mod 4 => the zeros of R in [0, 2 pi) are exactly pi/2, 3 pi/2 (basins + "
-                      "cover with bound 0); pi/2 is the first zero",
+                      "delta = 2 mod 4 => the zeros of R in [0, 2 pi) are exactly pi/2, 3 pi/2 (the theorem's "
+                      "certificate: the two m = 0 lobes at u* = 0, r_res = 0); pi/2 is the first zero",
                       true),
-          R.add_claim("P3.positive", "delta != 2 mod 4 => R > 0 on [0, 2 pi) (cover with bound 0)", true),
+          R.add_claim("P3.positive", "delta != 2 mod 4 => R > 0 on [0, 2 pi) (the certificate's r_res > 0)", true),
           R.add_claim("P3.iff", "r_res = 0 <=> delta = 2 mod 4", true)};
 }
 
-// The cover with bound 0 outside the basins: its decision and the log's description.
-struct zero_cover {
+// The pair's certificate, with the checker's verdict: undecided (and why) unless it holds.
+struct checked_certificate {
+  theorem_certificate cert;
   verdict v = verdict::undecided;
   std::string info;
-  std::uint64_t boxes = 0;
 };
 
-zero_cover cover_without_zeros(const proof::constants& K, const proof::basin_map& basins) {
-  certify_options copt;
-  copt.max_lobes = std::numeric_limits<std::int64_t>::max();
-  copt.max_nodes = std::numeric_limits<std::int64_t>::max();
-  const std::string strategy = (K.a <= 8 * K.b) ? "all-lobes" : "slow-nodes";
-  auto cov = proof::run_cover(K, basins, interval_point(P(0)), copt, strategy, "");
-  zero_cover out;
-  out.boxes = cov.stats.boxes;
-  out.v = cov.proved ? verdict::proved : verdict::undecided;
-  out.info = strategy + " lobes " + std::to_string(cov.stats.lobes) + " boxes " + std::to_string(cov.stats.boxes);
-  if (!cov.proved) out.info += " " + cov.note;
+checked_certificate certify_and_check(const resonant_pair<big_int>& p) {
+  checked_certificate out;
+  out.cert = certify_by_theorem(p, 6);
+  const auto check = gyrores_checker::check_theorem_certificate(certificate_to_json(out.cert).dump());
+  out.v = check.status == 0 ? verdict::proved : verdict::undecided;
+  out.info = check.status == 0 ? "certificate checked" : "certificate not accepted: " + check.message;
   return out;
 }
 
@@ -76,62 +73,54 @@ bool zero_at_half_pi(const resonant_pair<big_int>& p, const proof::constants& K)
   return ints && !certainly_nonzero(q) && !certainly_nonzero(qd);
 }
 
-// A basin around u = 0 in a frame with m = 0 (mu = 0), or nullopt.
-std::optional<I> zero_basin(const proof::constants& K) {
-  I mu = proof::mu_of(K, big_int(0));
-  for (P rho = P("0.5"); rho > P("1e-6"); rho /= 4) {
-    I cand = interval_of(P(-rho), rho);
-    if (proof::certify_basin(K, mu, cand)) return cand;
-  }
-  return std::nullopt;
-}
-
-// delta = 2 mod 4: P3.zero, then the basins of pi/2 and 3 pi/2 and the cover outside them.
-zero_cover decide_degenerate(degenerate_claims& C, const resonant_pair<big_int>& p, const proof::constants& K) {
+// delta = 2 mod 4: P3.zero, then the zero lobes of the certificate.
+verdict decide_degenerate(degenerate_claims& C, const resonant_pair<big_int>& p, const proof::constants& K,
+                          checked_certificate& cc) {
   const std::string name = p.str();
-  bool zero = zero_at_half_pi(p, K);
+  const bool zero = zero_at_half_pi(p, K);
   C.zero.add(decide_bool(zero), name);
-  // The frame of pi/2: (a/4, (b-2)/4), where m = (2j+1) a - 2 k b is 0.
-  big_int k = K.a / 4, j = (K.b - 2) / 4;
-  const bool m_zero = (2 * j + 1) * K.a - 2 * k * K.b == 0;
-  auto Y = m_zero ? zero_basin(K) : std::nullopt;
-  zero_cover out;
-  if (Y) out = cover_without_zeros(K, proof::basins_by_lobe(K, proof::images_of(K, k, j, false), *Y));
-  else out.info = m_zero ? "no basin proved" : "frame m != 0";
-  C.zero_set.add(out.v, name, out.v == verdict::proved ? "" : out.info);
+  const auto& c = cc.cert;
+  // The frames of pi/2 and 3 pi/2: (a/4, (b-2)/4) and (3a/4, (3b-2)/4), where m = (2j+1) a - 2 k b is 0.
+  const bool lobes = c.lobes.size() == 2 && c.lobes[0].k == K.a / 4 && c.lobes[0].j == (K.b - 2) / 4 &&
+                     c.lobes[1].k == 3 * K.a / 4 && c.lobes[1].j == (3 * K.b - 2) / 4 && c.lobes[0].m == 0 &&
+                     c.lobes[1].m == 0;
+  const bool at_zero = c.m_min == 0 && c.u_star == std::pair<std::string, std::string>{"0", "0"} &&
+                       c.r_res == std::pair<std::string, std::string>{"0", "0"};
+  const verdict v = verdict_and(cc.v, decide_bool(lobes && at_zero));
+  if (!(lobes && at_zero)) cc.info += "; lobes or zero claims not those of pi/2, 3 pi/2";
+  C.zero_set.add(v, name, v == verdict::proved ? "" : cc.info);
   C.positive.add(verdict::not_applicable, name);
-  C.iff.add(verdict_and(decide_bool(zero), out.v), name);
-  return out;
+  C.iff.add(verdict_and(decide_bool(zero), v), name);
+  return v;
 }
 
-// delta != 2 mod 4: R > 0 everywhere (no basins).
-zero_cover decide_positive(degenerate_claims& C, const resonant_pair<big_int>& p, const proof::constants& K) {
+// delta != 2 mod 4: r_res > 0.
+verdict decide_non_degenerate(degenerate_claims& C, const resonant_pair<big_int>& p, checked_certificate& cc) {
   const std::string name = p.str();
-  zero_cover out = cover_without_zeros(K, {});
+  const verdict v = verdict_and(cc.v, decide_positive(interval_from_decimal(cc.cert.r_res.first, cc.cert.r_res.second)));
   C.zero.add(verdict::not_applicable, name);
   C.zero_set.add(verdict::not_applicable, name);
-  C.positive.add(out.v, name, out.v == verdict::proved ? "" : out.info);
-  C.iff.add(out.v, name);
-  return out;
+  C.positive.add(v, name, v == verdict::proved ? "" : cc.info);
+  C.iff.add(v, name);
+  return v;
 }
 
 int verify(const options& opt) {
   run R("verify_degenerate", "paper Thm. degenerate (P3): r_res = 0 <=> delta = 2 mod 4, zeros at pi/2 and 3 pi/2",
         opt);
   auto C = add_claims(R);
-  R.log("# per pair: (tau,sigma) delta mod 4 | strategy lobes boxes | decision");
-  std::uint64_t total_boxes = 0;
+  R.log("# per pair: (tau,sigma) delta mod 4 | r_res | certificate | decision");
   for_each_pair(R, opt, [&](const resonant_pair<std::int64_t>& p64) {
     auto p = big_pair(p64);
-    scoped_digits sd(digits10_for_bits(64u + unsigned(boost::multiprecision::msb(p.order()))));
+    checked_certificate cc = certify_and_check(p);
+    scoped_digits sd(digits10_for_bits(cc.cert.bits));
     auto K = proof::constants_of(p);
     const bool deg = p.degenerate();
-    zero_cover res = deg ? decide_degenerate(C, p, K) : decide_positive(C, p, K);
-    total_boxes += res.boxes;
-    R.log(p.str() + " delta_mod4=" + std::to_string(p.delta_mod4()) + " | " + res.info + " | " +
-          (deg ? "zeros exactly {pi/2, 3pi/2}: " : "R > 0: ") + verdict_name(res.v));
+    const verdict v = deg ? decide_degenerate(C, p, K, cc) : decide_non_degenerate(C, p, cc);
+    R.log(p.str() + " delta_mod4=" + std::to_string(p.delta_mod4()) + " | r_res in [" + cc.cert.r_res.first + ", " +
+          cc.cert.r_res.second + "] | " + cc.info + " | " + (deg ? "zeros exactly {pi/2, 3pi/2}: " : "R > 0: ") +
+          verdict_name(v));
   });
-  R.note("cover boxes in total: " + std::to_string(total_boxes));
   return R.finish();
 }
 

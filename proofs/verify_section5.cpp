@@ -9,7 +9,7 @@
 //    decided.
 // 2. Case A (absorption, delta = 2 mod 4, beat condition (tau + sigma)/(tau - sigma) >= 10): for
 //    delta = 2 and 6 the admissible pairs in increasing sigma, each with its exact first-zero time
-//    t_first = sqrt(tau sigma) pi/2 (certify_pair: integer argument) beside the paper's proxy
+//    t_first = sqrt(tau sigma) pi/2 (certify_by_theorem: integer argument) beside the paper's proxy
 //    T_min = pi/|n|; the best pair is the smallest admissible sigma (t_first increases with sigma).
 //    Then, for every delta = 2 mod 4 with some admissible pair of order <= --caseA-order (default
 //    max(--max-order, 100)), the best
@@ -20,11 +20,11 @@
 //    certified r_res is below that of (6, 5). For orders a >= 62 this follows from
 //    r_res <= pi m_min/(2a) <= pi/a < r_res(6, 5) (proofs/README.md P8), so --max-order 61 completes the proof
 //    that (6, 5) is the best containment pair under the beat condition.
-#include <limits>
 #include <numeric>
 
+#include <gyrores/certify/theorem_certificate.hpp>
+
 #include "lobe_roots.hpp"
-#include "reference/certify.hpp"
 #include "verify_common.hpp"
 
 using namespace gyrores;
@@ -36,7 +36,7 @@ I enclosure(const std::pair<std::string, std::string>& c) { return interval_from
 
 // The certified first-zero (or first-minimum) time of a pair, at `digits` digits.
 I t_first_of(std::int64_t tau, std::int64_t sigma, unsigned digits) {
-  return enclosure(certify_pair(resonant_pair<big_int>(tau, sigma), digits).t_first);
+  return enclosure(certify_by_theorem(resonant_pair<big_int>(tau, sigma), digits).t_first);
 }
 
 // Point Newton steps at the working precision (the double guesses carry 53 bits only; interval
@@ -139,7 +139,7 @@ void printed_case_b(section5& S) {
   I n = S.n_of(6, 5);
   S.item("B.n", "n for (6, 5) = 1/sqrt(30)", "0.183", n, "0.0005");
   S.item("B.Tmin.proxy", "T_min ~ pi/n for (6, 5) (the proxy)", "17.2", pi / n, "0.05");
-  auto c = certify_pair(resonant_pair<big_int>(6, 5), 30);
+  auto c = certify_by_theorem(resonant_pair<big_int>(6, 5), 30);
   S.item("B.Tmin.exact", "exact first-minimum time t_first of (6, 5) (mirror lobe k = 5)", "17.2", enclosure(c.t_first), "0.05");
   const big_int m = -1;
   auto K = proof::constants_of(resonant_pair<big_int>(6, 5));
@@ -220,16 +220,13 @@ void case_a_best_per_delta(section5& S, std::int64_t caseA_order) {
 
 // Case B: (6, 5) against every beat pair of order <= max_order, then the tail a >= 62.
 void case_b_all_pairs(section5& S, std::int64_t max_order) {
-  I r65 = enclosure(certify_pair(resonant_pair<big_int>(6, 5), 10).r_res);
+  I r65 = enclosure(certify_by_theorem(resonant_pair<big_int>(6, 5), 10).r_res);
   S.R.log("## 3. Case B: beat pairs (a >= 10 b) with r_res below r_res(6, 5) = " + enc(r65, 10));
   for (auto p64 : coprime_pairs(3, max_order)) {
     if (!beat(p64.tau(), p64.sigma()) || (p64.tau() == 6 && p64.sigma() == 5)) continue;
     S.R.count_pair();
     auto p = big_pair(p64);
-    certify_options copt;
-    copt.max_nodes = std::numeric_limits<std::int64_t>::max();
-    auto c = certify_pair(p, 6, copt);
-    // r_res <= r_hi holds with or without global minimality (a point of the trajectory attains it).
+    auto c = certify_by_theorem(p, 6);
     verdict v = decide_less(enclosure({"0", c.r_res.second}), r65);
     S.caseB.add(v, p.str());
     S.R.log("B.pair | " + p.str() + " | r_res <= " + c.r_res.second + " | " + verdict_name(v));

@@ -18,7 +18,7 @@
 
 #include "reference/asymptotic.hpp"
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/search/global_search.hpp>
+#include "reference/global_search.hpp"
 #include "testing/naive_forms.hpp"
 #include "testing/test_support.hpp"
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <gyrores/gyrores.hpp>
-#include <gyrores/search/global_search.hpp>  // the reference the digits are checked against
+#include "reference/global_search.hpp"  // the reference the digits are checked against
 
 #include "cli_checks.hpp"
 #include "testing/cli_run.hpp"

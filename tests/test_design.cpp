@@ -23,7 +23,7 @@
 
 #include <gyrores/design/design.hpp>
 #include <gyrores/gyrores.hpp>
-#include <gyrores/search/global_search.hpp>
+#include "reference/global_search.hpp"
 
 #include "cli_checks.hpp"
 #include "testing/cli_run.hpp"

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include <gyrores/core/decimal.hpp>
-#include <gyrores/search/degenerate.hpp>
+#include "reference/degenerate.hpp"
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/search/global_search.hpp>
+#include "reference/global_search.hpp"
 #include <gyrores/model/pair.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/resonant.hpp>

@@ -22,9 +22,9 @@
 #include <iostream>
 #include <iomanip>
 
-#include <gyrores/search/cross_check.hpp>
+#include "reference/cross_check.hpp"
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/search/global_search.hpp>
+#include "reference/global_search.hpp"
 #include "reference/lattice.hpp"
 #include <gyrores/core/decimal.hpp>
 #include "testing/high_precision_reference.hpp"

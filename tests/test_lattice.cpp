@@ -11,9 +11,9 @@
 #include <sstream>
 #include <vector>
 
-#include <gyrores/search/cross_check.hpp>
+#include "reference/cross_check.hpp"
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/search/global_search.hpp>
+#include "reference/global_search.hpp"
 #include "reference/lattice.hpp"
 #include <gyrores/theorem/lobes.hpp>
 #include "testing/test_support.hpp"

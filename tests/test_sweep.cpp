@@ -92,11 +92,11 @@ TEST_CASE("sweep: check lists parse; unknown names are usage errors", "[sweep]")
   CHECK(sweep_parse_checks("all") == sweep_all_checks);
   CHECK(sweep_parse_checks("default") == sweep_default_checks);
   CHECK(sweep_parse_checks("degeneracy,paper-node,asy-bound,structure") == sweep_default_checks);
-  CHECK(sweep_parse_checks("default,cross-check") == sweep_all_checks);
-  CHECK_FALSE(sweep_has_check(sweep_config{}.checks, sweep_check::cross_check));  // opt-in
+  CHECK(sweep_default_checks == sweep_all_checks);
   CHECK(sweep_config{}.checks == sweep_default_checks);
   CHECK(sweep_parse_checks("degeneracy,asy-bound") == ((1u << 0) | (1u << 2)));
-  CHECK(sweep_parse_checks("cross-check") == (1u << 4));
+  // The check of sweep files before version 2 is named in the refusal (docs/formats.md).
+  CHECK_THROWS_WITH(sweep_parse_checks("default,cross-check"), Catch::Contains("no longer part of sweeps"));
   CHECK_THROWS_AS(sweep_parse_checks("degeneracy,bogus"), usage_error);
   CHECK_THROWS_AS(sweep_parse_checks(""), usage_error);
   sweep_config c = config(2);
@@ -110,13 +110,6 @@ TEST_CASE("sweep: check lists parse; unknown names are usage errors", "[sweep]")
   // The library names its parameters, never a CLI flag.
   CHECK_THROWS_WITH(sweep_validate(config(2)), "max_order must be >= 3, got 2");
   CHECK_THROWS_WITH(sweep_validate(config(10, 11)), "min_order 11 exceeds max_order 10");
-  c = config(10);
-  c.cross_check_max_order = -1;
-  CHECK_THROWS_WITH(sweep_validate(c), "cross_check_max_order must be >= 0");
-  c.cross_check_max_order = 100001;  // beyond the global search's limit: refused, not attempted
-  CHECK_THROWS_WITH(sweep_validate(c), "cross_check_max_order must be <= 100000 (the global search's limit), got 100001");
-  c.cross_check_max_order = 100000;
-  CHECK_NOTHROW(sweep_validate(c));
   CHECK(sweep_parse_format("jsonl") == sweep_format::jsonl);
   CHECK_THROWS_WITH(sweep_parse_format("xml"), "rows format must be csv or jsonl, got 'xml'");
 }
@@ -174,15 +167,6 @@ TEST_CASE("sweep: counts at order 60 agree with independent counting", "[sweep]"
   CHECK(acc.checks[int(sweep_check::degeneracy)].violations == 0);
   CHECK(acc.checks[int(sweep_check::structure)].checked == pairs);
   CHECK(acc.checks[int(sweep_check::structure)].violations == 0);
-  CHECK(acc.checks[int(sweep_check::cross_check)].checked == nondeg);  // asked for: every order <= 300
-  CHECK(acc.checks[int(sweep_check::cross_check)].violations == 0);
-  // By default the cross-check does not run; everything else is the same.
-  const auto by_default = run_acc(config(M), engine(2));
-  CHECK(by_default.checks[int(sweep_check::cross_check)].checked == 0);
-  for (auto c : {sweep_check::degeneracy, sweep_check::paper_node, sweep_check::asy_bound, sweep_check::structure}) {
-    CHECK(by_default.checks[int(c)].checked == acc.checks[int(c)].checked);
-    CHECK(by_default.checks[int(c)].violations == acc.checks[int(c)].violations);
-  }
   CHECK(acc.checks[int(sweep_check::asy_bound)].checked == small_x);
   CHECK(acc.checks[int(sweep_check::asy_bound)].violations == 0);
   CHECK(acc.checks[int(sweep_check::paper_node)].checked == nondeg);
@@ -227,17 +211,11 @@ TEST_CASE("sweep: per-pair rows for the paper's examples", "[sweep]") {
   auto r65 = sweep_evaluate<double>(resonant_pair<std::int64_t>(6, 5), c);
   CHECK(r65.status[int(sweep_check::paper_node)] == sweep_status::pass);
   CHECK(r65.status[int(sweep_check::asy_bound)] == sweep_status::pass);
-  CHECK(r65.status[int(sweep_check::cross_check)] == sweep_status::none);  // not asked for
-  sweep_config with_cross = c;
-  with_cross.checks = sweep_all_checks;
-  CHECK(sweep_evaluate<double>(resonant_pair<std::int64_t>(6, 5), with_cross).status[int(sweep_check::cross_check)] ==
-        sweep_status::pass);
   CHECK(r65.asy_error == Approx(1.16e-4).epsilon(0.01));  // printed in the paper (asymptotic.hpp)
   // (7,5): degenerate (delta = 2); R(pi/2) = 0, no paper-node verdict, ratio not collected.
   auto r75 = sweep_evaluate<double>(resonant_pair<std::int64_t>(7, 5), c);
   CHECK(r75.status[int(sweep_check::degeneracy)] == sweep_status::pass);
   CHECK(r75.status[int(sweep_check::paper_node)] == sweep_status::none);
-  CHECK(r75.status[int(sweep_check::cross_check)] == sweep_status::none);
   CHECK_FALSE(r75.has_ratio);
   CHECK(r75.r_res == 0);
   // delta = 0 mod 4: four minimisers.
@@ -450,7 +428,7 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
   // The summary file carries the documented keys.
   for (const char* k : {"pairs", "degenerate", "checks", "asy_ratio_max", "sharp_constant", "t_first_over_proxy", "seconds"})
     CHECK(s1.contains(k));
-  CHECK(s1["checks"].size() == 4);  // the default checks: cross-check is opt-in
+  CHECK(s1["checks"].size() == 4);  // the default checks
   for (auto& [name, t] : s1["checks"].items()) {
     CHECK(t.contains("violations"));
     CHECK(t.contains("examples"));
@@ -641,19 +619,31 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   INFO(old);
   CHECK(old.find("earlier version of gyrores") != std::string::npos);
   CHECK(old.find('\n') == std::string::npos);
-  // Another set of checks (the default changed: cross-check is opt-in): the keys are named.
+  // A state of format version 1 (with the cross-check's run field): refused, naming the version.
   st["run"] = run;
-  st["run"]["checks"] = sweep_check_names(sweep_all_checks);
+  st["version"] = 1;
+  st["run"]["cross_check_max_order"] = 300;
+  write_file_atomically(state, st.dump());
+  const std::string v1 = message(c);
+  INFO(v1);
+  CHECK(v1.find("has sweep format version 1") != std::string::npos);
+  CHECK(v1.find("--fresh") != std::string::npos);
+  CHECK(v1.find('\n') == std::string::npos);
+  // Another set of checks: the keys are named.
+  st["version"] = 2;
+  st["run"] = run;
+  const sweep_check_set some = sweep_parse_checks("degeneracy,structure");
+  st["run"]["checks"] = sweep_check_names(some);
   write_file_atomically(state, st.dump());
   const std::string other = message(c);
   INFO(other);
   CHECK(other.find("it differs in checks") != std::string::npos);
   CHECK(other.find('\n') == std::string::npos);
   // The same checks asked for: it resumes.
-  sweep_config all = c;
-  all.checks = sweep_all_checks;
+  sweep_config same = c;
+  same.checks = some;
   e.max_pairs = 0;
-  CHECK(sweep_to_files<double>(all, f, e).complete);
+  CHECK(sweep_to_files<double>(same, f, e).complete);
 }
 
 TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[sweep]") {

@@ -461,7 +461,7 @@ std::vector<method_def> library_methods(const run_config&) {
        "Newton; ref_lattice minus its double scout",
        skip_newton_polish, ref_newton_polish_case},
       {"ref_global", "ref_global",
-       "**reference (pre-theorem)**: the global search, inscribed_global<T> (include/gyrores/search/, the opt-in "
+       "**reference (pre-theorem)**: the global search, inscribed_global<T> (tests/reference/, the tests' "
        "cross-validation): all 4 tau critical points (roots of q' and z'), each by TOMS 748 in local coordinates at "
        "full precision; assumes nothing about where the minimum is",
        skip_global, ref_global_case},

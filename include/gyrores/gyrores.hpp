@@ -1,9 +1,7 @@
 // Umbrella header: the whole mathematical library, layer by layer in the order the data flows
 // (docs/architecture.md). File and JSON I/O is the separate io/ part: include <gyrores/io/...>.
-// The skeptic's cross-validation (search/: the global search over every critical point) is on
-// no default path and not included here: include <gyrores/search/...> for it.
 #pragma once
-// core: errors, integers, reals, decimal text, fixed-precision MPFR/MPFI, roots, precision and verified digits
+// core: errors, integers, reals, decimal text, rationals, roots, exact quadratic numbers
 #include <gyrores/core/error.hpp>            // usage_error (bad input), compute_error (could not compute honestly)
 #include <gyrores/core/stop.hpp>             // stop_token, interrupted: Ctrl-C and the Python module stop long work
 #include <gyrores/core/integer.hpp>          // int64/int128/big_int helpers: gcd, v2, inverse mod

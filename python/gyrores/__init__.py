@@ -715,8 +715,8 @@ _SWEEP_ROW_BYTES = 300
 _SWEEP_ROWS_LIMIT = 4 * 2**30
 
 
-def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", threads=0, cross_check_max_order=300,
-          examples=5, allow_large=False):
+def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", threads=0, examples=5,
+          allow_large=False):
     """Check the paper's claims on every pair with min_order <= tau + sigma <= max_order (in double).
 
     Returns (rows, summary): rows a NumPy structured array, one record per pair in enumeration
@@ -725,9 +725,8 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
     rows=False; summary the Result of ``gyrores sweep --json``. The work runs on `threads` workers
     (0: every core) with the GIL released; progress, if given, is called as progress(done, total)
     after every block of pairs (it may call gyrores itself), and an exception it raises (or
-    Ctrl-C) stops the sweep. checks: "default" (the paper's four claims), "all" (with the opt-in
-    cross-check against the global search, order <= cross_check_max_order) or a comma-separated
-    list (degeneracy, paper-node, asy-bound, structure, cross-check). The rows take about 300
+    Ctrl-C) stops the sweep. checks: "default" or "all" (the paper's four claims) or a
+    comma-separated list (degeneracy, paper-node, asy-bound, structure). The rows take about 300
     bytes a pair at their peak: beyond 4 GiB (about 14 million pairs, max_order 9700) sweep()
     refuses with the estimate unless allow_large=True (rows=False needs no such memory).
     """
@@ -746,7 +745,6 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
                              f"max_order, or allow_large=True")
     columns, summary = _gyrores._sweep(top, bottom, _args.flag(rows, f, "rows"),
                                        progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
-                                       _args.bounded(cross_check_max_order, f, "cross_check_max_order", 0, 2**40),
                                        _args.bounded(examples, f, "examples", 0, 2**31))
     return (None if columns is None else _table(columns)), _sweep_summary(summary)
 

@@ -57,12 +57,11 @@ void report_progress(const py::object& progress, std::uint64_t done, std::uint64
 }
 
 sweep_config config_of(std::int64_t max_order, std::int64_t min_order, const std::string& checks,
-                       std::int64_t cross_check_max_order, std::int64_t examples) {
+                       std::int64_t examples) {
   sweep_config cfg;
   cfg.max_order = max_order;
   cfg.min_order = min_order;
   cfg.checks = sweep_parse_checks(checks);
-  cfg.cross_check_max_order = cross_check_max_order;
   if (examples < 0) throw usage_error("examples must be >= 0");
   cfg.max_examples = std::size_t(examples);
   sweep_validate(cfg);
@@ -70,8 +69,8 @@ sweep_config config_of(std::int64_t max_order, std::int64_t min_order, const std
 }
 
 py::tuple run_sweep(std::int64_t max_order, std::int64_t min_order, bool rows, const py::object& progress,
-                    const std::string& checks, unsigned threads, std::int64_t cross_check_max_order, std::int64_t examples) {
-  const sweep_config cfg = config_of(max_order, min_order, checks, cross_check_max_order, examples);
+                    const std::string& checks, unsigned threads, std::int64_t examples) {
+  const sweep_config cfg = config_of(max_order, min_order, checks, examples);
   const std::uint64_t total = sweep_total_pairs(cfg.min_order, cfg.max_order);
   sweep_accumulator acc;
   acc.max_examples = cfg.max_examples;
@@ -120,7 +119,7 @@ void bind_sweep(py::module_& m) {
   m.def("_sweep_pairs", &sweep_total_pairs, py::arg("min_order"), py::arg("max_order"),
         "The number of pairs with min_order <= tau + sigma <= max_order (exact, without enumerating them).");
   m.def("_sweep", &run_sweep, py::arg("max_order"), py::arg("min_order"), py::arg("rows"), py::arg("progress"),
-        py::arg("checks"), py::arg("threads"), py::arg("cross_check_max_order"), py::arg("examples"),
+        py::arg("checks"), py::arg("threads"), py::arg("examples"),
         "(row columns or None, summary dict) of a sweep in double. Use gyrores.sweep.");
 }
 

@@ -27,7 +27,6 @@ struct sweep_args {
   unsigned threads = 0;
   bool resume = false, fresh = false, quiet = false, json = false, certified = false, no_filter = false, allow_large = false;
   int digits = 15;
-  std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t examples = 5;
   double checkpoint = 300;
   long max_pairs = 0;  // signed, so that a negative count is refused rather than wrapped around
@@ -171,7 +170,6 @@ sweep_config config_of(const sweep_args& a) {
   cfg.min_order = a.min_order;
   cfg.checks = sweep_parse_checks(a.checks);
   parse_shard(a.shard, cfg);
-  cfg.cross_check_max_order = a.cross_check_max_order;
   cfg.max_examples = a.examples;
   if (a.digits < 1 || a.digits > 1000) throw usage_error("--digits must be in [1, 1000], got " + std::to_string(a.digits));
   cfg.digits = unsigned(a.digits);
@@ -239,8 +237,7 @@ command_runner install_sweep(CLI::App& app) {
   sub.add("--max-order", a->max_order, "largest order tau + sigma (required, 3..2^40)", show::required);
   sub.add("--min-order", a->min_order, "smallest order tau + sigma", show::with_default);
   sub.add("--check,--checks", a->checks,
-          "comma-separated checks: degeneracy, paper-node, asy-bound, structure, cross-check (against the global "
-          "search, O(order) per pair: only when asked for); default: the first four; all: the five",
+          "comma-separated checks: degeneracy, paper-node, asy-bound, structure; default or all: the four",
           show::with_default);
   sub.add("--out", a->out, "per-pair rows to FILE (written as FILE.part, renamed when complete)");
   sub.add("--format", a->format, "rows format: csv or jsonl (default: jsonl if FILE ends in .jsonl, else csv)");
@@ -260,8 +257,6 @@ command_runner install_sweep(CLI::App& app) {
   sub.add("--digits", a->digits,
           "working precision: <= 15 double, <= 30 float128, beyond MPFR (slower); rows print max(D, 17) digits",
           show::with_default);
-  sub.add("--cross-check-max-order", a->cross_check_max_order,
-          "with the cross-check: only pairs up to this order (at most 100000)", show::with_default);
   sub.add("--examples", a->examples, "violating pairs listed per check", show::with_default);
   sub.add("--state", a->state, "resume state file (default: OUT.resume, else SUMMARY.resume, else ./gyrores-sweep.resume)");
   sub.add("--checkpoint", a->checkpoint, "seconds between resume checkpoints (0: only when stopping)", show::with_default);

@@ -36,6 +36,15 @@ json read_state(const std::string& state, const json& run_files) {
     throw usage_error("cannot resume: '" + state + "' is not a resume state: " + e.what());
   }
   if (st.value("format", "") != state_format) throw usage_error("cannot resume: '" + state + "' is not a resume state");
+  // Version 1 (docs/formats.md) is refused: its rows file has the cross-check's column, and rows
+  // of two layouts in one file would be worse than a new run.
+  if (!st.contains("version") || st.at("version") != sweep_format_version) {
+    const std::string version = st.contains("version") ? st.at("version").dump() : "none";
+    throw usage_error("cannot resume: the state at '" + state + "' has sweep format version " + version +
+                      (version == "1" ? " (its rows carry the retired cross-check)" : "") +
+                      "; this gyrores continues only version " + std::to_string(sweep_format_version) +
+                      ": start the sweep again with --fresh");
+  }
   if (st.at("run") != run_files)
     throw usage_error("cannot resume: the state at '" + state + "' is for another sweep: " +
                       sweep_run_mismatch(st.at("run"), run_files) + "; start it again without --resume");
@@ -233,7 +242,7 @@ void sweep_file_session::checkpoint() {
   values_file_.sync();
   json st;
   st["format"] = state_format;
-  st["version"] = 1;
+  st["version"] = sweep_format_version;
   st["run"] = run_files_;
   st["done"] = done_;
   st["next_after"] = {last_.first, last_.second};

@@ -22,7 +22,6 @@ void check_run_integers(const json& run) {
   json_to_int64(run.at("shard").at(1), "the shard count");
   json_to_int64(run.at("min_order"), "min_order");
   json_to_int64(run.at("max_order"), "max_order");
-  json_to_int64(run.at("cross_check_max_order"), "cross_check_max_order");
   json_to_uint64(run.at("max_examples"), "max_examples");
 }
 
@@ -96,7 +95,7 @@ sweep_input sweep_read_output(const std::string& path) {
   // A field missing or of the wrong type is bad input: usage_error naming the file, not the JSON
   // library's exception (nor compute_error, exit 3).
   try {
-    sweep_input x = first.rfind("# gyrores-sweep-rows ", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos
+    sweep_input x = first.rfind("# gyrores-sweep-rows", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos
                         ? sweep_read_rows(path)
                         : sweep_read_summary(path);
     check_run_integers(x.run);

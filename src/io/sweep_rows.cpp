@@ -5,6 +5,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <utility>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/csv.hpp>
@@ -26,7 +27,7 @@ const std::vector<std::string>& sweep_row_columns() {
       "tau", "sigma", "order", "delta_mod4", "r_res", "theta_first", "t_first", "t_min_paper", "t_first_over_proxy",
       "first_at_paper_node", "paper_lobe_min", "asy_error", "asy_bound", "asy_ratio", "asy_constant",
       "minimiser_count", "strand_offset_min", "check_degeneracy", "check_paper_node", "check_asy_bound",
-      "check_structure", "check_cross_check", "failed", "note"};
+      "check_structure", "failed", "note"};
   return cols;
 }
 
@@ -85,13 +86,14 @@ void sweep_row_writer::finish(const std::array<sweep_status, sweep_check_count>&
 
 std::string sweep_rows_header(const json& run, sweep_format fmt) {
   if (fmt == sweep_format::csv) {
-    std::string h = "# gyrores-sweep-rows " + run.dump() + "\n";
+    std::string h = "# gyrores-sweep-rows/" + std::to_string(sweep_format_version) + " " + run.dump() + "\n";
     const auto& cols = sweep_row_columns();
     for (std::size_t i = 0; i < cols.size(); ++i) h += (i ? "," : "") + cols[i];
     return h + "\n";
   }
   json j;
   j["gyrores_sweep_rows"] = run;
+  j["version"] = sweep_format_version;
   return j.dump() + "\n";
 }
 
@@ -110,8 +112,20 @@ std::string sweep_rows_trailer(std::uint64_t pairs, double seconds, sweep_format
 
 namespace {
 
-const std::string csv_tag = "# gyrores-sweep-rows ";
+// The CSV first line: "# gyrores-sweep-rows/2 {run}"; version 1 had no "/1".
+const std::string csv_tag = "# gyrores-sweep-rows";
 const std::string csv_end_tag = "# end ";
+
+// The version and the run of a CSV first line (after the tag).
+std::pair<std::int64_t, json> csv_first_line(const std::string& rest, const std::string& path) {
+  if (rest.rfind(' ', 0) == 0) return {1, json_parse_strict(rest.substr(1))};
+  const std::size_t space = rest.find(' ');
+  std::int64_t version = 0;
+  if (rest.rfind('/', 0) != 0 || space == std::string::npos ||
+      std::from_chars(rest.data() + 1, rest.data() + space, version).ptr != rest.data() + space)
+    throw usage_error("'" + path + "' is not a gyrores sweep rows file");
+  return {version, json_parse_strict(rest.substr(space + 1))};
+}
 
 // A row's field by column name, as text ("" = not applicable).
 using field_getter = std::function<std::string(const char*)>;
@@ -167,8 +181,8 @@ struct rows_reader {
   bool keep_text = false;
   bool ended = false;
 
-  void set_run(const json& run) {
-    r.run = run;
+  void set_run(const json& run, std::int64_t version) {
+    r.run = sweep_run_of_version(run, version, r.path);
     keep_text = run.at("type").get<std::string>() != "double";
     r.acc.max_examples = json_to_uint64(run.at("max_examples"), "max_examples");
   }
@@ -227,12 +241,14 @@ sweep_input sweep_read_rows(const std::string& path) {
   if (!std::getline(in, line)) throw usage_error("'" + path + "' is empty");
   try {
     if (line.rfind(csv_tag, 0) == 0) {
-      rd.set_run(json_parse_strict(line.substr(csv_tag.size())));
+      const auto [version, run] = csv_first_line(line.substr(csv_tag.size()), path);
+      rd.set_run(run, version);
       read_csv_rows(in, path, rd);
     } else {
       auto head = json_parse_strict(line);
       if (!head.contains("gyrores_sweep_rows")) throw usage_error("'" + path + "' is not a gyrores sweep rows file");
-      rd.set_run(head.at("gyrores_sweep_rows"));
+      const std::int64_t version = head.contains("version") ? json_to_int64(head.at("version"), "version") : 1;
+      rd.set_run(head.at("gyrores_sweep_rows"), version);
       read_jsonl_rows(in, rd);
     }
   } catch (const json::exception& e) {

@@ -105,7 +105,6 @@ void text_checks(std::ostream& os, const json& s) {
       os << "   ";
       for (auto& p : t.at("examples")) put_pair(os, p);
     }
-    if (name == "cross-check") os << "   [orders <= " << s.at("run").at("cross_check_max_order").get<std::int64_t>() << "]";
     if (name == "asy-bound") os << "   [x < 1/2]";
     if (name == "paper-node") os << "   [non-degenerate]";
     os << "\n";
@@ -116,14 +115,14 @@ void text_checks(std::ostream& os, const json& s) {
 void text_proved(std::ostream& os, const json& s) {
   if (!s.contains("proved")) return;
   os << "  certified           every pass above is a proof (exact integers, MPFI, " << s.at("theorem").get<std::string>()
-     << "); cross-check is floating point\n";
+     << ")\n";
   os << "  proved for every pair:";
   if (s.at("proved").empty()) os << " none";
   for (auto& n : s.at("proved")) os << " " << n.get<std::string>();
   os << "\n";
   for (auto& [name, t] : s.at("checks").items()) {
     const auto v = t.at("violations").get<std::uint64_t>();
-    if (name == "cross-check" || v == 0) continue;
+    if (v == 0) continue;
     os << "  " << name << " fails for " << v << " pairs: "
        << (name == "paper-node" ? "each a proved counterexample (exact integers on the theorem's lobes)"
                                 : "a counterexample or a resource limit, named in each row's note")
@@ -207,16 +206,16 @@ json sweep_summary_json(const sweep_accumulator& a, const json& run, double seco
   json acc = sweep_accumulator_json(a, sweep_checks_of_run(run));
   json j;
   j["format"] = "gyrores-sweep-summary";
-  j["version"] = 1;
+  j["version"] = sweep_format_version;
   for (const char* k : {"pairs", "degenerate", "checks", "asy_ratio_max", "sharp_constant"}) j[k] = acc[k];
   j["t_first_over_proxy"] = quantiles_json(a);
   j["first_at_paper_node"] = acc["first_at_paper_node"];
   j["errors"] = acc["errors"];
   if (run.value("certified", false)) {
-    // The checks decided by proof with no violation over the range (cross-check is not a proof).
+    // The checks decided by proof with no violation over the range.
     json proved = json::array();
     for (auto& [name, t] : acc["checks"].items())
-      if (name != "cross-check" && t.at("violations").get<std::uint64_t>() == 0 && acc["errors"]["count"] == 0)
+      if (t.at("violations").get<std::uint64_t>() == 0 && acc["errors"]["count"] == 0)
         proved.push_back(name);
     j["proved"] = proved;
     j["theorem"] = lattice_theorem_id;
@@ -266,7 +265,7 @@ sweep_input sweep_read_summary(const std::string& path) {
     throw usage_error("'" + path + "' is not JSON: " + e.what());
   }
   if (j.value("format", "") != "gyrores-sweep-summary") throw usage_error("'" + path + "' is not a gyrores sweep summary");
-  r.run = j.at("run");
+  r.run = sweep_run_of_version(j.at("run"), json_to_int64(j.at("version"), "version"), path);
   if (!r.run.value("complete", false)) throw usage_error("'" + path + "' is the summary of an unfinished sweep");
   r.seconds = j.at("seconds").get<double>();
   r.acc = sweep_accumulator_from_json(j, json_to_uint64(r.run.at("max_examples"), "max_examples"));

@@ -20,8 +20,7 @@ std::string checks_table(const sweep_accumulator& acc) {
       "degeneracy (P3): R(pi/2) = 0 iff delta = 2 mod 4, evaluated independently of the integer test",
       "paper-node (P5): a global minimiser lies in the paper's lobe k = round(a/(2b))",
       "asy-bound (P7): abs(theta_c - theta_asy) <= pi^3 x^2/a (x < 1/2)",
-      "structure: 2 global minimisers (delta odd), 4 (delta = 0 mod 4)",
-      "cross-check: the theorem's values = global search (opt-in; not run here)"};
+      "structure: 2 global minimisers (delta odd), 4 (delta = 0 mod 4)"};
   std::ostringstream md;
   md << "| check | pairs checked | violations | first violating pairs |\n|---|---|---|---|\n";
   for (int i = 0; i < sweep_check_count; ++i)

@@ -13,7 +13,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mask() {
   sed -E -e 's/[0-9]+(\.[0-9]+)? s\b/<time> s/g' -e 's/\(([0-9.e+]+) (M )?pairs\/s\)/(<rate> pairs\/s)/g' \
-         -e 's/"seconds": ?[0-9.e+-]+/"seconds": <time>/g' -e 's/"pairs_per_second": [0-9.e+-]+/"pairs_per_second": <rate>/g'
+         -e 's/("seconds": ?)[0-9.e+-]+/\1<time>/g' -e 's/"pairs_per_second": [0-9.e+-]+/"pairs_per_second": <rate>/g'
 }
 failed=0
 count=0

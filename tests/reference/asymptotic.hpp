@@ -61,7 +61,7 @@
 #include <gyrores/model/pair.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/resonant.hpp>
-#include <gyrores/search/result.hpp>
+#include "reference/inscribed_result.hpp"
 #include <gyrores/core/roots.hpp>
 
 namespace gyrores {

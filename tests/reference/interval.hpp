@@ -5,8 +5,8 @@
 // "certainly" answers true only when the whole interval satisfies the condition.
 //
 // Precision: new intervals and points take Boost's default precision of mpfi_real/mpfr_real,
-// which the arguments must have (core/real.hpp); these helpers serve the proof programs and the
-// tests' cover reference, which set it and run single-threaded. Proved code of the library works
+// which the arguments must have (core/real.hpp); these helpers serve the proof programs, which
+// set it and run single-threaded. Proved code of the library works
 // on fixed_mpfi (core/fixed_precision.hpp) or Arb balls instead.
 #pragma once
 #include <mpfi.h>
@@ -17,8 +17,6 @@
 #include <gyrores/core/real.hpp>
 
 namespace gyrores {
-
-enum class certainty { yes, no, unknown };
 
 inline mpfr_real interval_lower(const mpfi_real& x) { return boost::multiprecision::lower(x); }
 inline mpfr_real interval_upper(const mpfi_real& x) { return boost::multiprecision::upper(x); }
@@ -99,19 +97,6 @@ inline mpfi_real interval_from_decimal(const std::string& lo, const std::string&
     throw usage_error("not a decimal number: '" + hi + "'");
   if (b < a) throw usage_error("interval [" + lo + ", " + hi + "] is empty");
   return interval_of(a, b);
-}
-
-// Whether the exact decimal interval [lo, hi] contains every point of x. The endpoints are read
-// inward at the current precision (lo rounded up, hi rounded down), so a "true" holds exactly;
-// a true containment can be missed only when x comes within one unit of that precision of an
-// endpoint (a checker then asks for a wider claim, never accepts a false one).
-inline bool decimal_interval_contains(const std::string& lo, const std::string& hi, const mpfi_real& x) {
-  mpfr_real a, b;
-  if (mpfr_set_str(a.backend().data(), lo.c_str(), 10, MPFR_RNDU) != 0)
-    throw usage_error("not a decimal number: '" + lo + "'");
-  if (mpfr_set_str(b.backend().data(), hi.c_str(), 10, MPFR_RNDD) != 0)
-    throw usage_error("not a decimal number: '" + hi + "'");
-  return !(b < a) && a <= interval_lower(x) && interval_upper(x) <= b;
 }
 
 }  // namespace gyrores

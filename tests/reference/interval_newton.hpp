@@ -1,6 +1,6 @@
 // The one interval Newton of gyrores: proves that a function has exactly one root near a point
-// guess and encloses it (MPFI, outward rounding). Used by the proof programs (proofs/lobe_roots.hpp)
-// and by the "local-root" step of the tests' cover reference (tests/reference/proof_steps.hpp).
+// guess and encloses it (MPFI, outward rounding). Used by the proof programs (proofs/lobe_roots.hpp,
+// and the roots of q' of tests/reference/lobe_intervals.hpp).
 //
 // The method (the interval Newton of arb_calc): for an interval X and its midpoint m,
 //   N(X) = m - f(m)/f'(X).
@@ -22,8 +22,8 @@ namespace gyrores {
 using interval_function = std::function<mpfi_real(const mpfi_real&)>;
 
 // Encloses the root of f near `guess`, at Boost's default precision of mpfi_real and mpfr_real,
-// which guess and scale must have (core/real.hpp: the callers, the proof programs and the tests'
-// cover reference, set it and run single-threaded; proved code of the library uses
+// which guess and scale must have (core/real.hpp: the callers, the proof programs, set it and
+// run single-threaded; proved code of the library uses
 // core/fixed_precision.hpp and Arb instead).
 //   f, df        enclosures of f and f' on an interval (df is evaluated on the whole X, f on
 //                its midpoint as a point interval);

@@ -32,10 +32,10 @@
 #include <tuple>
 #include <vector>
 
-#include <gyrores/search/degenerate.hpp>
-#include <gyrores/search/global_search.hpp>
+#include "reference/degenerate.hpp"
+#include "reference/global_search.hpp"
 #include <gyrores/model/resonant.hpp>
-#include <gyrores/search/result.hpp>
+#include "reference/inscribed_result.hpp"
 #include <gyrores/core/roots.hpp>
 #include <gyrores/theorem/lobes.hpp>
 

@@ -77,16 +77,17 @@ template <class T> void sweep_format_row(std::string& out, const sweep_row<T>& r
   PREFIX template void sweep_format_row<T>(std::string&, const sweep_row<T>&, sweep_format, unsigned);
 GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_ROWS_INSTANCES, extern)
 
-// The first line(s): CSV "# gyrores-sweep-rows {run}" and the column header; JSONL
-// {"gyrores_sweep_rows": run}.
+// The first line(s): CSV "# gyrores-sweep-rows/2 {run}" and the column header; JSONL
+// {"gyrores_sweep_rows": run, "version": 2} (2: sweep_format_version).
 std::string sweep_rows_header(const json& run, sweep_format fmt);
 // The end line: {"pairs", "seconds"} after "# end " (CSV) or as {"gyrores_sweep_end": ...}.
 std::string sweep_rows_trailer(std::uint64_t pairs, double seconds, sweep_format fmt);
 
-// A rows file (CSV or JSONL, detected from its first line) read back: the run description and
-// the accumulator of its rows (exact text of the extremes kept for types wider than double).
-// usage_error if the file cannot be read, is not a rows file, is malformed, or has no end line
-// (the sweep that wrote it did not finish).
+// A rows file (CSV or JSONL, detected from its first line) read back: the run description (of
+// this version: sweep_run_of_version) and the accumulator of its rows (exact text of the extremes
+// kept for types wider than double). usage_error if the file cannot be read, is not a rows file,
+// is malformed, has no end line (the sweep that wrote it did not finish), or is of a version
+// sweep_run_of_version refuses.
 sweep_input sweep_read_rows(const std::string& path);
 
 }  // namespace gyrores

@@ -2,6 +2,7 @@
 // summaries and resume states carry (docs/formats.md, `{run}`), and a finished output read back.
 // Inputs to a merge or a resume must agree on it (a merge: except the shard index).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <type_traits>
 
@@ -11,14 +12,25 @@
 
 namespace gyrores {
 
-// {min_order (at least 3), max_order, shard, checks, cross_check_max_order, max_examples, type,
-// digits, method[, certified: true]}; `type` is the working real type's name (sweep_type_name),
+// {min_order (at least 3), max_order, shard, checks, max_examples, type, digits, method[,
+// certified: true]}; `type` is the working real type's name (sweep_type_name),
 // `digits` the significant digits of its reals in rows (17 for double), `method` how the rows'
 // values are computed: sweep_rows_method.
 json sweep_run_json(const sweep_config& c, const std::string& type, unsigned digits);
 template <class T> json sweep_run_json(const sweep_config& c) {
   return sweep_run_json(c, sweep_type_name<T>(c), std::is_same_v<T, double> ? 17u : c.digits);
 }
+
+// The format version of the three files that carry a run description: the rows' first line, the
+// summary and the resume state (docs/formats.md). Version 1 (the rows' first line had no version)
+// had the check cross-check, its rows column and the run's cross_check_max_order.
+inline constexpr int sweep_format_version = 2;
+
+// A run description read from a finished output of format `version` (1 or 2), as this version
+// writes it: version 1's cross_check_max_order dropped (the rows' values are the same, so such
+// outputs merge with version-2 ones). usage_error naming `path` for a version-1 run that checked
+// cross-check, whose verdicts a summary of this version cannot carry.
+json sweep_run_of_version(json run, std::int64_t version, const std::string& path);
 
 // The run descriptions' `method`: the rows come from the lattice theorem's root (sweep/evaluate.hpp).
 // Files of earlier versions (rows from the lattice method's solver) have no `method`: a resume or

@@ -26,8 +26,9 @@ json sweep_summary_core(json summary);
 // The summary as `gyrores sweep` and `gyrores merge` print it.
 std::string sweep_summary_text(const json& summary);
 
-// A complete shard summary with its values file, read back for a merge; usage_error if it is
-// not one (not JSON, not a summary, unfinished, or without values file).
+// A complete shard summary with its values file, read back for a merge (its run as this version
+// writes it: sweep_run_of_version); usage_error if it is not one (not JSON, not a summary,
+// unfinished, or without values file) or of a version sweep_run_of_version refuses.
 sweep_input sweep_read_summary(const std::string& path);
 
 }  // namespace gyrores

@@ -72,7 +72,6 @@ bool sweep_lobes_hold(const resonant_pair<std::int64_t>& p, int m_min, std::span
 struct sweep_proof_options {
   unsigned bits = 53;       // the row's working precision (sweep_bits, evaluate.hpp)
   bool asy = false;         // also the paper's error (pairs with x < 1/2)
-  bool minimisers = false;  // also every minimiser's theta, as the double nearest its midpoint
   bool outward_asy = false; // the asy columns are printed outward (certified rows), not to nearest
 };
 
@@ -84,7 +83,6 @@ struct sweep_minimum_enclosure {
   fixed_mpfi r_res, theta_first, t_first;  // r_res = [0, 0] for degenerate pairs
   fixed_mpfi t_min_paper;                   // pi/|n| = pi sqrt(tau sigma)/b
   fixed_mpfi t_ratio;                       // t_first/t_min_paper = theta_first b/pi
-  std::array<double, 4> minimisers{};       // with opt.minimisers, ascending (lobes' order)
 };
 
 // The paper's error in its lobe, at `prec` bits.

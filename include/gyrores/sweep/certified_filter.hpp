@@ -43,7 +43,7 @@ namespace gyrores::detail {
 
 // The row of pair p for a certified double sweep, if the filter proves all of it (fields as
 // sweep_evaluate_into fills them); false, with r untouched, if the fallback must run.
-// Precondition: cfg.certified, no cross-check for p (the filter forms no minimisers).
+// Precondition: cfg.certified.
 bool sweep_certified_filter(sweep_row<double>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg);
 
 // The double estimate of u_c - u_asy >= 0 of src/lib/sweep/evaluate.cpp (x < 1/2, 0 < s <= pi/2).

@@ -3,8 +3,7 @@
 // Each check tests one of the paper's claims per pair (docs/mathematics.md §2, §3); what each
 // one computes is in evaluate.hpp. A set of checks is a bit mask (bit i: check i), in the order
 // of the enum, which is also the order of the rows' check columns and of the summary's checks
-// (docs/formats.md). The default set is the four claims; cross-check (the theorem's values
-// against the global search, O(order) per pair) runs only when asked for.
+// (docs/formats.md). A sweep runs all four unless told otherwise.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -13,12 +12,12 @@
 
 namespace gyrores {
 
-enum class sweep_check : int { degeneracy = 0, paper_node = 1, asy_bound = 2, structure = 3, cross_check = 4 };
-inline constexpr int sweep_check_count = 5;
+enum class sweep_check : int { degeneracy = 0, paper_node = 1, asy_bound = 2, structure = 3 };
+inline constexpr int sweep_check_count = 4;
 using sweep_check_set = unsigned;  // bit i: check i
 inline constexpr sweep_check_set sweep_all_checks = (1u << sweep_check_count) - 1;
 // degeneracy, paper-node, asy-bound, structure: what a sweep checks unless told otherwise.
-inline constexpr sweep_check_set sweep_default_checks = sweep_all_checks & ~(1u << int(sweep_check::cross_check));
+inline constexpr sweep_check_set sweep_default_checks = sweep_all_checks;
 
 // The check's name as users type it ("paper-node"); i in [0, sweep_check_count), not checked.
 const char* sweep_check_name(int i);
@@ -26,17 +25,12 @@ const char* sweep_check_name(int i);
 const char* sweep_check_column(int i);
 inline bool sweep_has_check(sweep_check_set s, sweep_check c) { return (s >> int(c)) & 1u; }
 
-// A comma-separated list of check names, "default" (sweep_default_checks) and "all" (every check,
-// cross-check included); usage_error names an unknown (or empty) one.
+// A comma-separated list of check names, "default" (sweep_default_checks) and "all" (every check);
+// usage_error names an unknown (or empty) one.
 sweep_check_set sweep_parse_checks(const std::string& list);
 // The names of the checks in s, in check order.
 std::vector<std::string> sweep_check_names(sweep_check_set s);
 
-// Default order limit of the cross-check in sweeps (the global search is O(order) per pair,
-// ~0.1 ms at order 300), and the largest one accepted (the global search's own limit, ~0.5 s
-// per pair there): pairs of larger order are not cross-checked.
-inline constexpr std::int64_t sweep_cross_check_default_max_order = 300;
-inline constexpr std::int64_t sweep_cross_check_max_order_limit = 100000;
 // Orders beyond this are refused: the int64/int128 fast paths and the phi sieve assume it,
 // and a sweep there (~1.5e17 pairs) is out of reach anyway.
 inline constexpr std::int64_t sweep_max_order_limit = std::int64_t(1) << 40;
@@ -46,7 +40,6 @@ struct sweep_config {
   std::int64_t max_order = 0;
   std::int64_t shard_index = 0, shard_count = 1;
   sweep_check_set checks = sweep_default_checks;
-  std::int64_t cross_check_max_order = sweep_cross_check_default_max_order;
   std::size_t max_examples = 5;  // violating pairs listed per check
   unsigned digits = 17;          // significant digits of reals in rows when T is wider than double
                                  // (mpfr_real: also the working precision, digits + 8, sweep_bits)
@@ -56,8 +49,8 @@ struct sweep_config {
   bool operator==(const sweep_config&) const = default;
 };
 
-// usage_error (naming the parameter) unless 3 <= max_order <= 2^40, min_order <= max_order,
-// 0 <= shard_index < shard_count and 0 <= cross_check_max_order <= 100000.
+// usage_error (naming the parameter) unless 3 <= max_order <= 2^40, min_order <= max_order and
+// 0 <= shard_index < shard_count.
 void sweep_validate(const sweep_config& c);
 
 }  // namespace gyrores

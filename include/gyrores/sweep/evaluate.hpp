@@ -32,15 +32,10 @@
 //                (sweep_lobes_hold): 2 minimisers for delta odd, 4 for delta = 0 mod 4 (2 for
 //                degenerate pairs: pi/2, 3 pi/2), each lobe's frame satisfies its equation with
 //                |m| = m_min, and m_min = p.strand_offset_min() = min over N of |a - 4N|.
-//    cross-check (opt-in: not in sweep_default_checks) the row's r_res and minimisers against the
-//                global search (src/lib/sweep/cross_check.cpp, search/cross_check.hpp), for
-//                non-degenerate pairs of order <= cross_check_max_order (default 300, at most
-//                100000: the global search costs O(order) per pair).
 //  With cfg.certified (`gyrores sweep --certified`) every row takes the enclosure path and the
 //  checks are decided by proofs (exact integers, MPFI): a pass is a proof. The asy columns then
 //  hold proved upper bounds (asy_bound a lower bound); a check that could not be decided (a
-//  resource limit) fails with "not proved" in the note. cross-check stays a floating-point
-//  comparison of two methods.
+//  resource limit) fails with "not proved" in the note.
 //  A pair whose computation throws (compute_error, usage_error, domain_error), or whose minimum
 //  was not proved within the precision limit, is an error row: counted and listed, never
 //  silently dropped.
@@ -102,13 +97,6 @@ template <class T> std::string sweep_type_name(const sweep_config& cfg) {
   else return real_type_name<T>();
 }
 
-// The check of the first `count` minimisers against the global search (the cross-check):
-// status pass, or fail with the reason in the note. Defined in src/lib/sweep/cross_check.cpp,
-// the only sweep file that includes the global search. Precondition (not checked): p is not
-// degenerate and its order is at most 100000.
-void sweep_cross_check(sweep_row_info& r, const resonant_pair<std::int64_t>& p, double r_res,
-                       std::span<const double> minimisers);
-
 namespace detail {
 
 // float128 nearest v in direction rnd (exact through 113-bit MPFR rounding and an integer).
@@ -136,8 +124,8 @@ template <class T> T sweep_mid(const fixed_mpfi& X, unsigned bits) {
   return sweep_real_of<T>(m, bits, MPFR_RNDN);
 }
 
-// The double path: theorem_minimum_double, its checks in double and integers, and (if asked)
-// the cross-check. Precondition: !cfg.certified and sweep_double_path(p).
+// The double path: theorem_minimum_double and its checks in double and integers.
+// Precondition: !cfg.certified and sweep_double_path(p).
 bool sweep_double_path(const resonant_pair<std::int64_t>& p);
 // P3's r_res^2 <= R(pi/2) for a non-degenerate pair p, given r_res within one ulp and the exact
 // N = 4 a^2 R(pi/2) (sweep_quarter_R_scaled): in double where the comparison is decided beyond
@@ -154,11 +142,8 @@ std::int64_t sweep_asy_offset(std::int64_t a, std::int64_t b);
 sweep_asy_double sweep_asy_double_of(std::int64_t a, std::int64_t b, std::int64_t am);
 
 // The enclosure path: pr = sweep_prove_pair(p, sweep_proof_options_of(...)); every field but
-// the reals from pr, and the cross-check if asked (compute_error if the minimum was not
-// proved); then the reals.
+// the reals from pr (compute_error if the minimum was not proved); then the reals.
 sweep_proof_options sweep_proof_options_of(const resonant_pair<std::int64_t>& p, const sweep_config& cfg, unsigned bits);
-// Whether p's row is cross-checked (asked for, p not degenerate, order within the limit).
-bool sweep_cross_check_wanted(const resonant_pair<std::int64_t>& p, const sweep_config& cfg);
 // What the certified checks are decided from: exact integers and proved facts (from
 // sweep_prove_pair's enclosures, or from the filter's balls).
 struct sweep_proved_facts {
@@ -171,7 +156,7 @@ struct sweep_proved_facts {
   bool asy_proved = false;         // its enclosures formed
   bool asy_within_bound = false;   // error/bound <= 1
 };
-// Every field of the row but the reals and the cross-check, from f.
+// Every field of the row but the reals, from f.
 void sweep_checks_from_facts(sweep_row_info& r, const resonant_pair<std::int64_t>& p, const sweep_proved_facts& f,
                              const sweep_config& cfg);
 void sweep_checks_from_proof(sweep_row_info& r, const resonant_pair<std::int64_t>& p, const sweep_proof& pr,
@@ -206,7 +191,7 @@ template <class T> void sweep_evaluate_into(sweep_row<T>& r, const resonant_pair
     }
   }
   if constexpr (std::is_same_v<T, double>) {
-    if (cfg.certified && cfg.certified_filter && !sweep_cross_check_wanted(p, cfg) && sweep_certified_filter(r, p, cfg))
+    if (cfg.certified && cfg.certified_filter && sweep_certified_filter(r, p, cfg))
       return;
   }
   const unsigned bits = sweep_bits<T>(cfg);

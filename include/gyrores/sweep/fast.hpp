@@ -1,5 +1,5 @@
 // The sweep's fast path: a pair's contribution to the summary without its row, for sweeps that
-// write no rows (no --out), in double, not --certified, without the cross-check.
+// write no rows (no --out), in double, not --certified.
 //
 // Without rows, what a pair's values feed is the summary (sweep/summary.hpp): the checks'
 // verdicts, which must stay exact, and three computed (not proved) values: t_first/(pi/|n|)
@@ -70,10 +70,8 @@ bool sweep_fast_add(sweep_accumulator& acc, const resonant_pair<std::int64_t>& p
                     double& asy_known, std::int64_t pass_k);
 
 // Whether a sweep with this configuration may take the fast path (double rows, no rows
-// written, not certified, no cross-check).
-inline bool sweep_fast_config(const sweep_config& cfg) {
-  return !cfg.certified && !sweep_has_check(cfg.checks, sweep_check::cross_check);
-}
+// written, not certified).
+inline bool sweep_fast_config(const sweep_config& cfg) { return !cfg.certified; }
 
 // The largest asy constant computed by any worker of one run (a hint: any value a pair of the
 // run has given is a valid one; relaxed order suffices).

@@ -111,11 +111,6 @@ bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_
 bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& LO,
                            const fixed_mpfi& HI, fixed_mpfi& T);
 
-// T = tan(V) for an interval V within 2^-10 of r.centre, by step 3's mean value form (nothing
-// about the root is proved or needed); false if V is farther or reaches a pole of tan. The
-// certificate takes tan over a decimal bracket wider than the proved one from it.
-bool tan_near_centre(fixed_mpfi& T, const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& V);
-
 // The paper's root of u + tan u = s for s = pi m/(2b) (any integer m with |m| <= b): as
 // prove_theorem_root. m = 0 gives the exact root 0.
 bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);

@@ -62,15 +62,6 @@ bool prove_minimum_at(sweep_proof& pr, sweep_minimum_enclosure& M, const theorem
   for (const fixed_mpfi* X : {&M.r_res, &M.theta_first, &M.t_first, &M.t_min_paper})
     if (!rounds_alike(*X, opt, MPFR_RNDN)) return false;
   if (pr.m_min != 0 && !rounds_alike(M.t_ratio, opt, MPFR_RNDN)) return false;
-  if (opt.minimisers) {
-    fixed_mpfi th(K.prec);
-    fixed_mpfr mid(K.prec);
-    for (std::size_t i = 0; i < pr.lobes.size() && i < M.minimisers.size(); ++i) {
-      minimiser_theta(th, K, a, big_frame(pr.lobes[i]), z.U);
-      mpfi_mid(mid, th);
-      M.minimisers[i] = mpfr_get_d(mid, MPFR_RNDN);
-    }
-  }
   // r_res^2 <= R(pi/2) = N/(4 a^2).
   fixed_mpfi R(K.prec), r2(K.prec);
   mpfi_set_z(R, to_big(pr.quarter_R_scaled).backend().data());

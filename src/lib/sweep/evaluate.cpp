@@ -129,11 +129,6 @@ double sweep_asy_difference(double x, double s) {
                       ", s = " + std::to_string(s) + ")");
 }
 
-bool sweep_cross_check_wanted(const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {
-  return sweep_has_check(cfg.checks, sweep_check::cross_check) && !p.degenerate() &&
-         std::int64_t(p.order()) <= cfg.cross_check_max_order;
-}
-
 bool sweep_double_path(const resonant_pair<std::int64_t>& p) { return p.order() < (int128(1) << 31); }
 
 bool sweep_r_below_quarter_R(const resonant_pair<std::int64_t>& p, double r_res, int128 N) {
@@ -174,14 +169,12 @@ void sweep_evaluate_double(sweep_row<double>& r, const resonant_pair<std::int64_
     if (!ok) add_note(r.note, "structure: the theorem's lobes do not check");
   }
   if (sweep_has_check(ck, sweep_check::asy_bound) && 2 * b < a) check_asy_double(r, a, b);
-  if (sweep_cross_check_wanted(p, cfg)) sweep_cross_check(r, p, M.r_res, std::span(M.minimisers.data(), M.count));
 }
 
 sweep_proof_options sweep_proof_options_of(const resonant_pair<std::int64_t>& p, const sweep_config& cfg, unsigned bits) {
   sweep_proof_options o;
   o.bits = bits;
   o.asy = sweep_has_check(cfg.checks, sweep_check::asy_bound);
-  o.minimisers = sweep_cross_check_wanted(p, cfg);
   o.outward_asy = cfg.certified;
   return o;
 }
@@ -231,11 +224,6 @@ void sweep_checks_from_proof(sweep_row_info& r, const resonant_pair<std::int64_t
   f.asy_proved = pr.asy != nullptr;
   f.asy_within_bound = pr.asy && mpfr_cmp_ui(pr.asy->ratio.right(), 1) <= 0;
   sweep_checks_from_facts(r, p, f, cfg);
-  if (sweep_cross_check_wanted(p, cfg)) {
-    fixed_mpfr mid(M.prec);
-    mpfi_mid(mid, M.r_res);
-    sweep_cross_check(r, p, mpfr_get_d(mid, MPFR_RNDN), std::span(M.minimisers.data(), pr.lobes.size()));
-  }
 }
 
 float128 sweep_float128_of(mpfr_srcptr v, mpfr_rnd_t rnd) {

@@ -546,13 +546,6 @@ bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, 
   return mpfr_sgn(fhi.left()) > 0;
 }
 
-bool tan_near_centre(iv& T, const theorem_constants& K, const root_enclosure& r, const iv& V) {
-  iv lo(K.prec), hi(K.prec);
-  mpfi_set_fr(lo, V.left());
-  mpfi_set_fr(hi, V.right());
-  return mean_value_ends(K, r, true, lo, hi, nullptr, nullptr, T);
-}
-
 bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
   if (!theorem_centre_of(r, K, m)) return false;
   iv lo(K.prec), hi(K.prec);

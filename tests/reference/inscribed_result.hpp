@@ -1,8 +1,8 @@
-// The one result type of every inscribed-radius solver.
+// The one result type of the reference inscribed-radius solvers (the global search, the lattice
+// method).
 #pragma once
 #include <cmath>
 #include <cstdint>
-#include <string>
 #include <utility>
 #include <vector>
 
@@ -12,17 +12,8 @@ namespace gyrores {
 
 enum class inscribed_method { degenerate_exact, global_search, lattice };
 
-inline std::string method_name(inscribed_method m) {
-  switch (m) {
-    case inscribed_method::degenerate_exact: return "degenerate-exact";
-    case inscribed_method::global_search: return "global-search";
-    case inscribed_method::lattice: return "lattice";
-  }
-  return "?";
-}
-
 // A point in lobe-frame coordinates (resonant.hpp): theta = 2 (k pi + u)/a, exact integers
-// k, j, m and the real u. Certificates start from it.
+// k, j, m and the real u.
 template <class T> struct lobe_point {
   big_int k, j, m;
   T u;

@@ -1,6 +1,7 @@
 // The skeptic's cross-validation: a result (r_res and every minimiser, in any real type) against
-// the global search (global_search.hpp), which assumes nothing of the lattice theorem.
-// Not on any default path: `gyrores sweep --checks cross-check` (opt-in) and the tests call it.
+// the global search (global_search.hpp), which assumes nothing of the lattice theorem. The
+// tests' oracle (tests/test_cross_check.cpp checks sweep rows with it; tests/test_lattice.cpp
+// checks that it refuses wrong results).
 // The check runs the global search in double (4 tau root solves, limited by
 // global_search_options::max_order) and requires
 //  - the same number of global minimisers, at the same theta (relative 1e-9),
@@ -13,7 +14,8 @@
 #include <string>
 
 #include <gyrores/core/decimal.hpp>
-#include <gyrores/search/global_search.hpp>
+
+#include "reference/global_search.hpp"
 
 namespace gyrores {
 
@@ -39,7 +41,7 @@ void cross_check_global(const resonant_pair<I>& p, const T& v, const inscribed_r
     fail("near-tie between distinct critical values; double precision cannot separate them");
 }
 
-// Compiled once in src/lib/search/ for double, long double, float128 and mpfr_real.
+// Compiled once in tests/reference/instances_*.cpp for double, long double, float128 and mpfr_real.
 #define GYRORES_CROSS_CHECK_INSTANCES(PREFIX, T) \
   PREFIX template void cross_check_global<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&, const inscribed_result<T>&); \
   PREFIX template void cross_check_global<T, big_int>(const resonant_pair<big_int>&, const T&, const inscribed_result<T>&);

@@ -15,10 +15,11 @@
 #include <algorithm>
 #include <vector>
 
-#include <gyrores/search/degenerate.hpp>
-#include <gyrores/model/resonant.hpp>
-#include <gyrores/search/result.hpp>
 #include <gyrores/core/roots.hpp>
+#include <gyrores/model/resonant.hpp>
+
+#include "reference/degenerate.hpp"
+#include "reference/inscribed_result.hpp"
 
 namespace gyrores {
 
@@ -107,7 +108,7 @@ inscribed_result<T> inscribed_global(const resonant_pair<I>& p, const T& v, cons
   return r;
 }
 
-// Compiled once in src/lib/search/ for double, long double, float128 and mpfr_real.
+// Compiled once in tests/reference/instances_*.cpp for double, long double, float128 and mpfr_real.
 #define GYRORES_GLOBAL_SEARCH_INSTANCES(PREFIX, T) \
   PREFIX template inscribed_result<T> inscribed_global<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&, const global_search_options&); \
   PREFIX template inscribed_result<T> inscribed_global<T, big_int>(const resonant_pair<big_int>&, const T&, const global_search_options&);

@@ -9,7 +9,8 @@
 #pragma once
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
-#include <gyrores/search/result.hpp>
+
+#include "reference/inscribed_result.hpp"
 
 namespace gyrores {
 
@@ -31,7 +32,7 @@ template <class T, pair_integer I> inscribed_result<T> inscribed_degenerate(cons
   return r;
 }
 
-// Compiled once in src/lib/search/ for double, long double, float128 and mpfr_real.
+// Compiled once in tests/reference/instances_*.cpp for double, long double, float128 and mpfr_real.
 #define GYRORES_DEGENERATE_INSTANCES(PREFIX, T) \
   PREFIX template inscribed_result<T> inscribed_degenerate<T, std::int64_t>(const resonant_pair<std::int64_t>&, const T&); \
   PREFIX template inscribed_result<T> inscribed_degenerate<T, big_int>(const resonant_pair<big_int>&, const T&);

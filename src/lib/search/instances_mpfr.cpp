@@ -1,9 +1,0 @@
-// Explicit instantiations of the global search for ::gyrores::mpfr_real (declared extern in the headers of
-// include/gyrores/search/). One file per real type so that a parallel build spreads them.
-#include <gyrores/search/cross_check.hpp>
-
-namespace gyrores {
-GYRORES_DEGENERATE_INSTANCES(, ::gyrores::mpfr_real)
-GYRORES_GLOBAL_SEARCH_INSTANCES(, ::gyrores::mpfr_real)
-GYRORES_CROSS_CHECK_INSTANCES(, ::gyrores::mpfr_real)
-}  // namespace gyrores
