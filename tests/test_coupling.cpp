@@ -298,13 +298,16 @@ TEST_CASE("cli coupling: any horizon and any coupling size answer (the horizon t
   CHECK(checked.out.find("horizon-theorem/1") != std::string::npos);
   std::filesystem::remove(cert);
   check_rejected("coupling 2 --horizon 100pi --certificate " + cert);
-  // Bands: the worst and best minimum over [0, T], and a degenerate pair inside (11, 9).
+  // Bands: the absorption and containment guarantees over [0, T] (docs/formats.md "Band
+  // guarantees"), settled; a degenerate pair inside (11, 9) makes the containment one 0, there.
   const auto band = cli_json("coupling --band 0.18:0.19 --horizon 20 --band-digits 4 --json");
-  CHECK(band["band"]["worst_h_min"]["converged"] == true);
-  CHECK(band["band"]["degenerate"].is_null());
-  const auto tol = cli_json("coupling 0.201 --tolerance 1% --horizon 40 --band-evaluations 100 --json");
-  CHECK(tol["band"]["degenerate"]["tau"] == 11);
-  CHECK(tol["band"]["best_h_min"]["enclosure"][1] == "0");
+  CHECK(band["band"]["format"] == "gyrores-band/2");
+  CHECK(band["band"]["absorption"]["settled"] == true);
+  CHECK(band["band"]["containment"]["h_min"].get<std::string>().size() == 9);  // 4 digits: d.ddde-XX
+  const auto tol = cli_json("coupling 0.201 --tolerance 1% --horizon 40 --below 1e-3 --json");
+  CHECK(tol["band"]["containment"]["at"]["pair"]["tau"] == 11);
+  CHECK(tol["band"]["containment"]["enclosure"][1] == "0.00000000000000e+00");
+  CHECK(tol["band"]["first_below"]["settled"] == true);
   for (const char* bad : {"coupling --band 2:1", "coupling --band 1", "coupling 2 --tolerance 5", "coupling --n2 4 --tolerance 1%",
                           "coupling 2 --band 1:3 --tolerance 1%"})
     check_rejected(bad);

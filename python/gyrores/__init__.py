@@ -546,7 +546,7 @@ def _horizon_value(text):
 
 
 def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12, band=None, tolerance=None,
-             band_digits=6, band_evaluations=4000):
+             band_digits=None):
     """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q over [0, T],
     the first time H_q <= E, the infimum over all time, convergents (``gyrores coupling --json``);
     and the worst and best of that minimum over a band of couplings (``--band``, ``--tolerance``).
@@ -583,8 +583,8 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
     raw = _prefixed(f, _gyrores._coupling, None if n is None else _args.rational(n, f, "n"),
                     None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
                     _level(below, f), _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d),
-                    _band_text(band, f), _tolerance_text(tolerance, f), _args.bounded(band_digits, f, "band_digits", 1, 12),
-                    _args.bounded(band_evaluations, f, "band_evaluations", 10, 1000000))
+                    _band_text(band, f), _tolerance_text(tolerance, f),
+                    0 if band_digits is None else _args.bounded(band_digits, f, "band_digits", 1, 10000))
     raw["digits"] = d
     order = list(raw)  # the CLI's order of the keys
     band_raw = raw.pop("band", None)

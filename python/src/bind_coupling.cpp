@@ -16,6 +16,7 @@
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/model/coupling.hpp>
+#include <gyrores/app/band.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/theorem/horizon.hpp>
 
@@ -49,14 +50,14 @@ std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n
 
 struct coupling_and_band {
   std::optional<coupling_report> report;
-  std::optional<band_report> band;
+  std::optional<app::band_result> band;
 };
 
 // The dict of `gyrores coupling --json`, with "band" when a band or tolerance is given; a band
 // alone (no n, n2) gives the CLI's {"horizon", "theorem", "band"}.
 py::object coupling_dict(const py::object& n, const py::object& n2, const std::string& horizon,
                          const py::object& below, std::int64_t convergents, long long digits, const py::object& band,
-                         const py::object& tolerance, long long band_digits, std::int64_t band_evaluations) {
+                         const py::object& tolerance, long long band_digits) {
   const bool band_alone = n.is_none() && n2.is_none() && !band.is_none();
   if (!band_alone && n.is_none() == n2.is_none())
     throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
@@ -65,34 +66,35 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   if (convergents < 0 || convergents > 60) throw usage_error("convergents must be in [0, 60]");
   opt.convergents = std::size_t(convergents);
   opt.horizon = horizon_of(horizon, "horizon");
-  if (!below.is_none()) {
-    if (band_alone) throw usage_error("below needs the coupling n or n2 (a band alone has no first time below)");
-    opt.below = level_of(below.cast<std::string>());
-  }
+  if (!below.is_none()) opt.below = level_of(below.cast<std::string>());
   std::optional<coupling_spec> spec;
   if (!band_alone) spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
   const auto ends = band_of(n, band, tolerance);
-  band_options bo;
+  app::band_request bq;
   if (ends) {
-    if (band_digits < 1 || band_digits > 12) throw usage_error("band_digits must be in [1, 12], got " + std::to_string(band_digits));
-    if (band_evaluations < 10 || band_evaluations > 1000000)
-      throw usage_error("band_evaluations must be in [10, 1000000], got " + std::to_string(band_evaluations));
-    bo.digits = unsigned(band_digits);
-    bo.max_evaluations = std::size_t(band_evaluations);
+    bq.n1 = ends->first;
+    bq.n2 = ends->second;
+    bq.horizon = opt.horizon;
+    bq.below = opt.below;
+    bq.digits = band_digits > 0 ? checked_digits(band_digits, 1, report_digits_max) : opt.digits;
   }
-  // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point.
-  const coupling_and_band r = run_interruptible<coupling_and_band>([spec, opt, ends, bo](stop_token stop) mutable {
+  // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point (a
+  // band's bracket so far is then not returned: KeyboardInterrupt).
+  const coupling_and_band r = run_interruptible<coupling_and_band>([spec, opt, ends, bq](stop_token stop) mutable {
     coupling_and_band out;
-    opt.stop = bo.stop = stop;
+    opt.stop = bq.stop = stop;
     if (spec) out.report = analyse_coupling(*spec, opt);
-    if (ends) out.band = prove_band(ends->first, ends->second, opt.horizon, bo);
+    if (ends) {
+      out.band = app::run_band(bq);
+      if (out.band->interrupted) throw interrupted();
+    }
     return out;
   });
   if (band_alone)
-    return to_python(json{{"horizon", horizon}, {"theorem", horizon_theorem_id}, {"band", band_report_json(*r.band)}});
+    return to_python(json{{"horizon", horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(bq, *r.band)}});
   const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
   json j = coupling_report_json(input, horizon, opt.digits, *r.report);
-  if (r.band) j["band"] = band_report_json(*r.band);
+  if (r.band) j["band"] = app::band_result_json(bq, *r.band);
   return to_python(j);
 }
 
@@ -198,7 +200,7 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
 void bind_coupling(py::module_& m) {
   m.def("_coupling", &coupling_dict, py::arg("n"), py::arg("n2"), py::arg("horizon"), py::arg("below"),
         py::arg("convergents"), py::arg("digits"), py::arg("band") = py::none(), py::arg("tolerance") = py::none(),
-        py::arg("band_digits") = 6, py::arg("band_evaluations") = 4000,
+        py::arg("band_digits") = 0,
         "The dict of `gyrores coupling --json` (with --band N1:N2 or --tolerance P%). Use gyrores.coupling.");
   m.def("_couplings", &couplings_columns, py::arg("couplings"), py::arg("is_n2"), py::arg("horizons"),
         py::arg("below"), py::arg("progress"),

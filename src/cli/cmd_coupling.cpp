@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <gyrores/design/coupling_report.hpp>
+#include <gyrores/app/band.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/horizon_certificate_json.hpp>
@@ -26,8 +27,7 @@ namespace {
 
 struct coupling_args {
   std::string n, n2, horizon = "100", below, band, tolerance, certificate;
-  int band_digits = 6;
-  std::int64_t band_evaluations = 4000;
+  int band_digits = 0;  // 0: --digits
   int digits = 12;
   std::int64_t convergents = 8;
   bool json = false;
@@ -94,28 +94,69 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
   return os.str();
 }
 
-std::string extreme_text(const band_extreme& e, unsigned digits) {
-  std::string out = e.value.empty() ? std::string("in [") + format_rational_scientific(e.lo, digits) + ", " +
-                                          format_rational_scientific(e.hi, digits) + "]"
-                                    : e.value;
-  out += "  at n = " + format_rational_scientific(e.n_at, 10);
-  if (e.n_box_lo != e.n_box_hi)
-    out += " (attained in [" + format_rational_scientific(e.n_box_lo, 10) + ", " + format_rational_scientific(e.n_box_hi, 10) + "])";
-  if (!e.converged) out += "  (not narrowed to " + std::to_string(digits) + " digits within the evaluation budget)";
+// A band end: its decimal when it terminates (1.9, 0.0025), else the exact fraction.
+std::string band_end_text(const big_rational& v) {
+  big_int den = boost::multiprecision::denominator(v);
+  int twos = 0, fives = 0;
+  while (den % 2 == 0) den /= 2, ++twos;
+  while (den % 5 == 0) den /= 5, ++fives;
+  if (den != 1 || std::max(twos, fives) > 60) return rational_str(v);
+  const int k = std::max(twos, fives);
+  const big_rational scaled = v * big_rational(boost::multiprecision::pow(big_int(10), unsigned(k)));
+  std::string digits = big_int(boost::multiprecision::numerator(scaled)).str();
+  if (k == 0) return digits;
+  if (int(digits.size()) <= k) digits.insert(0, std::string(std::size_t(k + 1 - int(digits.size())), '0'));
+  return digits.insert(digits.size() - std::size_t(k), ".");
+}
+
+// Where a guarantee is attained: the exact coupling, its pair, its own minimum's lobe and time.
+std::string attained_text(const app::band_attained& a) {
+  std::string out = "at n^2 = " + rational_str(a.coupling.spec.n2);
+  if (a.pair) out += ", the pair " + a.pair->str();
+  if (a.minimum) {
+    const horizon_minimum_report& m = *a.minimum;
+    out += m.at_horizon_end ? ", at the horizon's end t = " + m.t_min.value
+                            : ", lobe k = " + (m.lobe ? m.lobe->k.str() : std::string("?")) + ", t = " + m.t_min.value;
+  }
+  if (a.first_below) out += a.first_below->never ? ", never" : ", its first time " + a.first_below->t_below.value;
   return out;
 }
 
-std::string band_text(const coupling_args& a, const band_report& b) {
+std::string extreme_text(const band_extreme& e, unsigned digits) {
+  if (e.settled && e.value.hi_rational() == 0) return "0 (exactly)";
+  if (e.settled) return *e.value.rounded(digits);
+  const auto [lo, hi] = e.value.outward(digits);
+  return "in [" + lo + ", " + hi + "] (" + (e.interrupted ? std::string("interrupted") : "not settled: " + e.unsettled_reason) + ")";
+}
+
+std::string band_text(const coupling_args& a, const app::band_request& q, const app::band_result& b) {
   std::ostringstream os;
-  os << "band n in [" << rational_str(b.n1) << ", " << rational_str(b.n2) << "], over [0, " << a.horizon << "]:\n"
-     << "  worst min H_q " << extreme_text(b.worst, b.digits) << "\n"
-     << "  best min H_q  "
-     << (b.zero ? "0 exactly, at the degenerate pair below" : extreme_text(b.best, b.digits)) << "\n";
-  if (b.zero)
-    os << "  degenerate    the pair " << b.zero->pair.str() << " (n^2 = " << rational_str(b.zero->n2)
-       << ") lies in the band and H_q = 0 there at t = " << b.zero->t_zero.value << " <= T: no containment guarantee\n";
-  os << "  proof         horizon theorem at " << b.evaluations << " couplings, lobe and end-point bounds on " << b.boxes
-     << " boxes of n (" << horizon_theorem_id << ", Step 12); each bound an enclosure of the exact extreme\n";
+  const unsigned d = q.digits;
+  os << "band n in [" << band_end_text(q.n1) << ", " << band_end_text(q.n2) << "], over [0, " << a.horizon << "]:\n"
+     << "  absorption guarantee   " << extreme_text(b.absorption, d) << "\n"
+     << "                         every n of the band has min H_q <= this over [0, T] (the highest minimum)\n";
+  if (!b.interrupted) os << "                         " << attained_text(b.absorption_at) << "\n";
+  os << "  containment guarantee  " << extreme_text(b.containment, d) << "\n"
+     << "                         every n of the band keeps H_q >= this on [0, T] (the lowest minimum)\n";
+  if (!b.interrupted) os << "                         " << attained_text(b.containment_at) << "\n";
+  if (b.below) {
+    const band_first_below& f = *b.below;
+    os << "  first time H_q <= " << a.below << (f.never ? "\n  never                  " + f.reason + "\n" : "");
+    if (!f.never) {
+      os << "\n                         t = ";
+      if (f.settled) os << *f.time.rounded(d);
+      else {
+        const auto [lo, hi] = f.time.outward(d);
+        os << "in [" << lo << ", " << hi << "] (" << (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
+      }
+      os << ": every n of the band has H_q <= E by then (the latest first time)\n";
+      if (b.below_at) os << "                         " << attained_text(*b.below_at) << "\n";
+    }
+  }
+  os << "  proof                  " << band_theorem_id << ": "
+     << b.absorption.intervals + b.containment.intervals + (b.below ? b.below->intervals : 0) << " intervals of the band, "
+     << b.absorption.couplings + b.containment.couplings + (b.below ? b.below->couplings : 0)
+     << " couplings proved by the horizon theorem; " << d << " digits, each the correct rounding of a proved enclosure\n";
   return os.str();
 }
 
@@ -134,8 +175,8 @@ class band_progress_printer {
     if (t < 1 || (drawn_ && t - last_ < (tty_ ? 0.2 : 10.0))) return;
     last_ = t;
     char line[200];
-    std::snprintf(line, sizeof line, "gyrores coupling: %s min H_q in [%.6e, %.6e]  %zu boxes, %zu minima  %.0f s",
-                  p.worst ? "worst" : "best", p.lo, p.hi, p.boxes, p.evaluations, t);
+    std::snprintf(line, sizeof line, "gyrores coupling: %s in [%.6e, %.6e]  %zu intervals, %zu couplings  %.0f s", p.what, p.lo,
+                  p.hi, p.intervals, p.couplings, t);
     if (tty_) std::fprintf(stderr, "\r%s\x1b[K", line);
     else std::fprintf(stderr, "%s\n", line);
     std::fflush(stderr);
@@ -149,18 +190,12 @@ class band_progress_printer {
   double last_ = 0;
 };
 
-// The band proof of --band/--tolerance, interruptible by Ctrl-C (exit 130), with progress.
-band_report run_band(const coupling_args& a, const std::pair<big_rational, big_rational>& band, const horizon_time& T) {
-  check_flag_range(std::int64_t(a.band_digits), 1, 12, "--band-digits");
-  check_flag_range(a.band_evaluations, 10, 1000000, "--band-evaluations");
-  band_options bo;
-  bo.digits = unsigned(a.band_digits);
-  bo.max_evaluations = std::size_t(a.band_evaluations);
-  signal_scope signals;
-  bo.stop = signals.token();
+// The band proofs of --band/--tolerance, with progress; Ctrl-C stops them with the bracket so far.
+app::band_result run_band(app::band_request& q, signal_scope& signals) {
+  q.stop = signals.token();
   band_progress_printer printer;
-  bo.progress = [&printer](const band_progress& p) { printer(p); };
-  return prove_band(band.first, band.second, T, bo);
+  q.progress = [&printer](const band_progress& p) { printer(p); };
+  return app::run_band(q);
 }
 
 // --band N1:N2, or --tolerance P% around N.
@@ -172,12 +207,38 @@ std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args
   return parse_tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance");
 }
 
+// The band request of --band/--tolerance: its digits are --band-digits, else --digits.
+app::band_request band_request_of(const coupling_args& a, const std::pair<big_rational, big_rational>& band,
+                                  const horizon_time& T) {
+  app::band_request q;
+  q.n1 = band.first;
+  q.n2 = band.second;
+  q.horizon = T;
+  if (!a.below.empty()) q.below = parse_energy_level(a.below, "--below");
+  q.digits = unsigned(a.band_digits > 0 ? a.band_digits : a.digits);
+  check_flag_range(std::int64_t(q.digits), 1, std::int64_t(report_digits_max), a.band_digits > 0 ? "--band-digits" : "--digits");
+  return q;
+}
+
+// A band's text or JSON; a Ctrl-C still prints the bracket reached, then exits 130.
+std::string band_output(const coupling_args& a, app::band_request& q, const std::string& before, json* whole) {
+  signal_scope signals;
+  const app::band_result b = run_band(q, signals);
+  std::string out;
+  if (!a.json) out = before + band_text(a, q, b);
+  else if (whole) {
+    (*whole)["band"] = app::band_result_json(q, b);
+    out = json_dump(*whole) + "\n";
+  } else out = json_dump(json{{"horizon", a.horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(q, b)}}) + "\n";
+  if (b.interrupted) throw interrupted_with_output{out};
+  return out;
+}
+
 std::string run_coupling(const coupling_args& a) {
   const auto band = band_of(a);
   if (band && a.n.empty() && a.n2.empty()) {
-    const band_report b = run_band(a, *band, parse_horizon_time(a.horizon, "--horizon"));
-    if (!a.json) return band_text(a, b);
-    return json_dump(json{{"horizon", a.horizon}, {"theorem", horizon_theorem_id}, {"band", band_report_json(b)}}) + "\n";
+    app::band_request q = band_request_of(a, *band, parse_horizon_time(a.horizon, "--horizon"));
+    return band_output(a, q, "", nullptr);
   }
   if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
   check_digits_flag(a.digits, 1, 1000);
@@ -195,12 +256,13 @@ std::string run_coupling(const coupling_args& a) {
     if (opt.horizon.times_pi) throw usage_error("--certificate needs a rational horizon (not a multiple of pi), got " + a.horizon);
     write_file_atomically(a.certificate, coupling_certificate_text(spec, opt.horizon.value, opt.below, unsigned(a.digits)));
   }
-  std::optional<band_report> b;
-  if (band) b = run_band(a, *band, opt.horizon);
-  if (!a.json) return coupling_text(a, r) + (b ? band_text(a, *b) : "");
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
-  if (b) j["band"] = band_report_json(*b);
+  if (band) {
+    app::band_request q = band_request_of(a, *band, opt.horizon);
+    return band_output(a, q, coupling_text(a, r), &j);
+  }
+  if (!a.json) return coupling_text(a, r);
   return json_dump(j) + "\n";
 }
 
@@ -211,11 +273,10 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
   sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
   sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE: gyrores check FILE");
-  sub.add("--band", a->band, "a band of couplings N1:N2: worst and best min of H_q over [0, T], proved (N optional)");
+  sub.add("--band", a->band, "a band of couplings N1:N2: its absorption and containment guarantees over [0, T], proved (N optional)");
   sub.add("--tolerance", a->tolerance, "the band N (1 -+ P%) around N, e.g. 1%");
-  sub.add("--band-digits", a->band_digits, "relative width asked of the band's enclosures: 10^-D (1..12)", show::with_default);
-  sub.add("--band-evaluations", a->band_evaluations, "box bounds plus proved horizon minima per extreme at most", show::with_default);
-  sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%)");
+  sub.add("--band-digits", a->band_digits, "digits of the band's guarantees (default: --digits)");
+  sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%); with a band, the latest over the band");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);

@@ -106,16 +106,16 @@ std::string tolerance_text(const design_args& a, design_problem problem, const t
   const bool absorb = problem == design_problem::absorb;
   os << "with tolerance " << a.tolerance << " on n: " << (absorb ? "H_q <= " : "H_q >= ") << a.level
      << (absorb ? " before --tmax " + a.tmax : " on [0, " + (a.horizon.empty() ? a.tmax : a.horizon) + "]")
-     << " for every n of the band, proved (" << horizon_theorem_id << ")\n"
-     << "  rank  pair          band of n                        " << (absorb ? "worst" : "best") << " min H_q over the horizon   verdict\n";
+     << " for every n of the band, proved (" << band_theorem_id << ")\n"
+     << "  rank  pair          band of n                        " << padded(absorb ? "absorption guarantee" : "containment guarantee", 32)
+     << "verdict\n";
   for (std::size_t i = 0; i < r.checked.size(); ++i) {
     const auto& c = r.checked[i];
-    const band_extreme& e = absorb ? c.band.worst : c.band.best;
-    os << "  " << rank_cell(i) << padded(c.point.pair().str(), 14) << "[" << format_rational_scientific(c.band.n1, 8)
-       << ", " << format_rational_scientific(c.band.n2, 8) << "]  "
-       << (c.band.zero ? "0 (degenerate " + c.band.zero->pair.str() + ")"
-                       : "[" + format_rational_scientific(e.lo, 4) + ", " + format_rational_scientific(e.hi, 4) + "]")
-       << "  " << tolerance_verdict_name(c.verdict) << "\n";
+    const auto [lo, hi] = c.guarantee.value.outward(4);
+    os << "  " << rank_cell(i) << padded(c.point.pair().str(), 14) << "[" << format_rational_scientific(c.n1, 8) << ", "
+       << format_rational_scientific(c.n2, 8) << "]  "
+       << padded(c.guarantee.value.hi_rational() == 0 ? "0 (exactly)" : "[" + lo + ", " + hi + "]", 32)
+       << tolerance_verdict_name(c.verdict) << "\n";
   }
   if (r.chosen) os << "chosen with tolerance: " << r.checked[*r.chosen].point.pair().str() << "\n";
   else

@@ -21,6 +21,11 @@ struct command_exit {
   int status;
   std::string message;
 };
+// Thrown by a command stopped by Ctrl-C that still has a proved partial answer (a band's bracket
+// so far): main prints `out` on stdout, then exits 130.
+struct interrupted_with_output {
+  std::string out;
+};
 using command_installer = std::function<command_runner(CLI::App&)>;
 
 struct command_entry {

@@ -154,6 +154,10 @@ int run(int argc, char** argv, bool execute) {
   } catch (const command_exit& e) {
     std::cerr << e.message << "\n";
     return e.status;
+  } catch (const interrupted_with_output& e) {
+    if (!print_stdout(e.out)) return cannot_write_stdout(errno);
+    std::cerr << "gyrores: interrupted (the proved bracket reached so far is printed)\n";
+    return exit_interrupted;
   } catch (const gyrores::interrupted&) {
     std::cerr << "gyrores: interrupted\n";
     return exit_interrupted;

@@ -42,14 +42,14 @@ json design_json(const design_options& o, const std::string& tmax, const std::st
 json tolerance_json(design_problem problem, const tolerance_result& r, const std::string& percent, const std::string& level) {
   json checked = json::array();
   for (const auto& c : r.checked) {
-    const band_extreme& e = problem == design_problem::absorb ? c.band.worst : c.band.best;
+    const auto [lo, hi] = c.guarantee.value.outward(8);
     checked.push_back({{"tau", c.point.tau}, {"sigma", c.point.sigma},
-                       {"band", {rational_str(c.band.n1), rational_str(c.band.n2)}},
-                       {"h_min_enclosure", {rational_str(e.lo), rational_str(e.hi)}},
-                       {"degenerate_zero", c.band.zero ? json(c.band.zero->pair.str()) : json(nullptr)},
+                       {"band", {rational_str(c.n1), rational_str(c.n2)}},
+                       {problem == design_problem::absorb ? "absorption" : "containment", {lo, hi}},
+                       {"at_n2", rational_str(c.guarantee.at.spec.n2)},
                        {"verdict", tolerance_verdict_name(c.verdict)}});
   }
-  json j{{"checked", checked}, {"theorem", horizon_theorem_id}};
+  json j{{"checked", checked}, {"theorem", band_theorem_id}};
   j["chosen"] = r.chosen ? json{{"tau", r.checked[*r.chosen].point.tau}, {"sigma", r.checked[*r.chosen].point.sigma}}
                          : json(nullptr);
   j["percent"] = percent;

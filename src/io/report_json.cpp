@@ -167,20 +167,4 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   return j;
 }
 
-json band_report_json(const band_report& b) {
-  auto ext = [](const band_extreme& e) {
-    return json{{"value", e.value.empty() ? json(nullptr) : json(e.value)},
-                {"enclosure", {rational_str(e.lo), rational_str(e.hi)}},
-                {"n_at", rational_str(e.n_at)},
-                {"n_box", {rational_str(e.n_box_lo), rational_str(e.n_box_hi)}},
-                {"converged", e.converged}};
-  };
-  json j{{"n1", rational_str(b.n1)}, {"n2", rational_str(b.n2)}, {"digits", b.digits}, {"lipschitz", b.lipschitz},
-         {"evaluations", b.evaluations}, {"boxes", b.boxes}, {"worst_h_min", ext(b.worst)}, {"best_h_min", ext(b.best)}};
-  j["degenerate"] = b.zero ? json{{"n2", rational_str(b.zero->n2)}, {"tau", json_integer(b.zero->pair.tau())},
-                                  {"sigma", json_integer(b.zero->pair.sigma())}, {"t_zero", b.zero->t_zero.value}}
-                           : json(nullptr);
-  return j;
-}
-
 }  // namespace gyrores

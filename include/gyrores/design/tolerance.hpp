@@ -23,14 +23,15 @@ struct tolerance_options {
   big_rational level;             // E >= 0 (an energy; H_q(0) = 1/2)
   horizon_time horizon;           // T_max (absorb) or H (contain)
   std::size_t max_pairs = 20;     // ranked pairs examined at most, best first
-  band_options band{3, 300};      // the band proofs' accuracy and budget per pair
+  band_options band{6};           // the band proofs' digits (each stops as soon as E is decided) and stop token
 };
 
 enum class tolerance_verdict { meets, fails, undecided };
 
 struct tolerance_check {
   design_point point;
-  band_report band;
+  big_rational n1, n2;            // the band
+  band_extreme guarantee;         // absorb: the absorption guarantee W/2; contain: the containment one B/2
   tolerance_verdict verdict = tolerance_verdict::undecided;
 };
 

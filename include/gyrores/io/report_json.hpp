@@ -9,7 +9,6 @@
 #include <gyrores/design/coupling_report.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/model/pair.hpp>
-#include <gyrores/theorem/band.hpp>
 #include <gyrores/theorem/pair_report.hpp>
 
 namespace gyrores {
@@ -36,11 +35,5 @@ json pair_report_json(const resonant_pair<big_int>& p, const pair_report& r, boo
 // The object of `gyrores coupling --json`. `input` is {"n": text} or {"n2": text} as the user gave
 // it, `horizon` the horizon's text, `digits` the digits asked for.
 json coupling_report_json(const json& input, const std::string& horizon, unsigned digits, const coupling_report& r);
-
-// The "band" object of `gyrores coupling --band/--tolerance --json` (theorem/band.hpp): n1, n2,
-// digits, lipschitz, evaluations, worst_h_min and best_h_min ({value (null when not decided),
-// enclosure [lo, hi], n_at, n_box [lo, hi], converged}; exact rationals as text), degenerate
-// ({n2, tau, sigma, t_zero} or null).
-json band_report_json(const band_report& b);
 
 }  // namespace gyrores

@@ -1,81 +1,88 @@
-// A band of couplings [n1, n2] (a designer's tolerance): over every n in it, the largest and the
-// smallest minimum of H_q over [0, T], and the degenerate pairs whose exact zero of H_q comes
-// before T (proofs/horizon-theorem.md, item 6 and Step 12).
-//
-// M(n) = min over [0, T] of H_q is min(V(nu*), R(T)) (the horizon theorem): the best lobe's value
-// V_x(nu*), nu* = min over the lobes k <= K_T of ||k x - 1/2||, x = n/sqrt(n^2 + 4), against the
-// end point. A branch and bound over boxes N of n bounds M on each box from that structure, not
-// from a Lipschitz constant: from above by the end point R(T) over N (a mean-value enclosure) and
-// by the peaks of nu* over the box's x-interval for the lobes admissible on all of N (listed
-// exactly: between two neighbouring centres (2j+1)/(2k) nu* lies under two tents), through
-// V_x's monotonicity in nu and in x; from below by R(T) over N and by the smallest nu* over the
-// box (its value at the two ends, or 0 where a lobe's centre lies inside), for the lobes
-// admissible somewhere on N. These bounds tighten with the box, not with the horizon. Each
-// proved M(n) at an exact rational n (the horizon theorem) closes the other side: the worst case
-// lies between the best proved M(n) and the largest box bound. The best case is exactly 0 when
-// the band holds a degenerate pair (x = (2j+1)/(2k)) whose zero, at t = 2 k pi/sqrt(n^2 + 4),
-// lies in [0, T]: found exactly, by the smallest such k.
+// A band of couplings [n1, n2] (a designer's tolerance) over a horizon [0, T]: the band theorem
+// (proofs/band-theorem.md, id "band-theorem/1"). With M(n) the minimum of R = 2 H_q over [0, T] at
+// the coupling n (the horizon theorem, theorem/horizon.hpp):
+//   absorption guarantee  W = max over the band of M: every coupling drains q at least to W/2;
+//   containment guarantee B = min over the band of M: every coupling keeps at least B/2 in q;
+//   band-wide first time below E: the latest first time H_q <= E over the band
+//                                  (= the least T whose absorption guarantee is <= E).
+// Each is proved by a branch and bound over intervals of x = n/sqrt(n^2 + 4): every interval gets
+// an upper (W) or lower (B) bound from the lobes' structure (the peak lemma: the least odd or even
+// denominator fraction of the interval, exact; the lobe value at the interval's ends, monotone in
+// x) and from the end point R(T); every split point is a coupling with rational n^2, whose minimum
+// the horizon theorem proves. The search stops when the best proved value and the best remaining
+// bound round alike to the digits asked: the extreme is then settled, attained at that coupling
+// (a resonant pair when x is rational). Everything here is in H_q units (R/2), qdot0 = 1.
 #pragma once
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
-#include <utility>
-#include <vector>
 
+#include <gyrores/core/enclosure.hpp>
+#include <gyrores/core/quadratic.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/stop.hpp>
-#include <gyrores/model/pair.hpp>
-#include <gyrores/theorem/horizon.hpp>
+#include <gyrores/model/coupling.hpp>
+#include <gyrores/model/inputs.hpp>
 
 namespace gyrores {
 
-// Where a band proof stands (for a progress display): which extreme, the work done on it so far
-// and its enclosure (H_q; hi may be +infinity before the first box bound).
+inline constexpr const char* band_theorem_id = "band-theorem/1";
+
+// A coupling of the band, exactly: its n^2 and its x (rational iff resonant).
+struct band_coupling {
+  coupling_spec spec;
+  quadratic_number x;
+  static band_coupling of_n(const big_rational& n);             // a band's end, n > 0
+  static band_coupling of_x(const big_int& p, const big_int& q);  // x = p/q in (0, 1): n^2 = 4p^2/(q^2 - p^2)
+};
+
+// Where a proof stands (for a progress display), in H_q units; hi may be +infinity at first.
 struct band_progress {
-  bool worst = true;
-  std::size_t evaluations = 0, boxes = 0;  // proved horizon minima and box bounds, this extreme
+  const char* what = "";  // "absorption", "containment", "first time below"
+  std::size_t intervals = 0, couplings = 0;
   double lo = 0, hi = 0;
 };
 
 struct band_options {
-  unsigned digits = 6;                 // the relative width asked of each enclosure: 10^-digits
-  std::size_t max_evaluations = 4000;  // box bounds plus proved horizon minima per extreme (then the enclosure reached is reported)
-  bool want_worst = true, want_best = true;  // which extremes to prove (the other is left 0, unconverged)
-  stop_token stop;
-  std::function<void(const band_progress&)> progress;  // called after each step of the search (optional)
+  unsigned digits = 6;                 // the extremes are settled to this many digits, [1, report_digits_max]
+  std::size_t max_intervals = 100000;  // a cap on the intervals of one branch and bound (then: not settled)
+  std::optional<big_rational> versus;  // H_q: stop as soon as the extreme is proved on one side of it
+  stop_token stop;                     // Ctrl-C: the search returns the bracket so far (interrupted)
+  std::function<void(const band_progress&)> progress;  // called as the search goes (optional)
 };
 
-// One extreme of M over the band: a proved enclosure, and where it is attained.
+// One extreme, W or B, in H_q units.
 struct band_extreme {
-  big_rational lo, hi;            // lo <= the extreme <= hi (exact rationals)
-  std::string value;              // the correct rounding to `digits` digits when lo and hi share it, else ""
-  big_rational n_at;              // a coupling where M(n_at) lies within [lo, hi]
-  big_rational n_box_lo, n_box_hi;  // the box of n being refined when n_at was found (it holds n_at)
-  bool converged = false;         // hi - lo reached the asked width
+  enclosure value;               // proved: the extreme lies in it
+  bool settled = false;          // value.rounded(digits) is defined: the correct rounding
+  bool decided = false;          // options.versus was given and value lies on one side of it
+  bool interrupted = false;      // stopped by the stop token: value is the bracket reached
+  std::string unsettled_reason;  // why not settled (a cap), when neither settled nor interrupted
+  band_coupling at;              // the coupling whose own minimum is the attained end of `value`
+  enclosure at_value;            // that minimum (H_q)
+  std::size_t intervals = 0, couplings = 0;
 };
 
-struct band_degenerate {
-  big_rational n2;                      // the coupling's n^2, exactly
-  resonant_pair<big_int> pair;
-  proved_real t_zero;                   // its first zero of H_q
-};
+// W and B over the band [n1, n2] and the horizon T > 0. usage_error unless 0 < n1 < n2 and T > 0.
+band_extreme prove_band_absorption(const big_rational& n1, const big_rational& n2, const horizon_time& T,
+                                   const band_options& opt = {});
+band_extreme prove_band_containment(const big_rational& n1, const big_rational& n2, const horizon_time& T,
+                                    const band_options& opt = {});
 
-struct band_report {
-  big_rational n1, n2;
-  horizon_time horizon;
-  unsigned digits = 6;
-  std::string lipschitz;                // a bound L on |dH_q/dn| over the band and [0, T], so |M(n) - M(n')| <= L |n - n'|
-                                        // (upper end, 6 digits; for sampling M: the enclosures do not use it)
-  band_extreme worst;                   // max over n of M(n)
-  band_extreme best;                    // min over n of M(n)
-  std::optional<band_degenerate> zero;  // a degenerate pair whose zero lies in [0, T] (then best = 0)
-  std::size_t evaluations = 0;          // proved horizon minima computed
-  std::size_t boxes = 0;                // box bounds computed
+// The latest first time H_q <= E over the band, in time units.
+struct band_first_below {
+  big_rational level;            // E
+  bool never = false;            // some coupling of the band never reaches E
+  std::string reason;            // why never (the pair), or where the latest time is approached
+  enclosure time;                // proved (when not never): the latest first time lies in it
+  bool settled = false, interrupted = false;
+  std::string unsettled_reason;
+  band_coupling at;              // a coupling whose own first time below E is the lower end
+  enclosure at_time;             // that time
+  std::size_t intervals = 0, couplings = 0;
 };
-
-// Throws usage_error unless 0 < n1 < n2 and T >= 0; interrupted when opt.stop is set.
-band_report prove_band(const big_rational& n1, const big_rational& n2, const horizon_time& horizon,
-                       const band_options& opt = {});
+band_first_below prove_band_first_below(const big_rational& n1, const big_rational& n2, const big_rational& level,
+                                        const band_options& opt = {});
 
 }  // namespace gyrores

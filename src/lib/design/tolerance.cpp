@@ -4,6 +4,7 @@
 #include <boost/multiprecision/integer.hpp>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/stop.hpp>
 
 namespace gyrores {
 
@@ -32,16 +33,15 @@ tolerance_result design_with_tolerance(const std::vector<design_point>& ranked, 
   for (std::size_t i = 0; i < ranked.size() && i < opt.max_pairs; ++i) {
     const auto [n1, n2] = tolerance_band(ranked[i], opt.fraction);
     band_options bo = opt.band;
-    bo.want_worst = absorb;
-    bo.want_best = !absorb;
-    tolerance_check c{ranked[i], prove_band(n1, n2, opt.horizon, bo), tolerance_verdict::undecided};
-    if (absorb) {
-      if (c.band.worst.hi <= opt.level) c.verdict = tolerance_verdict::meets;
-      else if (c.band.worst.lo > opt.level) c.verdict = tolerance_verdict::fails;
-    } else {
-      if (c.band.best.lo >= opt.level && !c.band.zero) c.verdict = tolerance_verdict::meets;
-      else if (c.band.best.hi < opt.level || c.band.zero) c.verdict = tolerance_verdict::fails;
-    }
+    bo.versus = opt.level;  // the verdict needs only the side of E, not every digit
+    tolerance_check c{ranked[i], n1, n2,
+                      absorb ? prove_band_absorption(n1, n2, opt.horizon, bo) : prove_band_containment(n1, n2, opt.horizon, bo),
+                      tolerance_verdict::undecided};
+    if (c.guarantee.interrupted) throw interrupted();
+    const big_rational lo = c.guarantee.value.lo_rational(), hi = c.guarantee.value.hi_rational();
+    // absorb: every coupling of the band drains to E (W <= E); contain: every one stays above (B >= E).
+    if (absorb ? hi <= opt.level : lo >= opt.level) c.verdict = tolerance_verdict::meets;
+    else if (absorb ? lo > opt.level : hi < opt.level) c.verdict = tolerance_verdict::fails;
     out.checked.push_back(std::move(c));
     if (out.checked.back().verdict == tolerance_verdict::meets) {
       out.chosen = out.checked.size() - 1;

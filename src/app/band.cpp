@@ -1,0 +1,70 @@
+// include/gyrores/app/band.hpp
+#include <gyrores/app/band.hpp>
+
+#include <gyrores/core/enclosure.hpp>
+#include <gyrores/core/error.hpp>
+#include <gyrores/io/band_json.hpp>
+#include <gyrores/model/coupling.hpp>
+
+namespace gyrores::app {
+
+namespace {
+
+band_attained attained(const band_coupling& c) {
+  return {c, coupling_resonant_pair(c.spec), std::nullopt, std::nullopt};
+}
+
+}  // namespace
+
+band_result run_band(const band_request& request) {
+  check_band(request.n1, request.n2, "the band");
+  check_report_digits(request.digits);
+  if (request.horizon.value < 0) throw usage_error("the horizon must be >= 0, got " + request.horizon.str());
+  band_options opt;
+  opt.digits = request.digits;
+  opt.max_intervals = request.max_intervals;
+  opt.stop = request.stop;
+  opt.progress = request.progress;
+  band_result r;
+  r.absorption = prove_band_absorption(request.n1, request.n2, request.horizon, opt);
+  r.containment = r.absorption.interrupted ? band_extreme{} : prove_band_containment(request.n1, request.n2, request.horizon, opt);
+  r.interrupted = r.absorption.interrupted || r.containment.interrupted;
+  if (request.below && !r.interrupted) {
+    r.below = prove_band_first_below(request.n1, request.n2, *request.below, opt);
+    r.interrupted = r.below->interrupted;
+  }
+  if (r.interrupted) return r;
+  // Each extreme's own coupling, its lobe and time (the horizon theorem at the digits asked).
+  r.absorption_at = attained(r.absorption.at);
+  r.containment_at = attained(r.containment.at);
+  r.absorption_at.minimum = prove_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop);
+  r.containment_at.minimum = prove_horizon_minimum(r.containment.at.spec, request.horizon, request.digits, request.stop);
+  if (r.below) {
+    r.below_at = attained(r.below->at);
+    r.below_at->first_below = prove_first_below(r.below->at.spec, *request.below, request.digits, request.stop);
+  }
+  return r;
+}
+
+json band_result_json(const band_request& request, const band_result& r) {
+  const auto at = [](const band_attained& a) {
+    json j = band_coupling_json(a.coupling, a.pair);
+    if (a.minimum) j.update(horizon_place_json(*a.minimum));
+    if (a.first_below) j["t_below"] = a.first_below->t_below.value;
+    return j;
+  };
+  json j{{"format", band_format},
+         {"theorem", band_theorem_id},
+         {"n1", rational_str(request.n1)},
+         {"n2", rational_str(request.n2)},
+         {"horizon", request.horizon.str()},
+         {"digits", request.digits},
+         {"interrupted", r.interrupted},
+         {"absorption", band_extreme_json(r.absorption, request.digits, at(r.absorption_at))},
+         {"containment", band_extreme_json(r.containment, request.digits, at(r.containment_at))}};
+  j["first_below"] = r.below ? band_first_below_json(*r.below, request.digits, r.below_at ? at(*r.below_at) : json(nullptr))
+                             : json(nullptr);
+  return j;
+}
+
+}  // namespace gyrores::app

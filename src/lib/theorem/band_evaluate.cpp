@@ -1,0 +1,408 @@
+// src/lib/theorem/band_evaluate.hpp
+#include "band_evaluate.hpp"
+
+#include <cmath>
+
+#include <gyrores/core/error.hpp>
+#include <gyrores/core/rational.hpp>
+#include <gyrores/theorem/horizon.hpp>
+
+#include "lobe_balls.hpp"
+
+namespace gyrores::band_detail {
+
+using arb_support::ball;
+using arb_support::fmpz_holder;
+using arb_support::lower_rational;
+using arb_support::set_int;
+using arb_support::set_quadratic;
+using arb_support::set_rational;
+using arb_support::upper_rational;
+
+namespace {
+
+slong bits_of(const big_int& v) { return v == 0 ? 0 : slong(boost::multiprecision::msb(v < 0 ? big_int(-v) : v)) + 1; }
+
+// sin and cos of a ball, each clipped to [-1, 1] (Arb may return wider balls for wide arguments).
+void sin_cos_clipped(arb_t s, arb_t c, const arb_t a, slong p) {
+  arb_sin_cos(s, c, a, p);
+  ball unit;
+  arb_zero_pm_one(unit);
+  if (!arb_is_finite(s) || !arb_contains(unit, s)) arb_set(s, unit);
+  if (!arb_is_finite(c) || !arb_contains(unit, c)) arb_set(c, unit);
+}
+
+// The coupling's s = sqrt(n^2 + 4), exactly when it is rational or quadratic: sqrt((P + 4Q)/Q).
+quadratic_number s_exact(const coupling_spec& c) {
+  const big_int P = c.P(), Q = c.Q(), d = Q * (P + 4 * Q);
+  big_int root;
+  return int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
+}
+
+// s = sqrt(n^2 + 4), x = n/s, c = 2/s, dx/dn = 4/s^3 and dc/dn = -2n/s^3 over a ball of n > 0. Each is
+// monotone in n except dc/dn, whose size 2n/s^3 peaks at n = sqrt 2: enclosed from the ball's ends,
+// since evaluating them on a wide ball directly can divide by a ball that holds 0.
+void coefficients(arb_t s, arb_t x, arb_t c, arb_t dx, arb_t dc, const arb_t n, slong p) {
+  const auto at = [p](arb_t s1, arb_t x1, arb_t c1, arb_t dx1, arb_t dc1, const arb_t n1) {
+    ball s3;
+    arb_mul(s1, n1, n1, p);
+    arb_add_si(s1, s1, 4, p);
+    arb_sqrt(s1, s1, p);
+    arb_div(x1, n1, s1, p);
+    arb_set_si(c1, 2);
+    arb_div(c1, c1, s1, p);
+    arb_mul(s3, s1, s1, p);
+    arb_mul(s3, s3, s1, p);
+    arb_set_si(dx1, 4);
+    arb_div(dx1, dx1, s3, p);
+    arb_mul_si(dc1, n1, -2, p);
+    arb_div(dc1, dc1, s3, p);
+  };
+  if (arb_is_exact(n)) {
+    at(s, x, c, dx, dc, n);
+    return;
+  }
+  ball lo, hi, s2, x2, c2, dx2, dc2;
+  arf_t b;
+  arf_init(b);
+  arb_get_lbound_arf(b, n, p);
+  arb_set_arf(lo, b);
+  arb_get_ubound_arf(b, n, p);
+  arb_set_arf(hi, b);
+  arf_clear(b);
+  at(s, x, c, dx, dc, lo);
+  at(s2, x2, c2, dx2, dc2, hi);
+  arb_union(s, s, s2, p);
+  arb_union(x, x, x2, p);
+  arb_union(c, c, c2, p);
+  arb_union(dx, dx, dx2, p);
+  arb_union(dc, dc, dc2, p);
+  ball root2;
+  arb_sqrt_ui(root2, 2, p);
+  if (arb_overlaps(n, root2)) {
+    at(s2, x2, c2, dx2, dc2, root2);
+    arb_union(dc, dc, dc2, p);
+  }
+}
+// R(n, T) = q^2 + q'^2 and dR/dn at t = T (qdot0 = 1): with alpha = s t/2, beta = n t/2,
+// q = c sin(alpha) cos(beta), q' = cos(alpha) cos(beta) - x sin(alpha) sin(beta); d alpha/dn = x t/2,
+// d beta/dn = t/2 (horizon-theorem.md Step 12 (d)).
+void R_and_slope(arb_t R, arb_t dR, const arb_t n, const arb_t tt, slong p) {
+  ball s, x, c, dx, dc, a, b, da, db, sa, ca, sb, cb, q, qd, dq, dqd, tmp, tmp2;
+  coefficients(s, x, c, dx, dc, n, p);
+  arb_mul(a, s, tt, p);
+  arb_mul_2exp_si(a, a, -1);
+  arb_mul(b, n, tt, p);
+  arb_mul_2exp_si(b, b, -1);
+  arb_mul(da, x, tt, p);
+  arb_mul_2exp_si(da, da, -1);
+  arb_mul_2exp_si(db, tt, -1);
+  sin_cos_clipped(sa, ca, a, p);
+  sin_cos_clipped(sb, cb, b, p);
+  arb_mul(q, sa, cb, p);
+  arb_mul(q, q, c, p);
+  arb_mul(dq, sa, cb, p);
+  arb_mul(dq, dq, dc, p);
+  arb_mul(tmp, ca, cb, p);
+  arb_mul(tmp, tmp, da, p);
+  arb_mul(tmp2, sa, sb, p);
+  arb_mul(tmp2, tmp2, db, p);
+  arb_sub(tmp, tmp, tmp2, p);
+  arb_mul(tmp, tmp, c, p);
+  arb_add(dq, dq, tmp, p);
+  arb_mul(qd, ca, cb, p);
+  arb_mul(tmp, sa, sb, p);
+  arb_mul(tmp, tmp, x, p);
+  arb_sub(qd, qd, tmp, p);
+  arb_mul(dqd, sa, cb, p);
+  arb_mul(dqd, dqd, da, p);
+  arb_mul(tmp, ca, sb, p);
+  arb_mul(tmp, tmp, db, p);
+  arb_add(dqd, dqd, tmp, p);
+  arb_neg(dqd, dqd);
+  arb_mul(tmp, sa, sb, p);
+  arb_mul(tmp, tmp, dx, p);
+  arb_sub(dqd, dqd, tmp, p);
+  arb_mul(tmp, ca, sb, p);
+  arb_mul(tmp, tmp, da, p);
+  arb_mul(tmp2, sa, cb, p);
+  arb_mul(tmp2, tmp2, db, p);
+  arb_add(tmp, tmp, tmp2, p);
+  arb_mul(tmp, tmp, x, p);
+  arb_sub(dqd, dqd, tmp, p);
+  arb_mul(R, q, q, p);
+  arb_mul(tmp, qd, qd, p);
+  arb_add(R, R, tmp, p);
+  arb_mul(dR, q, dq, p);
+  arb_mul(tmp, qd, dqd, p);
+  arb_add(dR, dR, tmp, p);
+  arb_mul_2exp_si(dR, dR, 1);
+}
+
+}  // namespace
+
+enclosure enclosure_of_rationals(const big_rational& lo, const big_rational& hi) {
+  const auto size = [](const big_rational& v) {
+    return bits_of(boost::multiprecision::numerator(v)) + bits_of(boost::multiprecision::denominator(v));
+  };
+  const mpfr_prec_t bits = std::min<mpfr_prec_t>(mpfr_prec_t(1) << 20, 64 + std::max(size(lo), size(hi)));
+  exact_binary a(bits), b(bits);
+  mpfr_set_q(a.get(), lo.backend().data(), MPFR_RNDD);
+  mpfr_set_q(b.get(), hi.backend().data(), MPFR_RNDU);
+  return enclosure(a, b);
+}
+
+band_arith::band_arith(const horizon_time& T, slong prec) : T_(T), prec_(prec) { arb_const_pi(pi_, prec_); }
+
+void band_arith::alpha_T(arb_t out, const band_coupling& c) const {
+  ball s;
+  set_rational(s, c.spec.n2 + 4, prec_);
+  arb_sqrt(s, s, prec_);
+  set_rational(out, T_.value, prec_);
+  arb_mul(out, out, s, prec_);
+  arb_mul_2exp_si(out, out, -1);
+  if (T_.times_pi) arb_mul(out, out, pi_, prec_);
+}
+
+big_int band_arith::cut_lobe(const band_coupling& c) const {
+  if (T_.times_pi)  // alpha_T/pi + 1/2 = s T'/2 + 1/2 with s in Q(sqrt d): exact
+    return (s_exact(c.spec) * quadratic_number(T_.value / 2) + quadratic_number(1, 2)).floor();
+  // alpha_T/pi + 1/2 is transcendental (pi), never an integer: a fine enough ball decides the floor.
+  ball a, h, f;
+  alpha_T(a, c);
+  arb_div(a, a, pi_, prec_);
+  arb_set_d(h, 0.5);
+  arb_add(a, a, h, prec_);
+  arb_floor(f, a, prec_);
+  fmpz_holder z;
+  if (!arb_get_unique_fmpz(z, f)) throw precision_shortfall("the lobe holding t = T was not decided");
+  return z.value();
+}
+
+// H_x^{-1}(target), target a ball in [0, pi/2] (x = c.x, a point): Newton on midpoints from a
+// double start, then a bracket decided at both ends (H increases: H(lo) < target < H(hi)).
+void band_arith::lobe_root(arb_t out, const band_coupling& c, const arb_t target) const {
+  ball x;
+  set_quadratic(x, c.x, prec_);
+  const double xd = c.x.approx(), cd = arf_get_d(arb_midref(target), ARF_RND_NEAR);
+  if (cd <= 0) {
+    arb_zero(out);
+    return;
+  }
+  double lo = 0, hi = M_PI / 2;
+  for (int i = 0; i < 80; ++i) {
+    const double m = (lo + hi) / 2;
+    (xd * m + std::atan2(xd * std::sin(m), std::cos(m)) < cd ? lo : hi) = m;
+  }
+  ball u, h, d, step;
+  arb_set_d(u, (lo + hi) / 2);
+  for (slong good = 40; good < 2 * prec_; good *= 2) {  // Newton doubles the good bits
+    lobe_balls::H_of(h, x, u, prec_);
+    arb_sub(h, h, target, prec_);
+    lobe_balls::dH_of(d, x, u, prec_);
+    arb_get_mid_arb(h, h);
+    arb_get_mid_arb(d, d);
+    arb_div(step, h, d, prec_);
+    arb_sub(u, u, step, prec_);
+    arb_get_mid_arb(u, u);
+  }
+  // eps: the rounding left plus the target's width over the slope (H' >= 2x).
+  ball eps, slope, floor_eps;
+  arb_get_rad_arb(eps, target);
+  lobe_balls::dH_of(slope, x, u, prec_);
+  arb_get_mid_arb(slope, slope);
+  arb_div(eps, eps, slope, prec_);
+  arb_mul_2exp_si(eps, eps, 1);
+  arb_one(floor_eps);
+  arb_mul_2exp_si(floor_eps, floor_eps, -(prec_ - 24));
+  arb_add(eps, eps, floor_eps, prec_);
+  arb_get_ubound_arf(arb_midref(eps.get()), eps, prec_);
+  mag_zero(arb_radref(eps.get()));
+  for (int tries = 0; tries < 4; ++tries, arb_mul_2exp_si(eps, eps, 12)) {
+    ball a, b, ha, hb;
+    arb_sub(a, u, eps, prec_);
+    arb_add(b, u, eps, prec_);
+    arb_get_mid_arb(a, a);
+    arb_get_mid_arb(b, b);
+    if (arb_is_negative(a)) arb_zero(a);
+    lobe_balls::H_of(ha, x, a, prec_);
+    lobe_balls::H_of(hb, x, b, prec_);
+    if ((arb_is_zero(a) || arb_lt(ha, target)) && arb_gt(hb, target)) {
+      arb_union(out, a, b, prec_);
+      return;
+    }
+  }
+  throw precision_shortfall("a lobe's root H^{-1}(c) was not bracketed");
+}
+
+void band_arith::signed_root(arb_t out, const band_coupling& c, const quadratic_number& signed_nu) const {
+  ball target;
+  set_quadratic(target, signed_nu.sign() < 0 ? -signed_nu : signed_nu, prec_);
+  arb_mul(target, target, pi_, prec_);
+  lobe_root(out, c, target);
+  if (signed_nu.sign() < 0) arb_neg(out, out);
+}
+
+void band_arith::V(arb_t out, const band_coupling& c, const quadratic_number& nu) const {
+  if (nu.sign() == 0) {
+    arb_zero(out);
+    return;
+  }
+  ball u, x;
+  signed_root(u, c, nu);
+  set_quadratic(x, c.x, prec_);
+  lobe_balls::G_of(out, x, u, prec_);
+  if (!arb_is_finite(out)) throw precision_shortfall("a lobe value V_x(nu) was not enclosed");
+}
+
+big_rational band_arith::V_upper(const band_coupling& c, const quadratic_number& nu) const {
+  ball v;
+  V(v, c, nu);
+  return upper_rational(v, prec_);
+}
+
+big_rational band_arith::V_lower(const band_coupling& c, const quadratic_number& nu) const {
+  ball v;
+  V(v, c, nu);
+  const big_rational r = lower_rational(v, prec_);
+  return r > 0 ? r : big_rational(0);
+}
+
+bool band_arith::reached_on(const big_int& k, const band_coupling& a, const band_coupling& b) const {
+  ball u, top, at;
+  alpha_T(at, a);  // alpha_T increases with x: its least value on [a, b]
+  if (k < 0) return false;
+  if (k == 0) {  // u*_0 = H^{-1}(pi/2), largest at a (horizon Step 12 (b))
+    signed_root(u, a, quadratic_number(1, 2));
+    return arb_le(u, at);
+  }
+  const quadratic_number ka = quadratic_number(k) * a.x, kb = quadratic_number(k) * b.x;
+  if (ka.floor() != kb.floor()) return false;  // k x passes an integer: mu_k takes every value
+  const quadratic_number nu_max = quadratic_number(1, 2) - ka.frac();  // mu_k(a)/pi, the largest on [a, b]
+  signed_root(u, nu_max.sign() >= 0 ? a : b, nu_max);
+  set_int(top, k);
+  arb_mul(top, top, pi_, prec_);
+  arb_add(top, top, u, prec_);
+  return arb_le(top, at);
+}
+
+bool band_arith::unreached_on(const big_int& k, const band_coupling& a, const band_coupling& b) const {
+  ball u, bottom, at;
+  alpha_T(at, b);  // the largest alpha_T on [a, b]
+  if (k < 0) return false;
+  if (k == 0) {
+    signed_root(u, b, quadratic_number(1, 2));
+    return arb_gt(u, at);
+  }
+  const quadratic_number ka = quadratic_number(k) * a.x, kb = quadratic_number(k) * b.x;
+  if (ka.floor() != kb.floor()) return false;
+  const quadratic_number nu_min = quadratic_number(1, 2) - kb.frac();  // mu_k(b)/pi, the least
+  signed_root(u, nu_min.sign() >= 0 ? b : a, nu_min);
+  set_int(bottom, k);
+  arb_mul(bottom, bottom, pi_, prec_);
+  arb_add(bottom, bottom, u, prec_);
+  return arb_gt(bottom, at);
+}
+
+// g = (pi k - u)(1 - x^2) - x^2 tan u over [a, b] (band-theorem.md item 2, Step 4): at least its
+// value at (x, u) = (b, u+), at most its value at (a, u-), with u+ >= every u of the interval,
+// u- <= every one. 1 - x^2 = 4/(n^2 + 4) exactly.
+bool band_arith::rising_increases(const big_int& k, const band_coupling& a, const band_coupling& b,
+                                  const quadratic_number& na, const quadratic_number& nb) const {
+  (void)na;
+  ball u, g, t, w;
+  signed_root(u, a, nb);
+  arb_get_ubound_arf(arb_midref(u.get()), u, prec_);
+  mag_zero(arb_radref(u.get()));
+  set_int(g, k);
+  arb_mul(g, g, pi_, prec_);
+  arb_sub(g, g, u, prec_);
+  set_rational(w, big_rational(4) / (b.spec.n2 + 4), prec_);
+  arb_mul(g, g, w, prec_);
+  arb_tan(t, u, prec_);
+  set_rational(w, b.spec.n2 / (b.spec.n2 + 4), prec_);
+  arb_mul(t, t, w, prec_);
+  arb_sub(g, g, t, prec_);
+  return arb_is_positive(g);
+}
+
+bool band_arith::rising_decreases(const big_int& k, const band_coupling& a, const band_coupling& b,
+                                  const quadratic_number& na, const quadratic_number& nb) const {
+  (void)nb;
+  ball u, g, t, w;
+  signed_root(u, b, na);
+  arb_get_lbound_arf(arb_midref(u.get()), u, prec_);
+  mag_zero(arb_radref(u.get()));
+  set_int(g, k);
+  arb_mul(g, g, pi_, prec_);
+  arb_sub(g, g, u, prec_);
+  set_rational(w, big_rational(4) / (a.spec.n2 + 4), prec_);
+  arb_mul(g, g, w, prec_);
+  arb_tan(t, u, prec_);
+  set_rational(w, a.spec.n2 / (a.spec.n2 + 4), prec_);
+  arb_mul(t, t, w, prec_);
+  arb_sub(g, g, t, prec_);
+  return arb_is_negative(g);
+}
+
+std::pair<big_rational, big_rational> band_arith::end_point_range(const band_coupling& a, const band_coupling& b) const {
+  // n over [a, b] as a ball from its ends' outward bounds; the mean value form about a rational
+  // middle, intersected with the direct enclosure.
+  ball na, nb, N, mid, R, dR, Rm, dRm, r, unit, spread, t;
+  set_rational(na, a.spec.n2, prec_);
+  arb_sqrt(na, na, prec_);
+  set_rational(nb, b.spec.n2, prec_);
+  arb_sqrt(nb, nb, prec_);
+  const big_rational lo = lower_rational(na, prec_), hi = upper_rational(nb, prec_);
+  arb_support::set_interval(N, lo, hi, prec_);
+  set_rational(t, T_.value, prec_);
+  if (T_.times_pi) arb_mul(t, t, pi_, prec_);
+  R_and_slope(R, dR, N, t, prec_);
+  set_rational(mid, (lo + hi) / 2, prec_);
+  R_and_slope(Rm, dRm, mid, t, prec_);
+  set_rational(r, (hi - lo) / 2, prec_);
+  arb_zero_pm_one(unit);
+  arb_mul(spread, dR, r, prec_);
+  arb_mul(spread, spread, unit, prec_);
+  arb_add(Rm, Rm, spread, prec_);
+  std::optional<big_rational> inf, sup;
+  for (const arb_srcptr v : {R.get(), Rm.get()}) {
+    if (!arb_is_finite(v)) continue;
+    const big_rational l = lower_rational(v, prec_), h = upper_rational(v, prec_);
+    if (!inf || l > *inf) inf = l;
+    if (!sup || h < *sup) sup = h;
+  }
+  if (!inf) throw precision_shortfall("the end point R(T) over an interval was not enclosed");
+  if (*inf < 0) inf = big_rational(0);
+  return {*inf, *sup};
+}
+
+std::pair<big_rational, big_rational> band_arith::minimum_at(const band_coupling& c, const stop_token& stop) const {
+  const unsigned digits = std::clamp<unsigned>(unsigned(prec_ / 4), 12, report_digits_max - 3);
+  const horizon_minimum_report h = prove_horizon_minimum(c.spec, T_, digits, stop);
+  return {parse_rational(h.h_min.enclosure.first, "h_min") * 2, parse_rational(h.h_min.enclosure.second, "h_min") * 2};
+}
+
+std::optional<std::pair<big_rational, big_rational>> band_arith::first_below_at(const band_coupling& c,
+                                                                                const big_rational& E,
+                                                                                const stop_token& stop) const {
+  const unsigned digits = std::clamp<unsigned>(unsigned(prec_ / 4), 12, report_digits_max - 3);
+  const first_below_report f = prove_first_below(c.spec, E, digits, stop);
+  if (f.never) return std::nullopt;
+  return std::pair{parse_rational(f.t_below.enclosure.first, "t"), parse_rational(f.t_below.enclosure.second, "t")};
+}
+
+std::pair<big_rational, big_rational> band_arith::middle_third(const band_coupling& a, const band_coupling& b) const {
+  ball xa, xb, w, p, q;
+  set_quadratic(xa, a.x, prec_);
+  set_quadratic(xb, b.x, prec_);
+  arb_sub(w, xb, xa, prec_);
+  arb_div_ui(w, w, 3, prec_);
+  arb_add(p, xa, w, prec_);
+  arb_sub(q, xb, w, prec_);
+  const big_rational lo = arb_support::arf_rational(arb_midref(p.get())), hi = arb_support::arf_rational(arb_midref(q.get()));
+  if (!(lo < hi)) throw precision_shortfall("an interval narrower than the precision");
+  return {lo, hi};
+}
+
+}  // namespace gyrores::band_detail
