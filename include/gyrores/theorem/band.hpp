@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/quadratic.hpp>
@@ -48,8 +49,30 @@ struct band_options {
   unsigned digits = 6;                 // the extremes are settled to this many digits, [1, report_digits_max]
   std::size_t max_intervals = 100000;  // a cap on the intervals of one branch and bound (then: not settled)
   std::optional<big_rational> versus;  // H_q: stop as soon as the extreme is proved on one side of it
+  bool record_cover = false;           // keep the final covering of the band (for a certificate)
   stop_token stop;                     // Ctrl-C: the search returns the bracket so far (interrupted)
   std::function<void(const band_progress&)> progress;  // called as the search goes (optional)
+};
+
+// One interval of the covering a search ends with (what a certificate states, band-theorem.md
+// item 4): its ends, which bound of item 4 it took and that bound (R units, upper for the
+// absorption guarantee, lower for the containment one).
+enum class band_bound_kind {
+  lobes,          // V_a(max F_K) over J (absorption), min(V_a(F_K(a)), V_b(F_K(b))) or 0 (containment)
+  line_falling,   // J clean for K, one falling line nu_k: V_a(f(a))
+  line_rising,    // J clean, one rising line nu_k with g > 0 proved: V_b(f(b))
+  line_turning,   // J clean, one rising line nu_k with g < 0 proved: V_a(nu_k(a))
+  line_unproved,  // J clean, one rising line: V_a(f(b))
+  end_point,      // the end point's range over J (absorption: its sup; containment: min with K - 1's lobes)
+};
+struct band_cover_interval {
+  band_coupling a, b;
+  band_bound_kind kind = band_bound_kind::lobes;
+  big_int K;                // the lobes 0..K the bound uses (absorption: K- of item 4; containment: K+)
+  big_int k;                // the line's lobe, for the line kinds
+  bool reached = false;     // absorption: K = k_c(a) because lobe k_c(a) is reached on J
+  bool unreached = false;   // containment: lobe k_c(b) not reached on J (K = k_c(b) - 1 and the end point)
+  big_rational bound;       // R units
 };
 
 // One extreme, W or B, in H_q units.
@@ -62,6 +85,7 @@ struct band_extreme {
   band_coupling at;              // the coupling whose own minimum is the attained end of `value`
   enclosure at_value;            // that minimum (H_q)
   std::size_t intervals = 0, couplings = 0;
+  std::vector<band_cover_interval> cover;  // with options.record_cover: the intervals that bound the rest, in order
 };
 
 // W and B over the band [n1, n2] and the horizon T > 0. usage_error unless 0 < n1 < n2 and T > 0.

@@ -4,8 +4,6 @@
 #include <arb.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <queue>
 #include <set>
 #include <vector>
@@ -59,6 +57,7 @@ struct interval {
   big_rational bound;               // upper (absorption) or lower (containment) bound of M, R units
   std::vector<fraction> splits;     // where the structure says to split (empty: split near the middle)
   std::size_t serial = 0;           // creation order: ties of the bound go to the older interval
+  band_cover_interval how;          // which bound of item 4, for a certificate
 };
 
 fraction fraction_of(const band_coupling& c) {
@@ -121,6 +120,7 @@ class search {
   interval absorption_bound(const band_coupling& a, const band_coupling& b);
   interval containment_bound(const band_coupling& a, const band_coupling& b);
   fraction middle(const interval& J) const;
+  void keep(const interval& J);  // into the final covering
   bool settled(const big_rational& lo, const big_rational& hi) const;
   band_extreme result(const big_rational& lo, const big_rational& hi, bool interrupted, const std::string& why) const;
 
@@ -130,6 +130,7 @@ class search {
   band_coupling ends_[2];
   std::size_t intervals_ = 0, couplings_ = 0, serial_ = 0;
   std::set<std::string> evaluated_;
+  std::vector<band_cover_interval> cover_;  // pruned intervals (with record_cover)
   // The best evaluated coupling: its minimum's enclosure (R units).
   bool have_ = false;
   big_rational best_lo_, best_hi_;
@@ -153,9 +154,10 @@ void search::evaluate(const band_coupling& c) {
 // Item 4 (upper): the lobes' bound V_a(max F_{K-}) or, on an interval without fractions of
 // denominator <= 2K-, the one line's monotone bound; and the end point's sup.
 interval search::absorption_bound(const band_coupling& a, const band_coupling& b) {
-  interval J{a, b, 0, {}, ++serial_};
+  interval J{a, b, 0, {}, ++serial_, {}};
   big_int K = arith_.cut_lobe(a) - 1;
-  if (arith_.reached_on(big_int(K + 1), a, b)) K += 1;
+  if (arith_.reached_on(big_int(K + 1), a, b)) K += 1, J.how.reached = true;
+  J.how.K = K;
   std::optional<big_rational> lobes;  // none: no admissible lobe on all of J (K = -1)
   if (K == 0) lobes = arith_.V_upper(a, quadratic_number(1, 2));
   else if (K >= 1) {
@@ -166,10 +168,11 @@ interval search::absorption_bound(const band_coupling& a, const band_coupling& b
       const fraction inner = simplest_in(a.x, b.x).simplest;
       const big_int k = min_distance_to_half(inner.value(), K).k;
       const quadratic_number na = distance_to_half(a.x, k), nb = distance_to_half(b.x, k);
-      if (!less_than(na, nb)) lobes = arith_.V_upper(a, fa);  // falling (or flat): decreasing composite
-      else if (arith_.rising_increases(k, a, b, na, nb)) lobes = arith_.V_upper(b, fb);
-      else if (arith_.rising_decreases(k, a, b, na, nb)) lobes = arith_.V_upper(a, na);
-      else lobes = arith_.V_upper(a, fb);
+      J.how.k = k;
+      if (!less_than(na, nb)) lobes = arith_.V_upper(a, fa), J.how.kind = band_bound_kind::line_falling;
+      else if (arith_.rising_increases(k, a, b, na, nb)) lobes = arith_.V_upper(b, fb), J.how.kind = band_bound_kind::line_rising;
+      else if (arith_.rising_decreases(k, a, b, na, nb)) lobes = arith_.V_upper(a, na), J.how.kind = band_bound_kind::line_turning;
+      else lobes = arith_.V_upper(a, fb), J.how.kind = band_bound_kind::line_unproved;
     } else {
       quadratic_number top = larger(fa, fb);
       const fraction odd = least_of_parity_in(a.x, b.x, 1);
@@ -179,6 +182,7 @@ interval search::absorption_bound(const band_coupling& a, const band_coupling& b
   }
   const big_rational end = arith_.end_point_range(a, b).second;
   J.bound = lobes && *lobes < end ? *lobes : end;
+  if (!(lobes && *lobes < end)) J.how.kind = band_bound_kind::end_point;
   return J;
 }
 
@@ -186,7 +190,7 @@ interval search::absorption_bound(const band_coupling& a, const band_coupling& b
 // their values at the two ends; or, when the cut lobe is not reached on J, the admissible lobes
 // against the end point's inf.
 interval search::containment_bound(const band_coupling& a, const band_coupling& b) {
-  interval J{a, b, 0, {}, ++serial_};
+  interval J{a, b, 0, {}, ++serial_, {}};
   const auto lobes_lower = [&](const big_int& K, std::vector<fraction>& splits) -> big_rational {
     if (K < 0) return big_rational(-1);  // no lobe: no bound from the lobes (the caller treats it)
     if (K == 0) return arith_.V_lower(b, quadratic_number(1, 2));
@@ -203,6 +207,7 @@ interval search::containment_bound(const band_coupling& a, const band_coupling& 
   std::vector<fraction> splits;
   big_rational bound = lobes_lower(kcb, splits);
   if (bound < 0) bound = 0;
+  J.how.K = kcb;
   if (arith_.unreached_on(kcb, a, b)) {  // then K_T <= k_c(b) - 1 on all of J (item 4)
     std::vector<fraction> inner;
     const big_rational lobes = lobes_lower(big_int(kcb - 1), inner);
@@ -211,6 +216,9 @@ interval search::containment_bound(const band_coupling& a, const band_coupling& 
     if (second > bound) {
       bound = second;
       splits = inner;
+      J.how.K = kcb - 1;
+      J.how.unreached = true;
+      J.how.kind = band_bound_kind::end_point;
     }
   }
   J.bound = bound;
@@ -237,8 +245,21 @@ bool search::settled(const big_rational& lo, const big_rational& hi) const {
   return e.rounded(opt_.digits).has_value();
 }
 
+void search::keep(const interval& J) {
+  band_cover_interval c = J.how;
+  c.a = J.a;
+  c.b = J.b;
+  c.bound = J.bound;
+  cover_.push_back(std::move(c));
+}
+
 band_extreme search::result(const big_rational& lo, const big_rational& hi, bool interrupted, const std::string& why) const {
   band_extreme r;
+  if (opt_.record_cover) {
+    r.cover = cover_;
+    std::sort(r.cover.begin(), r.cover.end(),
+              [](const band_cover_interval& u, const band_cover_interval& v) { return less_than(u.a.x, v.a.x); });
+  }
   r.value = band_detail::enclosure_of_rationals(lo / 2, hi / 2);
   r.settled = !interrupted && why.empty() && r.value.rounded(opt_.digits).has_value();
   r.interrupted = interrupted;
@@ -258,6 +279,10 @@ band_extreme search::run() {
   };
   std::priority_queue<interval, std::vector<interval>, decltype(cmp)> open(cmp);
   open.push(bound_of(ends_[0], ends_[1]));
+  const auto finish = [&](const big_rational& lo, const big_rational& hi, bool interrupted, const std::string& why) {
+    for (; opt_.record_cover && !open.empty(); open.pop()) keep(open.top());
+    return result(lo, hi, interrupted, why);
+  };
   for (;;) {
     // The extreme lies between the best evaluated coupling and the best remaining bound.
     const big_rational& top = open.top().bound;
@@ -268,22 +293,18 @@ band_extreme search::run() {
                       (lo / 2).convert_to<double>(), (hi / 2).convert_to<double>()};
       opt_.progress(p);
     }
-    if (!absorption() && best_hi_ == 0) return result(0, 0, false, "");  // an exact zero: B = 0
-    if (!opt_.versus && settled(lo, hi)) return result(lo, hi, false, "");
+    if (!absorption() && best_hi_ == 0) return finish(0, 0, false, "");  // an exact zero: B = 0
+    if (!opt_.versus && settled(lo, hi)) return finish(lo, hi, false, "");
     if (opt_.versus && (hi <= *opt_.versus * 2 || lo >= *opt_.versus * 2)) {
-      band_extreme r = result(lo, hi, false, "");
+      band_extreme r = finish(lo, hi, false, "");
       r.decided = true;
       return r;
     }
-    if (opt_.stop.requested()) return result(lo, hi, true, "");
+    if (opt_.stop.requested()) return finish(lo, hi, true, "");
     if (intervals_ >= opt_.max_intervals)
-      return result(lo, hi, false, "the search reached its cap of " + std::to_string(opt_.max_intervals) + " intervals");
+      return finish(lo, hi, false, "the search reached its cap of " + std::to_string(opt_.max_intervals) + " intervals");
     interval J = open.top();
     open.pop();
-    if (std::getenv("GYRORES_BAND_DEBUG"))
-      fprintf(stderr, "pop [%.17g, %.17g] (n2 %s .. %s) bound %.6g splits %zu kc %s %s\n", J.a.x.approx(), J.b.x.approx(),
-              rational_str(J.a.spec.n2).c_str(), rational_str(J.b.spec.n2).c_str(), J.bound.convert_to<double>(), J.splits.size(),
-              arith_.cut_lobe(J.a).str().c_str(), arith_.cut_lobe(J.b).str().c_str());
     // The structure's split points, and the middle when none of them lies in the middle third
     // (fractions of small denominators can crowd one end, e.g. the centres 1 - 1/(2k) as x -> 1:
     // splitting only there would advance one fraction at a time).
@@ -307,6 +328,7 @@ band_extreme search::run() {
       interval child = bound_of(cuts[i], cuts[i + 1]);
       // A child that cannot beat the best evaluated coupling is dropped (item 5).
       if (absorption() ? child.bound > best_lo_ : child.bound < best_hi_) open.push(std::move(child));
+      else if (opt_.record_cover) keep(child);
     }
     if (open.empty()) {
       // Every interval is beaten by the best coupling: its enclosure is the answer.
