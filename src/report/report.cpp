@@ -60,7 +60,7 @@ std::string write_report(const report_options& o) {
   progress_stage("7/8 the validation sweep");
   md << sweep_section(o.sweep_order);
   progress_stage("8/8 couplings");
-  md << coupling_section(c) << files_section(c.figs) << footer(t_start);
+  md << coupling_section(c) << band_section(c) << files_section(c.figs) << footer(t_start);
   write_file_atomically(c.dir / "REPORT.md", md.str());
   std::string out = (c.dir / "REPORT.md").string() + "\n";
   for (auto& n : c.figs.notes) out += "note: " + n + "\n";

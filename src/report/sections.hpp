@@ -76,6 +76,7 @@ std::string design_section(context& c);
 std::string pareto_section(context& c, std::int64_t max_order);
 std::string sweep_section(std::int64_t max_order);
 std::string coupling_section(context& c);
+std::string band_section(context& c);
 std::string files_section(const figure_set& figs);
 
 }  // namespace gyrores::report
