@@ -86,7 +86,7 @@ TEST_CASE("band: the guarantees enclose every sampled minimum and are attained, 
     check_against_samples(c);
 }
 
-TEST_CASE("band: random bands, relative widths 1e-6 to 50%, digits 6 to 30", "[band]") {
+TEST_CASE("band: random bands, relative widths 1e-6 to 50%, digits 6 to 30", "[band][random]") {
   std::mt19937_64 rng(20261129);
   std::uniform_real_distribution<double> log_n(-1.3, 1.1), log_w(-6, std::log10(0.5)), log_T(0, 3);
   std::uniform_int_distribution<unsigned> digits(6, 30);
@@ -252,4 +252,33 @@ TEST_CASE("band: the band-wide first time below a level encloses every sampled c
   const band_first_below never = prove_band_first_below(big_rational(19, 10), big_rational(21, 10), big_rational(1, 1000000));
   CHECK(never.never);
   CHECK(never.at.x == quadratic_number(5, 7));
+}
+
+TEST_CASE("band: each interval's bound (item 4) holds every sampled minimum of the interval", "[band]") {
+  // Intervals of x with rational ends across the couplings and horizons where each bound decides:
+  // wide ones (the peaks and centres of item 3), narrow ones (the lines of item 4), near x -> 1
+  // (a rising line's composite can turn there), short horizons (the end point decides).
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> den(20, 4000);
+  std::uniform_real_distribution<double> where(0.05, 0.98), frac(0.0005, 0.2);
+  int checked = 0;
+  for (const double T : {1.5, 4.0, 12.0, 60.0, 400.0}) {
+    for (int i = 0; i < 14; ++i) {
+      const int q = den(rng);
+      const int p1 = std::max(1, int(where(rng) * q)), p2 = std::min(q - 1, p1 + std::max(1, int(frac(rng) * q)));
+      if (p2 <= p1) continue;
+      const band_coupling a = band_coupling::of_x(p1, q), b = band_coupling::of_x(p2, q);
+      INFO("x in [" << p1 << "/" << q << ", " << p2 << "/" << q << "], T = " << T);
+      const horizon_time Tt(parse_rational(std::to_string(T), "T"));
+      const double upper = to_double(band_interval_bound(a, b, Tt, true).bound) / 2;
+      const double lower = to_double(band_interval_bound(a, b, Tt, false).bound) / 2;
+      for (double n : samples(n_of(a), n_of(b), 300)) {
+        const double m = reference::band_minimum(n, T);
+        CHECK(m <= upper * (1 + 1e-8) + 1e-300);
+        CHECK(m >= lower * (1 - 1e-8));
+      }
+      ++checked;
+    }
+  }
+  CHECK(checked >= 50);
 }

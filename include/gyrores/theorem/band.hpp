@@ -94,6 +94,12 @@ band_extreme prove_band_absorption(const big_rational& n1, const big_rational& n
 band_extreme prove_band_containment(const big_rational& n1, const big_rational& n2, const horizon_time& T,
                                     const band_options& opt = {});
 
+// The bound of band-theorem item 4 over one interval [a, b] (a < b, R = 2 H_q units): an upper
+// bound of M on it (absorption) or a lower bound (containment), and which bound it took. What the
+// searches compute for every interval; public for the tests of each proof step and for checkers.
+band_cover_interval band_interval_bound(const band_coupling& a, const band_coupling& b, const horizon_time& T,
+                                        bool absorption, unsigned digits = 6);
+
 // The latest first time H_q <= E over the band, in time units.
 struct band_first_below {
   big_rational level;            // E

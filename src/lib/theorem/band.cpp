@@ -104,11 +104,20 @@ enum class extreme { absorption, containment };
 
 class search {
  public:
-  search(const big_rational& n1, const big_rational& n2, const horizon_time& T, const band_options& opt, extreme which,
+  search(const band_coupling& x1, const band_coupling& x2, const horizon_time& T, const band_options& opt, extreme which,
          slong prec)
-      : arith_(T, prec), opt_(opt), which_(which), ends_{band_coupling::of_n(n1), band_coupling::of_n(n2)} {}
+      : arith_(T, prec), opt_(opt), which_(which), ends_{x1, x2} {}
 
   band_extreme run();
+  // Item 4's bound of one interval, with the kind it took.
+  band_cover_interval bound_only(const band_coupling& a, const band_coupling& b) {
+    const interval J = bound_of(a, b);
+    band_cover_interval c = J.how;
+    c.a = a;
+    c.b = b;
+    c.bound = J.bound;
+    return c;
+  }
 
  private:
   bool absorption() const { return which_ == extreme::absorption; }
@@ -371,7 +380,7 @@ band_extreme prove_extreme(const big_rational& n1, const big_rational& n2, const
                                     " guarantee",
                 [&](mpfr_prec_t bits, proof_status& status) -> std::optional<band_extreme> {
                   try {
-                    band_extreme r = search(n1, n2, T, opt, which, slong(bits)).run();
+                    band_extreme r = search(band_coupling::of_n(n1), band_coupling::of_n(n2), T, opt, which, slong(bits)).run();
                     if (r.settled || r.decided || r.interrupted || !r.unsettled_reason.empty()) return r;
                     status = proof_status::undecided("the bounds did not settle the rounding");
                   } catch (const precision_shortfall& e) {
@@ -459,7 +468,7 @@ void first_below_search(const big_rational& n1, const big_rational& n2, const bi
   // W(T) <= E decided at T; the search's witness raises the lower end when it is not.
   const auto drains_by = [&](const big_rational& T) {
     const slong bits = std::max(prec, start_bits(opt.digits, n2 * n2, horizon_time(T)));
-    band_extreme w = search(n1, n2, horizon_time(T), decide, extreme::absorption, bits).run();
+    band_extreme w = search(x1, x2, horizon_time(T), decide, extreme::absorption, bits).run();
     r.intervals += w.intervals;
     r.couplings += w.couplings;
     if (w.interrupted) throw interrupted();
@@ -518,6 +527,21 @@ band_first_below prove_band_first_below(const big_rational& n1, const big_ration
     r.settled = false;
     return r;
   }
+}
+
+band_cover_interval band_interval_bound(const band_coupling& a, const band_coupling& b, const horizon_time& T,
+                                        bool absorption, unsigned digits) {
+  band_options opt;
+  opt.digits = digits;
+  const extreme which = absorption ? extreme::absorption : extreme::containment;
+  const slong start = start_bits(digits, b.spec.n2, T);
+  for (slong prec = start; prec <= slong(tie_bits_cap(mpfr_prec_t(start))); prec *= 2) {
+    try {
+      return search(a, b, T, opt, which, prec).bound_only(a, b);
+    } catch (const precision_shortfall&) {
+    }
+  }
+  throw compute_error("band: an interval's bound was not decided within the precision cap");
 }
 
 band_extreme prove_band_absorption(const big_rational& n1, const big_rational& n2, const horizon_time& T,
