@@ -1,5 +1,5 @@
 // The verified-digits contract, which only the coupling report's horizon minimum still uses
-// (core/precision.hpp, core/verified_digits.hpp, design/coupling_report.hpp): the digits are
+// (core/precision.hpp, core/verified_digits.hpp, report/coupling_report.hpp): the digits are
 // checked against independent values, and the failure modes against their documented errors.
 #include <catch2/catch.hpp>
 
@@ -8,7 +8,7 @@
 
 #include "reference/precision.hpp"
 #include "reference/verified_digits.hpp"
-#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/report/coupling_report.hpp>
 #include <gyrores/gyrores.hpp>
 
 using namespace gyrores;

@@ -1,11 +1,11 @@
-// gyrores.pair and gyrores.asymptotics: the proved report of theorem/pair_report.hpp (prove_pair)
+// gyrores.pair and gyrores.asymptotics: the proved report of report/pair_report.hpp (prove_pair)
 // as the dict of `gyrores pair --json` (same keys, same order, reals as decimal strings, each the
 // correct rounding of a proved enclosure; gyrores/__init__.py converts them), with the
 // enclosures when asked, without the asymptotics when told (gyrores.pair computes them on
 // first access).
 #include <gyrores/app/pair.hpp>
 #include <gyrores/io/report_json.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "common.hpp"
 #include "interruptible.hpp"

@@ -10,7 +10,7 @@ pair_report run_pair(const pair_request& request) {
   if (!(request.qdot0 > 0)) throw usage_error("qdot0 must be > 0, got " + rational_str(request.qdot0));
   pair_report_options opt;
   opt.digits = request.digits;
-  opt.qdot0 = rational_str(request.qdot0);
+  opt.qdot0 = request.qdot0;
   opt.enclosures = request.enclosures;
   opt.asymptotics = request.asymptotics;
   opt.stop = request.stop;

@@ -7,7 +7,7 @@
 
 #include <gyrores/design/design.hpp>
 #include <gyrores/theorem/lobes.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 #include <gyrores/design/tolerance.hpp>
 #include <gyrores/io/json.hpp>
 

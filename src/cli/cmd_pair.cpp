@@ -1,5 +1,5 @@
 // gyrores pair TAU SIGMA [--digits D] [--qdot0 V] [--json] [--enclosures]
-// The report of theorem/pair_report.hpp (prove_pair), as text or JSON: every real the correct
+// The report of report/pair_report.hpp (prove_pair), as text or JSON: every real the correct
 // rounding of a proved enclosure.
 #include <sstream>
 
@@ -8,7 +8,7 @@
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/theorem/lobes.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "cli_options.hpp"
 #include "commands.hpp"

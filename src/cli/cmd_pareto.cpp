@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/json.hpp>
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/model/pair.hpp>

@@ -5,7 +5,7 @@
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/stop.hpp>
 #include <gyrores/model/pair.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 namespace gyrores::app {
 

@@ -3,7 +3,7 @@
 
 #include <gyrores/core/real.hpp>
 #include <gyrores/design/coupling.hpp>
-#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/report/coupling_report.hpp>
 #include <gyrores/design/figures.hpp>
 
 #include "report.hpp"
@@ -34,7 +34,7 @@ std::string figure1_section(context& c) {
   const auto p12 = coupling_resonant_pair(coupling_spec::from_n2(big_rational(1, 12)));
   const double span = 200 * real_pi<double>() / 2;
   // min of H_q over the paper's span [0, 200 pi/n] = [0, 100 pi], proved (the horizon theorem)
-  const auto h = prove_horizon_minimum(s2, horizon_time(big_rational(100), true), c.digits);
+  const auto h = report_horizon_minimum(s2, horizon_time(big_rational(100), true), c.digits);
   md << claims_table_head
      << "| n = 2 is not resonant (dense trajectory, Fig. 1a) | n^2 (n^2 + 4) = 32 is not a rational square: "
      << (p2 ? "resonant" : "not resonant") << " | " << verdict(!p2) << " |\n"

@@ -17,13 +17,13 @@
 
 #include "../core/ball.hpp"
 #include "band_envelope.hpp"
-#include "lobe_balls.hpp"
+#include "kernels_arb.hpp"
 
 namespace gyrores {
 namespace {
 
 using namespace arb_support;
-using namespace lobe_balls;
+using namespace kernels_arb;
 using band_detail::envelope_bound;
 using band_detail::envelope_max;
 
@@ -69,9 +69,9 @@ bool H_inverse(arb_t out, const arb_t x, const arb_t c, slong p) {
   arb_mul_2exp_si(half_pi, half_pi, -1);
   arb_set_d(u, (lo + hi) / 2);
   for (int i = 0; i < 6; ++i) {  // Newton on midpoints: 53 bits doubles each step
-    H_of(h, x, u, p);
+    H(h, x, u, p);
     arb_sub(h, h, c, p);
-    dH_of(d, x, u, p);
+    dH(d, x, u, p);
     arb_get_mid_arb(h, h);
     arb_get_mid_arb(d, d);
     arb_div(step, h, d, p);
@@ -81,7 +81,7 @@ bool H_inverse(arb_t out, const arb_t x, const arb_t c, slong p) {
   // eps: the rounding left, plus the width of c over the slope (>= 2x).
   ball eps, slope;
   arb_get_rad_arb(eps, c);
-  dH_of(slope, x, u, p);
+  dH(slope, x, u, p);
   arb_get_mid_arb(slope, slope);
   arb_div(eps, eps, slope, p);
   arb_mul_2exp_si(eps, eps, 1);
@@ -100,8 +100,8 @@ bool H_inverse(arb_t out, const arb_t x, const arb_t c, slong p) {
     arb_neg(neg_half_pi, half_pi);
     if (arb_lt(a, neg_half_pi)) arb_set(a, neg_half_pi);
     if (arb_gt(b, half_pi)) arb_set(b, half_pi);
-    H_of(ha, x, a, p);
-    H_of(hb, x, b, p);
+    H(ha, x, a, p);
+    H(hb, x, b, p);
     if (arb_lt(ha, c) && arb_gt(hb, c)) {
       arb_union(out, a, b, p);
       return true;
@@ -262,7 +262,7 @@ struct band_ctx {
     arb_mul_2exp_si(half_pi, pi, -1);
     if (arb_gt(u, half_pi)) arb_set(u, half_pi);
     set_interval(xs, ylo, yhi, prec);
-    G_of(g, xs, u, prec);
+    G(g, xs, u, prec);
     if (!arb_is_finite(g)) return std::nullopt;
     return upper_rational(g, prec);
   }
@@ -281,7 +281,7 @@ struct band_ctx {
     arf_clear(b);
     if (!arb_is_positive(u)) return 0;
     set_interval(xs, ylo, yhi, prec);
-    G_of(g, xs, u, prec);
+    G(g, xs, u, prec);
     if (!arb_is_finite(g)) return 0;
     const big_rational r = lower_rational(g, prec);
     return r > 0 ? r : big_rational(0);
@@ -422,6 +422,19 @@ struct band_ctx {
 // The zero of lobe k is at t = pi k sqrt(1 - x^2) >= pi k sqrt(1 - x2^2), so no k beyond
 // T/(pi sqrt(1 - x2^2)) can have one; the scan ends there, or earlier at the first hit: when that
 // bound is large, some k <= 1/(x2 - x1) + 1 holds an odd o in [2k x1, 2k x2] and its zero is early.
+// The first zero of H_q of a degenerate coupling, as reported at 12 digits (the horizon theorem's
+// first time below 0: the pair's t_first).
+proved_real first_zero(const coupling_spec& c) {
+  proved_real t;
+  prove_first_below(c, 0, {12, [&t](const first_below_proof& p) {
+                             auto r = p.t_below.report(12);
+                             if (!r) return proof_status::undecided("the rounding of the first zero");
+                             t = std::move(*r);
+                             return proof_status::proved();
+                           }});
+  return t;
+}
+
 std::optional<band_degenerate> find_degenerate(const big_rational& n1, const big_rational& n2, const horizon_time& T,
                                                const stop_token& stop) {
   const quadratic_number x1 = coupling_rotation_number(coupling_spec::from_n(n1)),
@@ -451,7 +464,7 @@ std::optional<band_degenerate> find_degenerate(const big_rational& n1, const big
         const big_rational n2_exact(4 * o * o, r2);
         const auto pair = coupling_resonant_pair(coupling_spec::from_n2(n2_exact));
         if (!pair) throw compute_error("band: x = " + o.str() + "/" + std::to_string(2 * k) + " gave no pair");
-        return band_degenerate{n2_exact, *pair, prove_pair_values(*pair, 12).t_first};
+        return band_degenerate{n2_exact, *pair, first_zero(coupling_spec::from_n2(n2_exact))};
       }
     }
   }
@@ -474,8 +487,14 @@ big_rational lipschitz_bound(const band_ctx& ctx, const big_rational& n1, const 
 
 // M(n) as a proved enclosure of R = 2 H_q (the horizon theorem at an exact rational n).
 std::pair<big_rational, big_rational> minimum_at(const big_rational& n, const horizon_time& T, const stop_token& stop) {
-  const horizon_minimum_report r = prove_horizon_minimum(coupling_spec::from_n(n), T, 17, stop);
-  return {parse_rational(r.h_min.enclosure.first, "h") * 2, parse_rational(r.h_min.enclosure.second, "h") * 2};
+  // (Proved until its minimum, first time and radius round to 17 digits, and its ends rounded
+  // outward to 20 digits: the band's search, and so its outputs, as before the one-core refactor.)
+  const auto decided = [](const horizon_minimum_proof& p) {
+    return p.h_min.rounded(17) && p.t_min.rounded(17) && p.r_min.rounded(17) ? proof_status::proved()
+                                                                              : proof_status::undecided("a rounding");
+  };
+  const auto [lo, hi] = prove_horizon_minimum(coupling_spec::from_n(n), T, {17, decided}, proof_use::report, stop).h_min.outward_rationals(20);
+  return {lo * 2, hi * 2};
 }
 
 // A rational n in [na, nb] near n(x) = 2x/sqrt(1 - x^2).
