@@ -119,10 +119,10 @@ TEST_CASE("the coupling request certifies the proofs its report rounded", "[cert
   for (const auto& [n, T] : std::vector<std::pair<std::string, std::string>>{{"2", "37"}, {"2", "2.2"}, {"0.31", "1e20"}}) {
     app::coupling_request request;
     request.spec = coupling_spec::from_n(parse_rational(n, "n"));
-    request.horizon = horizon_time(parse_rational(T, "T"));
-    request.below = big_rational(1, 1000000);
-    request.digits = 15;
-    request.convergents = 0;
+    request.options.horizon = horizon_time(parse_rational(T, "T"));
+    request.options.below = big_rational(1, 1000000);
+    request.options.digits = 15;
+    request.options.convergents = 0;
     request.certificate = true;
     const app::coupling_result r = app::run_coupling(request);
     INFO("n = " << n << ", T = " << T);
@@ -145,15 +145,15 @@ TEST_CASE("certificates the format cannot state are refused, before any work or 
   app::coupling_request request;
   request.spec = coupling_spec::from_n(big_rational(2));
   request.certificate = true;
-  request.horizon = horizon_time(big_rational(100), true);  // 100 pi: the report accepts it
+  request.options.horizon = horizon_time(big_rational(100), true);  // 100 pi: the report accepts it
   CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("multiple of pi"));
-  request.horizon = horizon_time(big_rational(0));
+  request.options.horizon = horizon_time(big_rational(0));
   CHECK_THROWS_AS(app::run_coupling(request), usage_error);
   // A coupling so small that its lobe roots lie within 10^-27 of pi/2: the report answers, the
   // certificate is refused at once (compute_error naming why), not after a long refinement.
   request.spec = coupling_spec::from_n(parse_rational("1e-20", "n"));
-  request.horizon = horizon_time(big_rational(100));
-  request.convergents = 0;
+  request.options.horizon = horizon_time(big_rational(100));
+  request.options.convergents = 0;
   CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("pi/2"));
   request.certificate = false;
   CHECK_NOTHROW(app::run_coupling(request));

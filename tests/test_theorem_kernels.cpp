@@ -102,25 +102,6 @@ template <class F> void bisect(big_float& root, big_float& lo, big_float& hi, F&
   mpfr_div_2ui(root, root, 1, MPFR_RNDN);
 }
 
-// u* of x u + atan(x tan u) = pi m/(2a) on (0, pi/2).
-void theorem_root_reference(big_float& u, const resonant_pair<big_int>& p, const big_int& m) {
-  const mpfr_prec_t bits = mpfr_get_prec(u);
-  big_float x(bits), mu(bits), lo(bits), hi(bits), t(bits), h(bits);
-  x_of(x, p);
-  pi_ratio(mu, m, p.order());
-  mpfr_set_ui(lo, 0, MPFR_RNDN);
-  mpfr_const_pi(hi, MPFR_RNDD);
-  mpfr_div_2ui(hi, hi, 1, MPFR_RNDD);
-  bisect(u, lo, hi, [&](mpfr_srcptr v) {
-    mpfr_tan(t, v, MPFR_RNDN);
-    mpfr_mul(t, t, x, MPFR_RNDN);
-    mpfr_atan(t, t, MPFR_RNDN);
-    mpfr_mul(h, x, v, MPFR_RNDN);
-    mpfr_add(h, h, t, MPFR_RNDN);
-    return mpfr_cmp(h, mu);
-  });
-}
-
 // The root of x u + atan(x tan u) = mu on (0, pi/2), x and mu given (any coupling).
 void coupling_root_reference(big_float& u, mpfr_srcptr x, mpfr_srcptr mu) {
   const mpfr_prec_t bits = mpfr_get_prec(u);
@@ -136,6 +117,15 @@ void coupling_root_reference(big_float& u, mpfr_srcptr x, mpfr_srcptr mu) {
     mpfr_add(h, h, t, MPFR_RNDN);
     return mpfr_cmp(h, mu);
   });
+}
+
+// u* of x u + atan(x tan u) = pi m/(2a) on (0, pi/2).
+void theorem_root_reference(big_float& u, const resonant_pair<big_int>& p, const big_int& m) {
+  const mpfr_prec_t bits = mpfr_get_prec(u);
+  big_float x(bits), mu(bits);
+  x_of(x, p);
+  pi_ratio(mu, m, p.order());
+  coupling_root_reference(u, x, mu);
 }
 
 // The root of u + tan u = pi m/(2b) on (-pi/2, pi/2).

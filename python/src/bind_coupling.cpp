@@ -57,14 +57,15 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   if (!band_alone && n.is_none() == n2.is_none())
     throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
   app::coupling_request request;
-  request.digits = checked_digits(digits, 1, report_digits_max);
+  coupling_report_options& opt = request.options;
+  opt.digits = checked_digits(digits, 1, report_digits_max);
   if (convergents < 0 || convergents > std::int64_t(app::coupling_convergents_max))
     throw usage_error("convergents must be in [0, " + std::to_string(app::coupling_convergents_max) + "]");
-  request.convergents = std::size_t(convergents);
-  request.horizon = horizon_of(horizon, "horizon");
+  opt.convergents = std::size_t(convergents);
+  opt.horizon = horizon_of(horizon, "horizon");
   if (!below.is_none()) {
     if (band_alone) throw usage_error("below needs the coupling n or n2 (a band alone has no first time below)");
-    request.below = level_of(below.cast<std::string>());
+    opt.below = level_of(below.cast<std::string>());
   }
   if (!band_alone) request.spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
   const auto ends = band_of(n, band, tolerance);
@@ -79,15 +80,15 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point.
   const coupling_and_band r = run_interruptible<coupling_and_band>([band_alone, request, ends, bo](stop_token stop) mutable {
     coupling_and_band out;
-    request.stop = bo.stop = stop;
+    request.options.stop = bo.stop = stop;
     if (!band_alone) out.report = app::run_coupling(request).report;
-    if (ends) out.band = prove_band(ends->first, ends->second, request.horizon, bo);
+    if (ends) out.band = prove_band(ends->first, ends->second, request.options.horizon, bo);
     return out;
   });
   if (band_alone)
     return to_python(json{{"horizon", horizon}, {"theorem", horizon_theorem_id}, {"band", band_report_json(*r.band)}});
   const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
-  json j = coupling_report_json(input, horizon, request.digits, *r.report);
+  json j = coupling_report_json(input, horizon, request.options.digits, *r.report);
   if (r.band) j["band"] = band_report_json(*r.band);
   return to_python(j);
 }

@@ -15,13 +15,13 @@ namespace {
 
 pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures,
                      bool asymptotics = true) {
-  app::pair_request request{p};
-  request.enclosures = enclosures;
-  request.asymptotics = asymptotics;
-  request.digits = checked_digits(digits, 1, report_digits_max);
-  request.qdot0 = parse_rational(qdot0, "qdot0");
+  app::pair_request request{p, {}};
+  request.options.enclosures = enclosures;
+  request.options.asymptotics = asymptotics;
+  request.options.digits = checked_digits(digits, 1, report_digits_max);
+  request.options.qdot0 = parse_rational(qdot0, "qdot0");
   return run_interruptible<pair_report>([request](stop_token stop) mutable {
-    request.stop = stop;
+    request.options.stop = stop;
     return app::run_pair(request);
   });
 }

@@ -8,24 +8,17 @@
 namespace gyrores::app {
 
 coupling_result run_coupling(const coupling_request& request) {
-  check_report_digits(request.digits);
-  if (request.convergents > coupling_convergents_max)
+  coupling_report_options opt = request.options;
+  if (opt.convergents > coupling_convergents_max)
     throw usage_error("convergents must be in [0, " + std::to_string(coupling_convergents_max) + "], got " +
-                      std::to_string(request.convergents));
-  if (request.certificate) check_certificate_horizon(request.horizon);
-  coupling_report_options opt;
-  opt.digits = request.digits;
-  opt.horizon = request.horizon;
-  opt.below = request.below;
-  opt.convergents = request.convergents;
-  opt.stop = request.stop;
+                      std::to_string(opt.convergents));
+  if (request.certificate) check_certificate_horizon(opt.horizon);
   opt.use = request.certificate ? proof_use::certificate : proof_use::report;
   coupling_result out{analyse_coupling(request.spec, opt), std::nullopt};
-  if (request.certificate) {
-    const coupling_report& r = out.report;
-    out.certificate = horizon_certificate_of(request.spec, r.horizon.proof, request.digits);
-    if (r.below) out.certificate->below = below_certificate_of(request.spec, r.below->proof, request.digits);
-  }
+  if (!request.certificate) return out;
+  const coupling_report& r = out.report;
+  out.certificate = horizon_certificate_of(request.spec, r.horizon.proof, opt.digits);
+  if (r.below) out.certificate->below = below_certificate_of(request.spec, r.below->proof, opt.digits);
   return out;
 }
 

@@ -36,7 +36,7 @@ command_runner install_certify(CLI::App& app) {
   auto a = std::make_shared<certify_args>();
   auto sub = options(app).subcommand("certify", "Interval certificate of r_res, theta_first and t_first (qdot0 = 1)");
   add_pair_arguments(sub, a->tau, a->sigma);
-  add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1..10000)");
+  add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1.." + std::to_string(report_digits_max) + ")");
   sub.add("--out", a->out, "write the certificate to FILE (atomically) instead of stdout");
   return [a] { return run_certify(*a); };
 }

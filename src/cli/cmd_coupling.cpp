@@ -187,20 +187,21 @@ std::string run_coupling(const coupling_args& a) {
   check_flag_range(a.convergents, 0, std::int64_t(app::coupling_convergents_max), "--convergents");
   app::coupling_request request;
   request.spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2")) : coupling_spec::from_n(parse_rational(a.n, "N"));
-  request.horizon = parse_horizon_time(a.horizon, "--horizon");
-  if (!a.below.empty()) request.below = parse_energy_level(a.below, "--below");
-  request.digits = unsigned(a.digits);
-  request.convergents = std::size_t(a.convergents);
+  coupling_report_options& opt = request.options;
+  opt.horizon = parse_horizon_time(a.horizon, "--horizon");
+  if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below");
+  opt.digits = unsigned(a.digits);
+  opt.convergents = std::size_t(a.convergents);
   request.certificate = !a.certificate.empty();
   if (request.certificate) {  // before the work
     check_output_path(a.certificate);
-    check_certificate_horizon(request.horizon);
+    check_certificate_horizon(opt.horizon);
   }
   const app::coupling_result result = app::run_coupling(request);
   const coupling_report& r = result.report;
   if (result.certificate) write_file_atomically(a.certificate, coupling_certificate_text(*result.certificate));
   std::optional<band_report> b;
-  if (band) b = run_band(a, *band, request.horizon);
+  if (band) b = run_band(a, *band, opt.horizon);
   if (!a.json) return coupling_text(a, r) + (b ? band_text(a, *b) : "");
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);

@@ -25,12 +25,8 @@ inline constexpr std::size_t coupling_convergents_max = 60;
 
 struct coupling_request {
   coupling_spec spec;
-  unsigned digits = 12;                      // [1, report_digits_max]
-  horizon_time horizon{big_rational(100)};   // T >= 0
-  std::optional<big_rational> below;         // a level E >= 0: the first time H_q <= E
-  std::size_t convergents = 8;               // [0, coupling_convergents_max]
-  bool certificate = false;                  // also the certificate (T a rational > 0)
-  stop_token stop;
+  coupling_report_options options;  // digits, horizon, below, convergents (<= coupling_convergents_max), stop
+  bool certificate = false;         // also the certificate (T a rational > 0)
 };
 
 struct coupling_result {

@@ -72,7 +72,6 @@ class enclosure {
   mpfr_srcptr lo() const { return lo_; }
   mpfr_srcptr hi() const { return hi_; }
   bool is_exact() const { return exact_.has_value(); }
-  const std::optional<big_rational>& exact_value() const { return exact_; }
 
   std::optional<std::string> rounded(unsigned digits) const;
   std::optional<double> nearest_double() const;

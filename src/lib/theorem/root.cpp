@@ -684,22 +684,30 @@ proof_status prove_theorem_bracket(const theorem_constants& K, const root_enclos
 
 namespace {
 
-// Step 2 about the ladder's point (prove_theorem_root): r.U, r.T, r.lo, r.hi, and then, when
-// asked, the decimal ends (r.decimals, U and T over them). These lie beyond the proved binary
-// ends, and H increases on (0, pi/2) (proofs/lattice-theorem.md, Step A), so they are brackets
-// too wherever they stay in (0, pi/2): a root within a decimal unit of pi/2 has none.
+// Step 2 about the ladder's point (prove_theorem_root): r.U, r.T, r.lo, r.hi, and when asked
+// the decimal ends (r.decimals, U and T over them), which lie beyond the binary ends. First the
+// bracket of the decimals (it holds the binary ends); if the mean value form over them is too
+// coarse, the binary ends, and then the decimals are brackets too wherever they stay in
+// (0, pi/2), H being increasing there (proofs/lattice-theorem.md, Step A): a root within a
+// decimal unit of pi/2 has none.
 proof_status bracket_about_point(root_enclosure& r, const theorem_constants& K, unsigned decimal_digits) {
-  iv LO(K.prec), HI(K.prec);
+  iv LO(K.prec), HI(K.prec), DLO(K.prec), DHI(K.prec), T(K.prec), flo(K.prec), fhi(K.prec);
   r.decimals = 0;
   bracket_ends(LO, HI, r);
+  if (decimal_digits > 0) {
+    decimal_ends(DLO, DHI, r, decimal_digits);
+    if (prove_theorem_bracket(K, r, DLO, DHI, r.T)) {
+      mpfi_union(r.U, DLO, DHI);
+      r.decimals = decimal_digits;
+      return proof_status::proved();
+    }
+  }
   GYRORES_TRY_PROOF(prove_theorem_bracket(K, r, LO, HI, r.T));
   mpfi_union(r.U, LO, HI);
-  if (decimal_digits == 0) return proof_status::proved();
-  iv T(K.prec), flo(K.prec), fhi(K.prec);
-  decimal_ends(LO, HI, r, decimal_digits);
-  if (!in_domain(K, LO, HI) || !mean_value_ends(K, r, true, LO, HI, flo, fhi, T)) return proof_status::proved();
+  if (decimal_digits == 0 || !in_domain(K, DLO, DHI) || !mean_value_ends(K, r, true, DLO, DHI, flo, fhi, T))
+    return proof_status::proved();
   mpfi_set(r.T, T);
-  mpfi_union(r.U, LO, HI);
+  mpfi_union(r.U, DLO, DHI);
   r.decimals = decimal_digits;
   return proof_status::proved();
 }
