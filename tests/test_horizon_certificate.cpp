@@ -157,6 +157,14 @@ TEST_CASE("certificates the format cannot state are refused, before any work or 
   CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("pi/2"));
   request.certificate = false;
   CHECK_NOTHROW(app::run_coupling(request));
+  // x = 1 - 2 10^-30: near delta the lobes' ||k x - 1/2|| lie 2 10^-30 apart, closer than a unit
+  // of delta's 27th digit, so no decimal of delta decides the first lobe below E = 10^-40.
+  request.spec = coupling_spec::from_n(parse_rational("1e15", "n"));
+  request.options.horizon = horizon_time(big_rational(1000));
+  request.options.below = parse_rational("1e-40", "E");
+  CHECK_NOTHROW(app::run_coupling(request));
+  request.certificate = true;
+  CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("delta"));
 }
 
 namespace {

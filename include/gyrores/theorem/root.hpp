@@ -83,9 +83,9 @@ double paper_root_double(double s);
 
 // ---- enclosures at an explicit precision ----
 
-// The coupling's constants as intervals at one precision: x, x^2, sqrt(1 - x^2), pi; for a pair
-// also a, b (x = b/a), sqrt(tau sigma) and the integers a, b (ratio = true: the solver multiplies
-// by the integers, O(prec) each, where an interval x would cost a full product).
+// The constants as intervals at one precision: a pair's a, b (x = b/a), x, x^2, sqrt(1 - x^2),
+// sqrt(tau sigma), pi and the integers a, b (ratio = true: the solver multiplies by the integers,
+// O(prec) each, where an interval x would cost a full product); any coupling's x and pi only.
 struct theorem_constants {
   explicit theorem_constants(mpfr_prec_t p) : prec(p), a(p), b(p), x(p), x2(p), s1mx2(p), sqrt_ts(p), pi(p) {}
   mpfr_prec_t prec;
@@ -95,7 +95,7 @@ struct theorem_constants {
   bool ratio = false;  // x = bi/ai exactly
 };
 void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p);
-// Any coupling: x an interval in (0, 1) holding the exact x (a, b, sqrt_ts unset).
+// Any coupling: x an interval in (0, 1) holding the exact x (for the solver: the rest unset).
 void set_theorem_constants(theorem_constants& K, const fixed_mpfi& x);
 
 // An enclosure of a root: U holds it, T = tan(U). `centre` is the last centre of the ladder,

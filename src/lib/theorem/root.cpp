@@ -91,13 +91,6 @@ void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p
 
 void set_theorem_constants(theorem_constants& K, const iv& x) {
   mpfi_set(K.x, x);
-  mpfi_sqr(K.x2, x);
-  // sqrt((1 - x)(1 + x)): no rounding of x^2 next to 1 (x up to 1 - 10^-30)
-  iv t(K.prec);
-  mpfi_ui_sub(K.s1mx2, 1, x);
-  mpfi_add_ui(t, x, 1);
-  mpfi_mul(K.s1mx2, K.s1mx2, t);
-  mpfi_sqrt(K.s1mx2, K.s1mx2);
   mpfi_const_pi(K.pi);
   K.ratio = false;
 }
