@@ -141,6 +141,17 @@ TEST_CASE("the coupling request certifies the proofs its report rounded", "[cert
   }
 }
 
+TEST_CASE("a certificate is written only from a proof made for it, at its digits", "[certificate][horizon]") {
+  const auto c = coupling_spec::from_n(big_rational(2));
+  const horizon_time T(big_rational(37));
+  const auto for_report = prove_horizon_minimum(c, T, {20, {}}, proof_use::report);
+  CHECK_THROWS_AS(horizon_certificate_of(c, for_report, 20), compute_error);  // its decimals are not proved
+  const auto for_certificate = prove_horizon_minimum(c, T, {12, {}}, proof_use::certificate);
+  CHECK_THROWS_AS(horizon_certificate_of(c, for_certificate, 20), compute_error);  // made for 12 digits
+  CHECK(gyrores_checker::check_coupling_certificate(coupling_certificate_text(horizon_certificate_of(c, for_certificate, 12)))
+            .status == 0);
+}
+
 TEST_CASE("certificates the format cannot state are refused, before any work or at once", "[certificate][horizon]") {
   app::coupling_request request;
   request.spec = coupling_spec::from_n(big_rational(2));

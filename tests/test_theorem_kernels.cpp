@@ -18,6 +18,7 @@
 #include <catch2/catch.hpp>
 
 #include <gyrores/core/decimal.hpp>
+#include <gyrores/core/rational.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/theorem/root.hpp>
 

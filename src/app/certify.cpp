@@ -1,6 +1,7 @@
 // include/gyrores/app/certify.hpp
 #include <gyrores/app/certify.hpp>
 
+#include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/certificate_json.hpp>
 

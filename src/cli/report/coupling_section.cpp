@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include <gyrores/model/coupling.hpp>
-#include <gyrores/theorem/horizon.hpp>
+#include <gyrores/report/horizon_report.hpp>
 
 #include "../gnuplot.hpp"
 #include "report.hpp"
