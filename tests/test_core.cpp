@@ -1,6 +1,7 @@
 // The core layer's text and precision helpers (core/real.hpp, core/decimal.hpp,
-// core/rational.hpp): binary <-> decimal precision against independently computed values,
-// correctly rounded scientific output in every direction, exact parsing of decimals.
+// core/rational.hpp, core/enclosure.hpp): binary <-> decimal precision against independently
+// computed values, correctly rounded scientific output in every direction, exact parsing of
+// decimals, an enclosure's outward decimals.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include <gyrores/core/decimal.hpp>
+#include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/real.hpp>
 
@@ -137,4 +139,40 @@ TEST_CASE("decimal input: integers and exact rationals", "[core][decimal]") {
   CHECK(gyrores::int_is_square(gyrores::big_int(1600), root));
   CHECK(root == 40);
   CHECK_FALSE(gyrores::int_is_square(gyrores::big_int(32), root));
+}
+
+TEST_CASE("enclosure: outward decimals as text and as exact rationals agree", "[core][enclosure]") {
+  // outward() formats the binary ends by MPFR-based directed digits; outward_rationals() rounds
+  // their exact rationals in integers: two ways to one value, which must also bracket the ends.
+  using namespace gyrores;
+  std::mt19937_64 rng(33);
+  for (int i = 0; i < 400; ++i) {
+    const mpfr_prec_t prec = 53 + mpfr_prec_t(rng() % 300);
+    exact_binary lo(prec), hi(prec);
+    std::uniform_real_distribution<double> mant(0.5, 1.0);
+    const long e2 = long(rng() % 400) - 200;
+    mpfr_set_d(lo.get(), mant(rng), MPFR_RNDN);
+    mpfr_mul_2si(lo.get(), lo, e2, MPFR_RNDN);
+    if (i % 7 == 0) mpfr_neg(lo.get(), lo, MPFR_RNDN);
+    mpfr_set(hi.get(), lo, MPFR_RNDN);
+    mpfr_mul_d(hi.get(), hi, i % 7 == 0 ? 0.9999 : 1.0001, MPFR_RNDU);
+    const enclosure e(lo, hi);
+    const unsigned digits = 1 + unsigned(rng() % 40);
+    const auto text = e.outward(digits);
+    const auto [qlo, qhi] = e.outward_rationals(digits);
+    INFO(text.first << " " << text.second << " at " << digits);
+    CHECK(qlo == parse_rational(text.first, "lo"));
+    CHECK(qhi == parse_rational(text.second, "hi"));
+    CHECK(qlo <= e.lo_rational());
+    CHECK(e.hi_rational() <= qhi);
+  }
+  // Exact rationals: their own decimal when it has at most D digits, else outward.
+  CHECK(enclosure::exact(big_rational(3, 10)).outward(5) == std::pair<std::string, std::string>{"3.0000e-01", "3.0000e-01"});
+  CHECK(enclosure::exact(big_rational(1, 3)).outward(5) == std::pair<std::string, std::string>{"3.3333e-01", "3.3334e-01"});
+  CHECK(enclosure::exact(big_rational(-1, 3)).outward_rationals(2) ==
+        std::pair<big_rational, big_rational>{big_rational(-34, 100), big_rational(-33, 100)});
+  CHECK(enclosure::exact(big_rational(3, 10)).outward_rationals(5) ==
+        std::pair<big_rational, big_rational>{big_rational(3, 10), big_rational(3, 10)});
+  CHECK(enclosure::exact(big_rational(1, 3)).report(3)->value == "3.33e-01");
+  CHECK(enclosure().report(4)->enclosure == std::pair<std::string, std::string>{"0.000000e+00", "0.000000e+00"});
 }

@@ -18,7 +18,9 @@ TEST_CASE("gyrores check dispatches coupling certificates to their checker", "[c
   if (!test::cli_available()) return;
   test::temp_dir dir("coupling_certificate");
   const auto c = coupling_spec::from_n2(4);
-  const std::string text = coupling_certificate_text(c, 37, big_rational(1, 1000000), 15);
+  horizon_certificate cert = certify_horizon_minimum(c, 37, 15);
+  cert.below = certify_first_below(c, big_rational(1, 1000000), 15);
+  const std::string text = coupling_certificate_text(cert);
   const std::string good = dir / "good.json", bad = dir / "bad.json", broken = dir / "broken.json",
                     lattice = dir / "lattice.json";
   std::ofstream(good) << text;

@@ -3,7 +3,7 @@
 // contract left the tests, this case lived in tests/test_verified.cpp.)
 #include <catch2/catch.hpp>
 
-#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/report/coupling_report.hpp>
 #include <gyrores/gyrores.hpp>
 
 using namespace gyrores;

@@ -59,10 +59,10 @@ TEST_CASE("horizon: minimum and first time equal the critical-point scan (T <= 4
     if (w1 * T.convert_to<double>() > 60000) continue;  // the scan costs O(T W1)
     ++ran;
     INFO("n^2 = " << rational_str(c.n2) << ", T = " << rational_str(T));
-    const horizon_minimum_report r = prove_horizon_minimum(c, T, 17);
+    const horizon_minimum_report r = report_horizon_minimum(c, T, 17);
     const scanned s = scan(c, T);
-    CHECK(r.at_horizon_end == s.at_end);
-    at_end += r.at_horizon_end;
+    CHECK(r.proof.at_horizon_end == s.at_end);
+    at_end += r.proof.at_horizon_end;
     CHECK(same_rounding(s.h, r.h_min.value, 17, undecidable));
     CHECK(same_rounding(s.t, r.t_min.value, 17, undecidable));
     // The enclosures hold the reference.
@@ -80,11 +80,11 @@ TEST_CASE("horizon: a resonant coupling over a whole period gives the pair's H_m
     const coupling_spec c = coupling_spec::from_n2(big_rational((tau - sigma) * (tau - sigma), tau * sigma));
     const pair_report pr = prove_pair_values(p, 25);
     const big_rational T = parse_rational(pr.t_first.value, "t") * 3 + 1;
-    const horizon_minimum_report r = prove_horizon_minimum(c, T, 25);
+    const horizon_minimum_report r = report_horizon_minimum(c, T, 25);
     INFO(p.str());
     CHECK(r.h_min.value == pr.h_min.value);
     CHECK(r.t_min.value == pr.t_first.value);
-    CHECK_FALSE(r.at_horizon_end);
+    CHECK_FALSE(r.proof.at_horizon_end);
   }
 }
 
@@ -102,9 +102,9 @@ TEST_CASE("horizon: a plain loop over every lobe agrees up to T = 10^6", "[horiz
     cases.push_back({coupling_spec::from_n2(big_rational((tau - sigma) * (tau - sigma), tau * sigma)), big_rational(1000000)});
   cases.push_back({coupling_spec::from_n2(big_rational(7, 3)), big_rational(654321)});  // not resonant
   for (const auto& [c, T] : cases) {
-    const horizon_minimum_report r = prove_horizon_minimum(c, T, 20);
+    const horizon_minimum_report r = report_horizon_minimum(c, T, 20);
     const long double n = std::sqrt(c.n2.convert_to<long double>()), x = n / std::sqrt(n * n + 4);
-    const long kc = r.cut_lobe.convert_to<long>();
+    const long kc = r.proof.cut_lobe.convert_to<long>();
     long best = 0;
     long double best_nu = 0.5L;
     for (long k = 1; k < kc; ++k) {
@@ -117,7 +117,7 @@ TEST_CASE("horizon: a plain loop over every lobe agrees up to T = 10^6", "[horiz
     REQUIRE(r.lobe.has_value());
     // A resonant coupling repeats its lobes (nu_{k+a} = nu_k): the loop's first may be a later
     // copy after rounding, so there only the value is compared.
-    if (r.lobe->k != r.cut_lobe && !r.x.is_rational()) CHECK(r.lobe->k == best);
+    if (r.lobe->k != r.proof.cut_lobe && !r.proof.x.is_rational()) CHECK(r.lobe->k == best);
     CHECK(std::fabs(r.lobe->nu.approx() - double(best_nu)) < 1e-12);
   }
 }
@@ -131,26 +131,26 @@ TEST_CASE("horizon: tiny couplings answer (x below the working precision's spaci
     for (const char* T : {"10", "100", "1e6"}) {
       INFO("n = " << n << ", T = " << T);
       const horizon_minimum_report r =
-          prove_horizon_minimum(coupling_spec::from_n(parse_rational(n, "n")), horizon_time(parse_rational(T, "T")), 12);
+          report_horizon_minimum(coupling_spec::from_n(parse_rational(n, "n")), horizon_time(parse_rational(T, "T")), 12);
       // For n T << 1, R = q^2 + q'^2 = 1 - x^2 sin^2(t) + O(n T): H_q stays within 1e-30 of 1/2.
       const double h = std::stod(r.h_min.value);
       CHECK(h <= 0.5);
       CHECK(h > 0.5 - 1e-12);
     }
-    CHECK_FALSE(prove_first_below(coupling_spec::from_n(parse_rational(n, "n")), big_rational(1, 4), 12).never);
+    CHECK_FALSE(report_first_below(coupling_spec::from_n(parse_rational(n, "n")), big_rational(1, 4), 12).never);
   }
 }
 
 TEST_CASE("horizon: T up to 10^100 answers, and the lobe is exact", "[horizon]") {
   const coupling_spec c = coupling_spec::from_n(big_rational(2));
   const big_rational T(boost::multiprecision::pow(big_int(10), 100));
-  const horizon_minimum_report r = prove_horizon_minimum(c, T, 30);
+  const horizon_minimum_report r = report_horizon_minimum(c, T, 30);
   REQUIRE(r.lobe.has_value());
   // nu ~ 1/k_c: the minimum is of order (pi nu)^4; the time has 100 digits before the point.
   CHECK(r.lobe->nu.approx() < 1e-98);
   CHECK(r.t_min.value.find("e+") != std::string::npos);
   CHECK(r.h_min.value.find("e-") != std::string::npos);
-  CHECK(r.lobe->k <= r.cut_lobe);
+  CHECK(r.lobe->k <= r.proof.cut_lobe);
 }
 
 TEST_CASE("horizon: first time below a level equals a fine scan", "[horizon]") {
@@ -158,11 +158,11 @@ TEST_CASE("horizon: first time below a level equals a fine scan", "[horizon]") {
   for (int i = 0; i < 25; ++i) {
     const coupling_spec c = coupling_spec::from_n(random_decimal(rng, 0.05, 10, 5));
     // A level between the minimum over [0, 60] and 1/2.
-    const horizon_minimum_report m = prove_horizon_minimum(c, big_rational(60), 17);
+    const horizon_minimum_report m = report_horizon_minimum(c, big_rational(60), 17);
     const double hmin = std::stod(m.h_min.value);
     const double level = hmin + (0.5 - hmin) * std::uniform_real_distribution<double>(0.02, 0.9)(rng);
     const big_rational E = parse_rational(format_scientific(real_to_mpfr(level), 12), "E");
-    const first_below_report b = prove_first_below(c, E, 17);
+    const first_below_report b = report_first_below(c, E, 17);
     INFO("n^2 = " << rational_str(c.n2) << " E = " << rational_str(E));
     REQUIRE_FALSE(b.never);
     // Reference: the first critical-point scan minimum below E over growing horizons brackets the
@@ -179,20 +179,20 @@ TEST_CASE("horizon: first time below a level equals a fine scan", "[horizon]") {
 TEST_CASE("horizon: levels that are never reached, and E >= 1/2", "[horizon]") {
   // (6, 5) is resonant with H_min ~ 1.29e-3: E = 1e-3 is never reached; E = 2e-3 is.
   const coupling_spec c = coupling_spec::from_n2(big_rational(1, 30));
-  CHECK(prove_first_below(c, big_rational(1, 1000), 12).never);
-  CHECK_FALSE(prove_first_below(c, big_rational(2, 1000), 12).never);
-  CHECK(prove_first_below(c, big_rational(0), 12).never);
+  CHECK(report_first_below(c, big_rational(1, 1000), 12).never);
+  CHECK_FALSE(report_first_below(c, big_rational(2, 1000), 12).never);
+  CHECK(report_first_below(c, big_rational(0), 12).never);
   // Irrational: 0 is never reached, any E > 0 is.
   const coupling_spec two = coupling_spec::from_n(big_rational(2));
-  CHECK(prove_first_below(two, big_rational(0), 12).never);
-  CHECK_FALSE(prove_first_below(two, big_rational(1, 1000000), 12).never);
-  const first_below_report z = prove_first_below(two, big_rational(1, 2), 12);
+  CHECK(report_first_below(two, big_rational(0), 12).never);
+  CHECK_FALSE(report_first_below(two, big_rational(1, 1000000), 12).never);
+  const first_below_report z = report_first_below(two, big_rational(1, 2), 12);
   CHECK(z.t_below.value == "0.00000000000e+00");
   // Degenerate (11, 9): H_q = 0 first at t_first = sqrt(99) pi/2.
   const coupling_spec d = coupling_spec::from_n2(big_rational(4, 99));
-  const first_below_report zero = prove_first_below(d, big_rational(0), 15);
+  const first_below_report zero = report_first_below(d, big_rational(0), 15);
   REQUIRE_FALSE(zero.never);
   CHECK(zero.t_below.value == prove_pair_values(resonant_pair<big_int>(11, 9), 15).t_first.value);
-  CHECK_THROWS_AS(prove_first_below(two, big_rational(-1), 12), usage_error);
-  CHECK_THROWS_AS(prove_horizon_minimum(two, big_rational(-1), 12), usage_error);
+  CHECK_THROWS_AS(report_first_below(two, big_rational(-1), 12), usage_error);
+  CHECK_THROWS_AS(report_horizon_minimum(two, big_rational(-1), 12), usage_error);
 }

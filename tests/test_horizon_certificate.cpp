@@ -9,6 +9,7 @@
 //     tie of a resonant coupling's mirror lobes (same h_min) that is not the first: refused.
 #include <catch2/catch.hpp>
 
+#include <gyrores/app/coupling.hpp>
 #include <gyrores/certify/horizon_certificate.hpp>
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/io/horizon_certificate_json.hpp>
@@ -29,6 +30,14 @@ gyrores_checker::verdict check(const json& j) { return gyrores_checker::check_co
 
 json certificate_json(const coupling_spec& c, const big_rational& T, unsigned digits) {
   return horizon_certificate_to_json(certify_horizon_minimum(c, T, digits));
+}
+
+// The certificate file of min H_q over [0, T] and, with a level, the first time below it.
+std::string certificate_text(const coupling_spec& c, const big_rational& T, const std::optional<big_rational>& level,
+                             unsigned digits) {
+  horizon_certificate cert = certify_horizon_minimum(c, T, digits);
+  if (level) cert.below = certify_first_below(c, *level, digits);
+  return coupling_certificate_text(cert);
 }
 
 // The plain loop: the smallest argmin of ||k x - 1/2|| over 0 <= k <= K (exact comparisons).
@@ -95,13 +104,78 @@ TEST_CASE("coupling certificates of random couplings and horizons are accepted",
 
 TEST_CASE("the certificate text for the CLI; T <= 0 is refused", "[certificate][horizon]") {
   const auto c = coupling_spec::from_n(parse_rational("2", "n"));
-  const std::string text = coupling_certificate_text(c, parse_rational("37", "T"), std::nullopt, 15);
+  const std::string text = certificate_text(c, parse_rational("37", "T"), std::nullopt, 15);
   CHECK(text.back() == '\n');
   CHECK(gyrores_checker::check_coupling_certificate(text).status == 0);
-  const std::string with_level = coupling_certificate_text(c, 37, big_rational(1, 100), 15);
+  const std::string with_level = certificate_text(c, 37, big_rational(1, 100), 15);
   CHECK(gyrores_checker::check_coupling_certificate(with_level).status == 0);
   CHECK(with_level.find("\"case\": \"lobe\"") != std::string::npos);
   CHECK_THROWS_AS(certify_horizon_minimum(c, 0, 15), usage_error);
+}
+
+TEST_CASE("the coupling request certifies the proofs its report rounded", "[certificate][horizon]") {
+  // One computation (app/coupling.hpp): the certificate's claims are the report's enclosures,
+  // rounded outward, and the checker accepts them; for a lobe and for the horizon's end.
+  for (const auto& [n, T] : std::vector<std::pair<std::string, std::string>>{{"2", "37"}, {"2", "2.2"}, {"0.31", "1e20"}}) {
+    app::coupling_request request;
+    request.spec = coupling_spec::from_n(parse_rational(n, "n"));
+    request.options.horizon = horizon_time(parse_rational(T, "T"));
+    request.options.below = big_rational(1, 1000000);
+    request.options.digits = 15;
+    request.options.convergents = 0;
+    request.certificate = true;
+    const app::coupling_result r = app::run_coupling(request);
+    INFO("n = " << n << ", T = " << T);
+    REQUIRE(r.certificate);
+    CHECK(gyrores_checker::check_coupling_certificate(coupling_certificate_text(*r.certificate)).status == 0);
+    CHECK(r.certificate->h_min == r.report.horizon.h_min.enclosure);
+    CHECK(r.certificate->t_min == r.report.horizon.t_min.enclosure);
+    CHECK(r.certificate->below->t_below == r.report.below->t_below.enclosure);
+    CHECK(r.certificate->cut_lobe == r.report.horizon.proof.cut_lobe);
+    CHECK(r.certificate->at_horizon_end == r.report.horizon.proof.at_horizon_end);
+    // The report without a certificate prints the same digits.
+    request.certificate = false;
+    const app::coupling_result plain = app::run_coupling(request);
+    CHECK(plain.report.horizon.h_min.value == r.report.horizon.h_min.value);
+    CHECK(plain.report.below->t_below.value == r.report.below->t_below.value);
+  }
+}
+
+TEST_CASE("a certificate is written only from a proof made for it, at its digits", "[certificate][horizon]") {
+  const auto c = coupling_spec::from_n(big_rational(2));
+  const horizon_time T(big_rational(37));
+  const auto for_report = prove_horizon_minimum(c, T, {20, {}}, proof_use::report);
+  CHECK_THROWS_AS(horizon_certificate_of(c, for_report, 20), compute_error);  // its decimals are not proved
+  const auto for_certificate = prove_horizon_minimum(c, T, {12, {}}, proof_use::certificate);
+  CHECK_THROWS_AS(horizon_certificate_of(c, for_certificate, 20), compute_error);  // made for 12 digits
+  CHECK(gyrores_checker::check_coupling_certificate(coupling_certificate_text(horizon_certificate_of(c, for_certificate, 12)))
+            .status == 0);
+}
+
+TEST_CASE("certificates the format cannot state are refused, before any work or at once", "[certificate][horizon]") {
+  app::coupling_request request;
+  request.spec = coupling_spec::from_n(big_rational(2));
+  request.certificate = true;
+  request.options.horizon = horizon_time(big_rational(100), true);  // 100 pi: the report accepts it
+  CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("multiple of pi"));
+  request.options.horizon = horizon_time(big_rational(0));
+  CHECK_THROWS_AS(app::run_coupling(request), usage_error);
+  // A coupling so small that its lobe roots lie within 10^-27 of pi/2: the report answers, the
+  // certificate is refused at once (compute_error naming why), not after a long refinement.
+  request.spec = coupling_spec::from_n(parse_rational("1e-20", "n"));
+  request.options.horizon = horizon_time(big_rational(100));
+  request.options.convergents = 0;
+  CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("pi/2"));
+  request.certificate = false;
+  CHECK_NOTHROW(app::run_coupling(request));
+  // x = 1 - 2 10^-30: near delta the lobes' ||k x - 1/2|| lie 2 10^-30 apart, closer than a unit
+  // of delta's 27th digit, so no decimal of delta decides the first lobe below E = 10^-40.
+  request.spec = coupling_spec::from_n(parse_rational("1e15", "n"));
+  request.options.horizon = horizon_time(big_rational(1000));
+  request.options.below = parse_rational("1e-40", "E");
+  CHECK_NOTHROW(app::run_coupling(request));
+  request.certificate = true;
+  CHECK_THROWS_WITH(app::run_coupling(request), Catch::Contains("delta"));
 }
 
 namespace {
@@ -246,7 +320,7 @@ std::vector<below_case> below_cases() {
 
 json below_json(const std::string& n2, const std::string& E, unsigned digits) {
   const auto c = coupling_spec::from_n2(parse_rational(n2, "n2"));
-  return json::parse(coupling_certificate_text(c, 10, parse_rational(E, "E"), digits));
+  return json::parse(certificate_text(c, 10, parse_rational(E, "E"), digits));
 }
 
 }  // namespace

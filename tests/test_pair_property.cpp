@@ -1,4 +1,4 @@
-// Property test of prove_pair (theorem/pair_report.hpp) over random pairs of every size:
+// Property test of prove_pair (report/pair_report.hpp) over random pairs of every size:
 // tau with 2 to 500 decimal digits, x = (tau - sigma)/(tau + sigma) near 0, near 1/2 and near 1
 // (and tau = 3 sigma + 1, a minimiser just past 0 and its mirror just below 2 pi),
 // D in 1..200. For each case:
@@ -24,7 +24,7 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/rational.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "testing/naive_forms.hpp"
 #include "testing/test_support.hpp"

@@ -1,4 +1,4 @@
-// Every real `gyrores pair` prints (theorem/pair_report.hpp, prove_pair) is the correct rounding
+// Every real `gyrores pair` prints (report/pair_report.hpp, prove_pair) is the correct rounding
 // of its exact value: compared, field by field and digit for digit, with independent
 // high-precision values, on the hard cases of docs/mathematics.md §4 and on random pairs, at 17,
 // 50 and 1000 digits.
@@ -17,7 +17,7 @@
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/theorem/lobes.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_forms.hpp"
@@ -35,7 +35,7 @@ big_int pow10(unsigned e) {
 pair_report report(const resonant_pair<big_int>& p, unsigned digits, const std::string& qdot0 = "1") {
   pair_report_options opt;
   opt.digits = digits;
-  opt.qdot0 = qdot0;
+  opt.qdot0 = parse_rational(qdot0, "qdot0");
   opt.enclosures = true;
   return prove_pair(p, opt);
 }

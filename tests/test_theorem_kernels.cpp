@@ -17,12 +17,15 @@
 // formula, the distance limit) against these test cases and requires each mutant to fail them.
 #include <catch2/catch.hpp>
 
+#include <gyrores/core/decimal.hpp>
+#include <gyrores/core/rational.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/theorem/root.hpp>
 
 #include <mpfi.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -100,12 +103,10 @@ template <class F> void bisect(big_float& root, big_float& lo, big_float& hi, F&
   mpfr_div_2ui(root, root, 1, MPFR_RNDN);
 }
 
-// u* of x u + atan(x tan u) = pi m/(2a) on (0, pi/2).
-void theorem_root_reference(big_float& u, const resonant_pair<big_int>& p, const big_int& m) {
+// The root of x u + atan(x tan u) = mu on (0, pi/2), x and mu given (any coupling).
+void coupling_root_reference(big_float& u, mpfr_srcptr x, mpfr_srcptr mu) {
   const mpfr_prec_t bits = mpfr_get_prec(u);
-  big_float x(bits), mu(bits), lo(bits), hi(bits), t(bits), h(bits);
-  x_of(x, p);
-  pi_ratio(mu, m, p.order());
+  big_float lo(bits), hi(bits), t(bits), h(bits);
   mpfr_set_ui(lo, 0, MPFR_RNDN);
   mpfr_const_pi(hi, MPFR_RNDD);
   mpfr_div_2ui(hi, hi, 1, MPFR_RNDD);
@@ -117,6 +118,15 @@ void theorem_root_reference(big_float& u, const resonant_pair<big_int>& p, const
     mpfr_add(h, h, t, MPFR_RNDN);
     return mpfr_cmp(h, mu);
   });
+}
+
+// u* of x u + atan(x tan u) = pi m/(2a) on (0, pi/2).
+void theorem_root_reference(big_float& u, const resonant_pair<big_int>& p, const big_int& m) {
+  const mpfr_prec_t bits = mpfr_get_prec(u);
+  big_float x(bits), mu(bits);
+  x_of(x, p);
+  pi_ratio(mu, m, p.order());
+  coupling_root_reference(u, x, mu);
 }
 
 // The root of u + tan u = pi m/(2b) on (-pi/2, pi/2).
@@ -190,6 +200,13 @@ void scaled_point(fixed_mpfi& out, mpfr_srcptr v, int f, int e) {
 std::string text(mpfr_srcptr v) {
   char buf[64];
   mpfr_snprintf(buf, sizeof buf, "%.20Rg", v);
+  return buf;
+}
+
+// v as a decimal of 91 significant digits (rounded).
+std::string text_of_decimal(mpfr_srcptr v) {
+  char buf[160];
+  mpfr_snprintf(buf, sizeof buf, "%.90Re", v);
   return buf;
 }
 
@@ -310,7 +327,7 @@ TEST_CASE("prove_theorem_root for larger offsets m (the paper's lobe roots)", "[
       theorem_constants K(prec);
       set_theorem_constants(K, p);
       root_enclosure r(prec);
-      if (!(proved = prove_theorem_root(r, K, big_int(m)))) continue;
+      if (!(proved = bool(prove_theorem_root(r, K, big_int(m))))) continue;
       big_float u(prec + extra_bits);
       theorem_root_reference(u, p, big_int(m));
       CHECK(contains(r.U, u));
@@ -319,6 +336,121 @@ TEST_CASE("prove_theorem_root for larger offsets m (the paper's lobe roots)", "[
     INFO(p.str() << ", m = " << m);
     CHECK(proved);
   }
+}
+
+namespace {
+
+// A coupling's equation as the horizon theorem poses it: x = n/sqrt(n^2 + 4) (a point, the exact
+// x of the problem) and mu = pi nu (an interval holding it), at `prec` bits.
+struct coupling_case {
+  const char* n;
+  const char* nu;
+};
+
+void coupling_x(big_float& x, const char* n) {
+  big_float t(mpfr_get_prec(x));
+  mpfr_set_str(x, n, 10, MPFR_RNDN);
+  mpfr_sqr(t, x, MPFR_RNDN);
+  mpfr_add_ui(t, t, 4, MPFR_RNDN);
+  mpfr_sqrt(t, t, MPFR_RNDN);
+  mpfr_div(x, x, t, MPFR_RNDN);
+}
+
+// mu = pi nu for nu = "p/q": the interval (pi as an interval), and a point at v's precision.
+void coupling_mu(fixed_mpfi& mu, big_float& v, const char* nu) {
+  const big_rational q = parse_rational(nu, "nu");
+  mpfi_const_pi(mu);
+  mpfi_mul_q(mu, mu, q.backend().data());
+  big_float pi(mpfr_get_prec(v)), qq(mpfr_get_prec(v));
+  mpfr_const_pi(pi, MPFR_RNDN);
+  mpfr_set_q(qq, q.backend().data(), MPFR_RNDN);
+  mpfr_mul(v, pi, qq, MPFR_RNDN);
+}
+
+}  // namespace
+
+TEST_CASE("prove_theorem_root for any coupling: x from 1e-300 to 1 - 1e-30, mu up to pi/2", "[theorem][root][coupling]") {
+  // x and mu intervals (no integers): the lobe roots H^{-1}(pi nu) of the horizon theorem, near
+  // 0 (nu small), near pi/2 (x small and nu not: tan u* up to 2^1000, the pole bits), at
+  // mu = pi/2 exactly (lobe 0) and for x next to 1. Each case starts where the horizon theorem
+  // starts (64 bits and twice log2(1/x)) and may double 3 times; the bracket must hold the
+  // bisection's root and be narrow.
+  for (const auto& c : std::vector<coupling_case>{{"2", "1/2"},          {"2", "1/3"},       {"2", "1/100000"},
+                                                  {"0.5", "1/2"},        {"0.01", "1/2"},    {"0.01", "49/100"},
+                                                  {"1e-40", "1/2"},      {"1e-40", "1/7"},   {"1e-150", "1/2"},
+                                                  {"1e-300", "1/1000"},  {"1e15", "1/2"},    {"1e15", "1/3"},
+                                                  {"30", "1/1000000000000000000000000000000"}}) {
+    // (and 192 bits at least: x = 1 - 2 10^-30 for n = 10^15 must show)
+    const mpfr_prec_t start = std::max<mpfr_prec_t>(192, 64 + 2 * mpfr_prec_t(std::max(0.0, -std::log2(std::stod(c.n) / 2))));
+    bool proved = false;
+    for (mpfr_prec_t prec = start; prec <= 8 * start && !proved; prec *= 2) {
+      INFO("n = " << c.n << ", nu = " << c.nu << " at " << prec << " bits");
+      big_float x(prec), xr(prec + extra_bits), mu_r(prec + extra_bits), u(prec + extra_bits);
+      coupling_x(x, c.n);
+      fixed_mpfi X(prec);
+      mpfi_set_fr(X, x);
+      theorem_constants K(prec);
+      set_theorem_constants(K, X);
+      root_enclosure r(prec);
+      coupling_mu(r.mu, mu_r, c.nu);
+      if (!(proved = bool(prove_theorem_root(r, K)))) continue;
+      mpfr_set(xr, x, MPFR_RNDN);
+      coupling_root_reference(u, xr, mu_r);
+      INFO("u* = " << text(u));
+      CHECK(contains(r.U, u));
+      CHECK(narrow(r.U, int(prec) - 18));
+      CHECK(r.decimals == 0);
+    }
+    INFO("n = " << c.n << ", nu = " << c.nu);
+    CHECK(proved);
+  }
+}
+
+TEST_CASE("prove_theorem_root for a coupling: another mu's bracket is refused; decimals only inside (0, pi/2)",
+          "[theorem][root][coupling]") {
+  const mpfr_prec_t prec = 256;
+  big_float x(prec), mu_r(prec + extra_bits), u(prec + extra_bits);
+  coupling_x(x, "0.7");
+  fixed_mpfi X(prec);
+  mpfi_set_fr(X, x);
+  theorem_constants K(prec);
+  set_theorem_constants(K, X);
+  // The bracket of nu = 1/5 with its decimals to 40 digits: the decimals hold the root, and the
+  // bracket is refused against nu (1 + 2^-100), whose root lies outside it.
+  root_enclosure own(prec), other(prec);
+  coupling_mu(own.mu, mu_r, "1/5");
+  REQUIRE(prove_theorem_root(own, K, 40));
+  CHECK(own.decimals == 40);
+  big_float xr(prec + extra_bits);
+  mpfr_set(xr, x, MPFR_RNDN);
+  coupling_root_reference(u, xr, mu_r);
+  const big_rational ur = parse_rational(text_of_decimal(u), "u");
+  CHECK(parse_rational(format_scientific(static_cast<mpfr_srcptr>(own.lo), 40, MPFR_RNDD), "lo") < ur);
+  CHECK(parse_rational(format_scientific(static_cast<mpfr_srcptr>(own.hi), 40, MPFR_RNDU), "hi") > ur);
+  CHECK(contains(own.U, u));
+  fixed_mpfi shift(prec);
+  coupling_mu(other.mu, mu_r, "1/5");
+  mpfi_mul_2si(shift, other.mu, -100);
+  mpfi_add(other.mu, other.mu, shift);
+  REQUIRE(theorem_centre(other, K));
+  fixed_mpfi LO(prec), HI(prec), T(prec);
+  mpfi_set_fr(LO, own.lo);
+  mpfi_set_fr(HI, own.hi);
+  CHECK_FALSE(prove_theorem_bracket(K, other, LO, HI, T));
+  // A root within 10^-80 of pi/2 (x ~ 5e-41, nu = 1/2): proved, but its 30-digit decimals would
+  // pass pi/2, so they are not claimed.
+  const mpfr_prec_t p2 = 1024;
+  big_float x2(p2);
+  coupling_x(x2, "1e-40");
+  fixed_mpfi X2(p2);
+  mpfi_set_fr(X2, x2);
+  theorem_constants K2(p2);
+  set_theorem_constants(K2, X2);
+  root_enclosure near(p2);
+  big_float mu2(p2);
+  coupling_mu(near.mu, mu2, "1/2");
+  REQUIRE(prove_theorem_root(near, K2, 30));
+  CHECK(near.decimals == 0);
 }
 
 TEST_CASE("prove_paper_root contains the independent root of u + tan u = s", "[theorem][paper]") {

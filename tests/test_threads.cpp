@@ -26,13 +26,13 @@
 
 #include <gyrores/core/thread_caches.hpp>
 #include <gyrores/certify/theorem_certificate.hpp>
-#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/report/coupling_report.hpp>
 #include <gyrores/io/certificate_json.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/io/sweep_rows.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 #include <gyrores/sweep/engine.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "certificate_checker.hpp"
 
@@ -115,9 +115,9 @@ std::vector<job> all_jobs() {
                     return coupling_text(coupling_spec::from_n2(big_rational(1, 12)), "100", 20, json{{"n2", "1/12"}});
                   }});
   jobs.push_back({"horizon minimum n = 3/7, 25 digits", [] {
-                    const auto h = prove_horizon_minimum(coupling_spec::from_n(big_rational(3, 7)),
+                    const auto h = report_horizon_minimum(coupling_spec::from_n(big_rational(3, 7)),
                                                          horizon_time(big_rational(20), true), 25);
-                    return h.h_min.value + " " + h.t_min.value + " " + h.r_min.value + " " + h.cut_lobe.str();
+                    return h.h_min.value + " " + h.t_min.value + " " + h.r_min.value + " " + h.proof.cut_lobe.str();
                   }});
   return jobs;
 }

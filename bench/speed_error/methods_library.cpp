@@ -9,7 +9,7 @@
 
 #include "case_support.hpp"
 #include <gyrores/certify/theorem_certificate.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 #include "methods.hpp"
 #include "pre_theorem.hpp"
 #include "reference.hpp"
@@ -424,7 +424,7 @@ std::vector<method_def> library_methods(const run_config&) {
        "minimiser; scored at the enclosures' midpoints",
        skip_theorem_proved, theorem_proved_case},
       {"theorem_report", "theorem_report",
-       "**theorem, whole report**: prove_pair(pair, digits) (theorem/pair_report.hpp), everything `gyrores pair "
+       "**theorem, whole report**: prove_pair(pair, digits) (report/pair_report.hpp), everything `gyrores pair "
        "--digits D` prints (r_res, H_q min, H_z max, every minimiser, t_first, the paper's asymptotics for x < 1/2, "
        "...), each real correctly rounded from a proved enclosure (precision doubled until every rounding is "
        "decided); scored on the printed r_res and theta_first",

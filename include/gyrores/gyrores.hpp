@@ -18,19 +18,21 @@
 #include <gyrores/model/coupling.hpp>        // any coupling n exactly: resonance test, convergents, x = sqrt(D)/(P + 4Q)
 #include <gyrores/model/inputs.hpp>          // horizons, levels and bands as the user gives them, parsed once
 #include <gyrores/model/rotation.hpp>        // the rotation by x, exactly: min ||k x - 1/2|| and first hits in O(log K)
-// theorem: the lattice theorem at the centre (lobes, the roots, the minimum, the proved pair report)
+// theorem: the lattice theorem at the centre (lobes, the roots, the minimum) and the horizon theorem
 #include <gyrores/theorem/lobes.hpp>          // the minimisers' lobes and the paper's fast node, by integers
 #include <gyrores/theorem/root.hpp>           // u* and the paper's root: points in double, proved enclosures
 #include <gyrores/theorem/minimum.hpp>        // r_res, minimisers, theta_first, t_first
-#include <gyrores/theorem/pair_report.hpp>    // everything about one pair, every real proved
 #include <gyrores/theorem/horizon.hpp>        // any coupling: min of H_q over [0, T], first time below a level
 #include <gyrores/theorem/band.hpp>           // a band of couplings: worst and best minimum over [0, T], proved
 // certificates
 #include <gyrores/certify/theorem_certificate.hpp> // certificates from the lattice theorem ("gyrores-certificate/2")
 #include <gyrores/certify/horizon_certificate.hpp> // certificates of any coupling's horizon minimum ("gyrores-coupling-certificate/1")
+// reports: where proved enclosures become digits
+#include <gyrores/report/pair_report.hpp>        // everything about one pair, every real proved and rounded
+#include <gyrores/report/horizon_report.hpp>     // the horizon theorem's minimum and first time below, rounded
+#include <gyrores/report/coupling_report.hpp>    // the coupling analysis, every number proved
 // design, figures data, sweeps
 #include <gyrores/design/coupling.hpp>       // the scan of every critical point over a horizon (a reference, and for figures)
-#include <gyrores/design/coupling_report.hpp>  // the coupling analysis, every number proved
 #include <gyrores/design/design.hpp>         // design problems (absorb/contain) and the Pareto front
 #include <gyrores/design/tolerance.hpp>      // design with a tolerance band on the coupling, proved over a horizon
 #include <gyrores/design/figures.hpp>        // data behind the figures (trajectory, envelope, circles, energies)

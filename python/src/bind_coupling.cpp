@@ -1,24 +1,20 @@
-// gyrores.coupling and gyrores.couplings: design/coupling_report.hpp (any coupling n) and a band
-// of couplings (theorem/band.hpp) as the dict of `gyrores coupling [--band|--tolerance] --json`,
-// and the horizon theorem (theorem/horizon.hpp) over arrays of couplings and horizons in one C++
-// loop (GIL released, the stop flag passed into every proof and looked at between elements). The
-// horizon, level, band and tolerance texts are read as the CLI reads them ("1e100", "100pi", "1%",
-// "N1:N2"), by the library's parsers (theorem/horizon.hpp, theorem/band.hpp).
-#include <cmath>
-#include <cstdlib>
-#include <limits>
+// gyrores.coupling and gyrores.couplings: the coupling request of app/coupling.hpp (any coupling
+// n) and a band of couplings (theorem/band.hpp) as the dict of `gyrores coupling
+// [--band|--tolerance] --json`, and the horizon theorem's doubles (app/coupling.hpp) over arrays
+// of couplings and horizons in one C++ loop (GIL released, the stop flag passed into every proof
+// and looked at between elements). The horizon, level, band and tolerance texts are read as the
+// CLI reads them ("1e100", "100pi", "1%", "N1:N2"), by the library's parsers (model/inputs.hpp).
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include <gyrores/app/coupling.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
-#include <gyrores/design/coupling_report.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/app/band.hpp>
 #include <gyrores/theorem/band.hpp>
-#include <gyrores/theorem/horizon.hpp>
 
 #include "common.hpp"
 #include "interruptible.hpp"
@@ -61,14 +57,15 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   const bool band_alone = n.is_none() && n2.is_none() && !band.is_none();
   if (!band_alone && n.is_none() == n2.is_none())
     throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
-  coupling_report_options opt;
+  app::coupling_request request;
+  coupling_report_options& opt = request.options;
   opt.digits = checked_digits(digits, 1, report_digits_max);
-  if (convergents < 0 || convergents > 60) throw usage_error("convergents must be in [0, 60]");
+  if (convergents < 0 || convergents > std::int64_t(app::coupling_convergents_max))
+    throw usage_error("convergents must be in [0, " + std::to_string(app::coupling_convergents_max) + "]");
   opt.convergents = std::size_t(convergents);
   opt.horizon = horizon_of(horizon, "horizon");
   if (!below.is_none()) opt.below = level_of(below.cast<std::string>());
-  std::optional<coupling_spec> spec;
-  if (!band_alone) spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
+  if (!band_alone) request.spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
   const auto ends = band_of(n, band, tolerance);
   app::band_request bq;
   if (ends) {
@@ -80,10 +77,10 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   }
   // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point (a
   // band's bracket so far is then not returned: KeyboardInterrupt).
-  const coupling_and_band r = run_interruptible<coupling_and_band>([spec, opt, ends, bq](stop_token stop) mutable {
+  const coupling_and_band r = run_interruptible<coupling_and_band>([band_alone, request, ends, bq](stop_token stop) mutable {
     coupling_and_band out;
-    opt.stop = bq.stop = stop;
-    if (spec) out.report = analyse_coupling(*spec, opt);
+    request.options.stop = bq.stop = stop;
+    if (!band_alone) out.report = app::run_coupling(request).report;
     if (ends) {
       out.band = app::run_band(bq);
       if (out.band->interrupted) throw interrupted();
@@ -93,48 +90,9 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   if (band_alone)
     return to_python(json{{"horizon", horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(bq, *r.band)}});
   const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
-  json j = coupling_report_json(input, horizon, opt.digits, *r.report);
+  json j = coupling_report_json(input, horizon, request.options.digits, *r.report);
   if (r.band) j["band"] = app::band_result_json(bq, *r.band);
   return to_python(j);
-}
-
-// The correctly rounded double of a proved real, or nothing when its enclosure does not decide
-// it: rounding to nearest is monotone, so equal roundings of both ends are the exact value's.
-std::optional<double> decided_double(const proved_real& r) {
-  const double lo = std::strtod(r.enclosure.first.c_str(), nullptr);
-  const double hi = std::strtod(r.enclosure.second.c_str(), nullptr);
-  if (lo != hi) return std::nullopt;
-  return lo;
-}
-
-struct coupling_row {
-  double h_min = 0, t_min = 0, t_below = std::numeric_limits<double>::quiet_NaN();
-  bool at_end = false, resonant = false;
-};
-
-// One element: the horizon theorem at 17 digits, then more until every double is decided.
-coupling_row row_of(const coupling_spec& spec, const horizon_time& horizon, const std::optional<big_rational>& level,
-                    stop_token stop) {
-  for (unsigned digits = 17;; digits = std::min(2 * digits, report_digits_max)) {
-    coupling_row row;
-    row.resonant = coupling_resonant_pair(spec).has_value();
-    const horizon_minimum_report h = prove_horizon_minimum(spec, horizon, digits, stop);
-    const auto hmin = decided_double(h.h_min), tmin = decided_double(h.t_min);
-    bool decided = hmin && tmin;
-    if (decided) row.h_min = *hmin, row.t_min = *tmin, row.at_end = h.at_horizon_end;
-    if (decided && level) {
-      const first_below_report b = prove_first_below(spec, *level, digits, stop);
-      if (!b.never) {
-        const auto tb = decided_double(b.t_below);
-        decided = tb.has_value();
-        if (tb) row.t_below = *tb;
-      }
-    }
-    if (decided) return row;
-    if (digits == report_digits_max)
-      throw compute_error("a double of coupling n^2 = " + rational_str(spec.n2) + " is not decided at " +
-                          std::to_string(report_digits_max) + " digits");
-  }
 }
 
 struct coupling_columns {
@@ -169,7 +127,7 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
     const std::size_t total = specs.size();
     for (std::size_t i = 0; i < total; ++i) {
       stop.throw_if_requested();
-      const coupling_row r = row_of(specs[i], times[i], level, stop);
+      const app::coupling_doubles r = app::run_coupling_doubles(specs[i], times[i], level, stop);
       c.h_min.push_back(r.h_min);
       c.t_min.push_back(r.t_min);
       c.t_below.push_back(r.t_below);

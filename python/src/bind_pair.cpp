@@ -1,11 +1,11 @@
-// gyrores.pair and gyrores.asymptotics: the proved report of theorem/pair_report.hpp (prove_pair)
+// gyrores.pair and gyrores.asymptotics: the proved report of report/pair_report.hpp (prove_pair)
 // as the dict of `gyrores pair --json` (same keys, same order, reals as decimal strings, each the
 // correct rounding of a proved enclosure; gyrores/__init__.py converts them), with the
 // enclosures when asked, without the asymptotics when told (gyrores.pair computes them on
 // first access).
 #include <gyrores/app/pair.hpp>
 #include <gyrores/io/report_json.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "common.hpp"
 #include "interruptible.hpp"
@@ -15,13 +15,13 @@ namespace {
 
 pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures,
                      bool asymptotics = true) {
-  app::pair_request request{p};
-  request.enclosures = enclosures;
-  request.asymptotics = asymptotics;
-  request.digits = checked_digits(digits, 1, report_digits_max);
-  request.qdot0 = parse_rational(qdot0, "qdot0");
+  app::pair_request request{p, {}};
+  request.options.enclosures = enclosures;
+  request.options.asymptotics = asymptotics;
+  request.options.digits = checked_digits(digits, 1, report_digits_max);
+  request.options.qdot0 = parse_rational(qdot0, "qdot0");
   return run_interruptible<pair_report>([request](stop_token stop) mutable {
-    request.stop = stop;
+    request.options.stop = stop;
     return app::run_pair(request);
   });
 }

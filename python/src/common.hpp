@@ -10,7 +10,7 @@
 #include <utility>
 
 #include <gyrores/core/integer.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/model/pair.hpp>
 

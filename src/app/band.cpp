@@ -37,11 +37,11 @@ band_result run_band(const band_request& request) {
   // Each extreme's own coupling, its lobe and time (the horizon theorem at the digits asked).
   r.absorption_at = attained(r.absorption.at);
   r.containment_at = attained(r.containment.at);
-  r.absorption_at.minimum = prove_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop);
-  r.containment_at.minimum = prove_horizon_minimum(r.containment.at.spec, request.horizon, request.digits, request.stop);
+  r.absorption_at.minimum = report_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop);
+  r.containment_at.minimum = report_horizon_minimum(r.containment.at.spec, request.horizon, request.digits, request.stop);
   if (r.below) {
     r.below_at = attained(r.below->at);
-    r.below_at->first_below = prove_first_below(r.below->at.spec, *request.below, request.digits, request.stop);
+    r.below_at->first_below = report_first_below(r.below->at.spec, *request.below, request.digits, request.stop);
   }
   return r;
 }

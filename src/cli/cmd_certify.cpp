@@ -2,16 +2,15 @@
 // gyrores check FILE        (exit 0: holds; 1: a claim or fact fails; 2: unreadable, malformed or retired)
 //
 // certify writes a lattice-theorem certificate ("gyrores-certificate/2"); check re-proves one with
-// the independent Arb checker (src/checker/). A file of the retired cover format
-// ("gyrores-certificate/1") is refused at once with exit 2 and how to re-certify
-// (docs/formats.md): nothing of it is read.
+// the independent Arb checkers (src/checker/), for either format (app/certify.hpp). A file of the
+// retired cover format ("gyrores-certificate/1") is refused at once with exit 2 and how to
+// re-certify (docs/formats.md): nothing of it is read.
 
-#include <gyrores/certify/theorem_certificate.hpp>
+#include <gyrores/app/certify.hpp>
+#include <gyrores/core/enclosure.hpp>
 #include <gyrores/io/certificate_json.hpp>
 #include <gyrores/io/files.hpp>
 
-#include "certificate_checker.hpp"
-#include "horizon_checker.hpp"  // issue 23: coupling certificates
 #include "cli_options.hpp"
 #include "commands.hpp"
 
@@ -24,14 +23,10 @@ struct certify_args {
 };
 
 std::string run_certify(const certify_args& a) {
-  check_digits_flag(a.digits, 1, 10000);
-  auto p = parse_pair_arguments(a.tau, a.sigma);
-  // What certify writes, check must read (src/checker/certificate_checker.hpp).
-  if (p.tau().str().size() > gyrores_checker::max_pair_digits)
-    throw usage_error("TAU has " + std::to_string(p.tau().str().size()) + " digits; certificates are limited to " +
-                      std::to_string(gyrores_checker::max_pair_digits) + " (what gyrores check reads)");
+  check_digits_flag(a.digits, 1, int(report_digits_max));
+  app::certify_request request{parse_pair_arguments(a.tau, a.sigma), unsigned(a.digits), {}};
   if (!a.out.empty()) check_output_path(a.out);  // before the work
-  std::string text = json_dump(certificate_to_json(certify_by_theorem(p, unsigned(a.digits)))) + "\n";
+  std::string text = json_dump(certificate_to_json(app::run_certify(request))) + "\n";
   if (a.out.empty()) return text;
   write_file_atomically(a.out, text);
   return "";
@@ -41,7 +36,7 @@ command_runner install_certify(CLI::App& app) {
   auto a = std::make_shared<certify_args>();
   auto sub = options(app).subcommand("certify", "Interval certificate of r_res, theta_first and t_first (qdot0 = 1)");
   add_pair_arguments(sub, a->tau, a->sigma);
-  add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1..10000)");
+  add_digits_option(sub, a->digits, "correct digits every enclosure must reach (1.." + std::to_string(report_digits_max) + ")");
   sub.add("--out", a->out, "write the certificate to FILE (atomically) instead of stdout");
   return [a] { return run_certify(*a); };
 }
@@ -54,15 +49,7 @@ struct check_outcome {
 };
 
 check_outcome check_file(const std::string& file) {
-  const std::string text = read_file(file, certificate_read_limit, "a certificate");
-  if (certificate_format_of(text) == retired_certificate_format)
-    return {2, "gyrores check: " + retired_certificate_message()};
-  // issue 23: coupling certificates (horizon-theorem/1) have their own checker.
-  if (certificate_format_of(text) == gyrores_checker::coupling_certificate_format) {
-    auto h = gyrores_checker::check_coupling_certificate(text);
-    return {h.status, "gyrores check: " + h.message};
-  }
-  auto v = gyrores_checker::check_theorem_certificate(text);
+  const app::check_verdict v = app::run_check(read_file(file, certificate_read_limit, "a certificate"));
   return {v.status, "gyrores check: " + v.message};
 }
 

@@ -1,16 +1,18 @@
 // gyrores coupling N | --n2 P/Q [--horizon T] [--below E] [--convergents K] [--digits D] [--json]
-// Any coupling n (design/coupling_report.hpp): exact resonance test on n^2; the pair analysis
-// when resonant; the minimum of H_q over [0, T] with its first time and the first time H_q <= E
-// (the horizon theorem, proved); the infimum over all time; the continued-fraction convergents
-// of W1/W2 as resonant pairs.
+//                  [--certificate FILE] [--band N1:N2 | --tolerance P%]
+// Any coupling n (app/coupling.hpp, report/coupling_report.hpp): exact resonance test on n^2;
+// the pair analysis when resonant; the minimum of H_q over [0, T] with its first time and the
+// first time H_q <= E (the horizon theorem, proved), with their certificate from the same
+// proofs; the infimum over all time; the continued-fraction convergents of W1/W2 as resonant
+// pairs. The band of couplings is still proved here by theorem/band.hpp.
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <sstream>
 
-#include <gyrores/design/coupling_report.hpp>
 #include <gyrores/app/band.hpp>
+#include <gyrores/app/coupling.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/horizon_certificate_json.hpp>
@@ -59,10 +61,11 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
   std::ostringstream os;
   const auto& spec = r.spec;
   const horizon_minimum_report& h = r.horizon;
+  const quadratic_number& x = h.proof.x;
   os << "coupling n^2 = " << rational_str(spec.n2) << (spec.n ? "  (n = " + rational_str(*spec.n) + ", exact)" : "") << "\n"
      << "  |n|           " << r.abs_n << (r.n_negative ? "  (n < 0 mirrors the motion; |n| is used)" : "") << "\n"
-     << "  x = n/sqrt(n^2+4) = " << (h.x.str().size() <= 60 ? h.x.str() : "(exact: --json)")
-     << (h.x.is_rational() ? "" : ", a quadratic irrational") << "\n"
+     << "  x = n/sqrt(n^2+4) = " << (x.str().size() <= 60 ? x.str() : "(exact: --json)")
+     << (x.is_rational() ? "" : ", a quadratic irrational") << "\n"
      << "  resonance     D = P (P + 4Q) = " << spec.discriminant().str()
      << (r.pair ? " is a perfect square: RESONANT, pair " + r.pair->str() : " is not a perfect square: not resonant") << "\n";
   if (r.pair) {
@@ -76,7 +79,7 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
      << "  min H_q       " << h.h_min.value << "  (radius " << h.r_min.value << ")\n"
      << "  first at t =  " << h.t_min.value << "\n"
      << "  from          "
-     << (h.at_horizon_end ? "the end point t = T: H_q still decreases there (lobe " + h.cut_lobe.str() + " is cut before its minimum)"
+     << (h.proof.at_horizon_end ? "the end point t = T: H_q still decreases there (lobe " + h.proof.cut_lobe.str() + " is cut before its minimum)"
                           : lobe_text(h.lobe) + " (the smallest of the lobes inside [0, T])")
      << "\n";
   if (r.below) {
@@ -115,7 +118,7 @@ std::string attained_text(const app::band_attained& a) {
   if (a.pair) out += ", the pair " + a.pair->str();
   if (a.minimum) {
     const horizon_minimum_report& m = *a.minimum;
-    out += m.at_horizon_end ? ", at the horizon's end t = " + m.t_min.value
+    out += m.proof.at_horizon_end ? ", at the horizon's end t = " + m.t_min.value
                             : ", lobe k = " + (m.lobe ? m.lobe->k.str() : std::string("?")) + ", t = " + m.t_min.value;
   }
   if (a.first_below) out += a.first_below->never ? ", never" : ", its first time " + a.first_below->t_below.value;
@@ -241,21 +244,23 @@ std::string run_coupling(const coupling_args& a) {
     return band_output(a, q, "", nullptr);
   }
   if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
-  check_digits_flag(a.digits, 1, 1000);
-  if (!a.certificate.empty()) check_output_path(a.certificate);  // before the work
-  check_flag_range(a.convergents, 0, 60, "--convergents");
-  coupling_spec spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2"))
-                                   : coupling_spec::from_n(parse_rational(a.n, "N"));
-  coupling_report_options opt;
+  check_digits_flag(a.digits, 1, int(app::coupling_digits_max));
+  check_flag_range(a.convergents, 0, std::int64_t(app::coupling_convergents_max), "--convergents");
+  app::coupling_request request;
+  request.spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2")) : coupling_spec::from_n(parse_rational(a.n, "N"));
+  coupling_report_options& opt = request.options;
   opt.horizon = parse_horizon_time(a.horizon, "--horizon");
   if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below");
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
-  const coupling_report r = analyse_coupling(spec, opt);
-  if (!a.certificate.empty()) {
-    if (opt.horizon.times_pi) throw usage_error("--certificate needs a rational horizon (not a multiple of pi), got " + a.horizon);
-    write_file_atomically(a.certificate, coupling_certificate_text(spec, opt.horizon.value, opt.below, unsigned(a.digits)));
+  request.certificate = !a.certificate.empty();
+  if (request.certificate) {  // before the work
+    check_output_path(a.certificate);
+    check_certificate_horizon(opt.horizon);
   }
+  const app::coupling_result result = app::run_coupling(request);
+  const coupling_report& r = result.report;
+  if (result.certificate) write_file_atomically(a.certificate, coupling_certificate_text(*result.certificate));
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
   if (band) {

@@ -1,5 +1,5 @@
 // gyrores pair TAU SIGMA [--digits D] [--qdot0 V] [--json] [--enclosures]
-// The report of theorem/pair_report.hpp (prove_pair), as text or JSON: every real the correct
+// The report of report/pair_report.hpp (prove_pair), as text or JSON: every real the correct
 // rounding of a proved enclosure.
 #include <sstream>
 
@@ -8,7 +8,7 @@
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/theorem/lobes.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "cli_options.hpp"
 #include "commands.hpp"
@@ -80,11 +80,11 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const pair_report&
 
 std::string run_pair(const pair_args& args) {
   check_digits_flag(args.digits, 1, int(report_digits_max));
-  app::pair_request request{parse_pair_arguments(args.tau, args.sigma)};
-  request.qdot0 = parse_rational(args.qdot0, "--qdot0");
-  if (!(request.qdot0 > 0)) throw usage_error("--qdot0 must be > 0, got " + args.qdot0);
-  request.digits = unsigned(args.digits);
-  request.enclosures = args.enclosures;
+  app::pair_request request{parse_pair_arguments(args.tau, args.sigma), {}};
+  request.options.qdot0 = parse_rational(args.qdot0, "--qdot0");
+  if (!(request.options.qdot0 > 0)) throw usage_error("--qdot0 must be > 0, got " + args.qdot0);
+  request.options.digits = unsigned(args.digits);
+  request.options.enclosures = args.enclosures;
   const resonant_pair<big_int>& p = request.pair;
   const pair_report r = app::run_pair(request);
   if (!args.json) return pair_report_text(p, r, args.enclosures);
@@ -95,7 +95,7 @@ command_runner install_pair(CLI::App& app) {
   auto args = std::make_shared<pair_args>();
   auto sub = options(app).subcommand("pair", "Inscribed radius, minimisers and first-hit time of a resonant pair (proved)");
   add_pair_arguments(sub, args->tau, args->sigma);
-  add_digits_option(sub, args->digits, "significant digits of every real printed (1..10000)");
+  add_digits_option(sub, args->digits, "significant digits of every real printed (1.." + std::to_string(report_digits_max) + ")");
   sub.add("--qdot0", args->qdot0, "impulse amplitude qdot0 > 0 (an exact decimal or fraction)", show::with_default);
   add_json_flag(sub, args->json);
   sub.flag("--enclosures", args->enclosures, "also print the proved enclosure [lo, hi] of every real");

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 namespace gyrores::cli {
 

@@ -27,7 +27,7 @@ json band_coupling_json(const band_coupling& c, const std::optional<resonant_pai
 json horizon_place_json(const horizon_minimum_report& r) {
   return json{{"h_min", r.h_min.value},
               {"lobe", r.lobe ? json(json_integer(r.lobe->k)) : json(nullptr)},
-              {"at_horizon_end", r.at_horizon_end},
+              {"at_horizon_end", r.proof.at_horizon_end},
               {"t_min", r.t_min.value}};
 }
 

@@ -1,8 +1,6 @@
 // Coupling certificates as JSON text (io/horizon_certificate_json.hpp).
 #include <gyrores/io/horizon_certificate_json.hpp>
 
-#include <gyrores/core/error.hpp>
-
 namespace gyrores {
 
 namespace {
@@ -52,11 +50,6 @@ json horizon_certificate_to_json(const horizon_certificate& c) {
               {"below", below}};
 }
 
-std::string coupling_certificate_text(const coupling_spec& c, const big_rational& horizon,
-                                      const std::optional<big_rational>& level, unsigned digits) {
-  horizon_certificate cert = certify_horizon_minimum(c, horizon, digits);
-  if (level) cert.below = certify_first_below(c, *level, digits);
-  return json_dump(horizon_certificate_to_json(cert)) + "\n";
-}
+std::string coupling_certificate_text(const horizon_certificate& c) { return json_dump(horizon_certificate_to_json(c)) + "\n"; }
 
 }  // namespace gyrores

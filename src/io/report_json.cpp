@@ -133,15 +133,15 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["horizon"] = horizon;
   const horizon_minimum_report& h = r.horizon;
   j["theorem"] = horizon_theorem_id;
-  j["x"] = h.x.str();
+  j["x"] = h.proof.x.str();
   j["h_min_horizon"] = h.h_min.value;
   j["t_min_horizon"] = h.t_min.value;
   j["r_min_horizon"] = h.r_min.value;
-  j["min_at_horizon_end"] = h.at_horizon_end;
+  j["min_at_horizon_end"] = h.proof.at_horizon_end;
   j["horizon_lobe"] = h.lobe ? json_integer(h.lobe->k) : json(nullptr);
   j["horizon_lobe_distance"] = h.lobe ? json(h.lobe->nu.str()) : json(nullptr);
-  j["cut_lobe"] = json_integer(h.cut_lobe);
-  j["cut_lobe_reached"] = h.cut_lobe_reached;
+  j["cut_lobe"] = json_integer(h.proof.cut_lobe);
+  j["cut_lobe_reached"] = h.proof.cut_lobe_reached;
   json enc;
   enc["h_min_horizon"] = {h.h_min.enclosure.first, h.h_min.enclosure.second};
   enc["t_min_horizon"] = {h.t_min.enclosure.first, h.t_min.enclosure.second};
@@ -149,7 +149,7 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   if (r.below) {
     const first_below_report& b = *r.below;
     json jb;
-    jb["level"] = rational_str(b.level);
+    jb["level"] = rational_str(b.proof.level);
     jb["never"] = b.never;
     jb["reason"] = b.reason;
     jb["lobe"] = b.lobe ? json_integer(b.lobe->k) : json(nullptr);

@@ -10,7 +10,7 @@
 #include <gyrores/design/tolerance.hpp>
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/theorem/band.hpp>
-#include <gyrores/theorem/horizon.hpp>
+#include <gyrores/report/horizon_report.hpp>
 
 #include "frontend/gnuplot.hpp"
 #include "report/sections.hpp"
@@ -56,7 +56,7 @@ std::vector<band_row> band_rows(const band_case& b, unsigned digits) {
     const auto value = [&](const band_extreme& e) {
       return e.value.hi_rational() == 0 ? std::string("0") : e.value.rounded(digits).value_or("unsettled");
     };
-    rows.push_back({t, prove_horizon_minimum(b.nominal, T, digits).h_min.value, value(W), value(B), at_text(W.at), at_text(B.at)});
+    rows.push_back({t, report_horizon_minimum(b.nominal, T, digits).h_min.value, value(W), value(B), at_text(W.at), at_text(B.at)});
   }
   return rows;
 }

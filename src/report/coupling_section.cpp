@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include <gyrores/model/coupling.hpp>
-#include <gyrores/theorem/horizon.hpp>
+#include <gyrores/report/horizon_report.hpp>
 
 #include "frontend/gnuplot.hpp"
 #include "report/sections.hpp"
@@ -57,7 +57,7 @@ struct horizon_row {
 std::vector<horizon_row> horizon_curve(const context& c, const coupling_spec& spec) {
   std::vector<horizon_row> rows;
   for (const auto& t : horizon_texts())
-    rows.push_back({t, prove_horizon_minimum(spec, horizon_time(parse_rational(t, "horizon")), c.digits)});
+    rows.push_back({t, report_horizon_minimum(spec, horizon_time(parse_rational(t, "horizon")), c.digits)});
   return rows;
 }
 
@@ -209,11 +209,11 @@ std::string part_b(context& c) {
       resonant_decimals += (resonant_decimals.empty() ? "" : ", ") + n + ", the pair " + pair->str();
       continue;
     }
-    dec.push_back({n, std::strtod(n.c_str(), nullptr), prove_first_below(spec, level, c.digits)});
+    dec.push_back({n, std::strtod(n.c_str(), nullptr), report_first_below(spec, level, c.digits)});
   }
   for (auto [t, s] : absorb_pairs())
     pairs.push_back({pair_name(t, s), double(t - s) / std::sqrt(double(t * s)),
-                     prove_first_below(coupling_spec::from_n2(big_rational((t - s) * (t - s), t * s)), level, c.digits), t, s});
+                     report_first_below(coupling_spec::from_n2(big_rational((t - s) * (t - s), t * s)), level, c.digits), t, s});
   std::string never;
   for (const auto& p : pairs)
     if (p.r.never) never += (never.empty() ? "" : ", ") + p.label;

@@ -4,6 +4,7 @@
 #include <gyrores/app/figures.hpp>
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/theorem/horizon.hpp>
+#include <gyrores/report/horizon_report.hpp>
 
 #include "report/sections.hpp"
 
@@ -32,7 +33,7 @@ std::string figure1_section(context& c) {
   const auto p2 = coupling_resonant_pair(s2);
   const auto p12 = coupling_resonant_pair(s12);
   // min of H_q over the paper's span [0, 200 pi/n] = [0, 100 pi], proved (the horizon theorem)
-  const auto h = prove_horizon_minimum(s2, horizon_time(big_rational(100), true), c.digits);
+  const auto h = report_horizon_minimum(s2, horizon_time(big_rational(100), true), c.digits);
   md << claims_table_head
      << "| n = 2 is not resonant (dense trajectory, Fig. 1a) | n^2 (n^2 + 4) = 32 is not a rational square: "
      << (p2 ? "resonant" : "not resonant") << " | " << verdict(!p2) << " |\n"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <gyrores/design/design.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 #include "frontend/plots.hpp"
 

@@ -9,7 +9,7 @@
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
 #include <gyrores/theorem/minimum.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 int main() {
   // Header-only: the degenerate pair (11, 9) and its amplitude rho0 = v sqrt(tau sigma)/a.

@@ -13,7 +13,7 @@
 #include <gyrores/model/inputs.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/theorem/band.hpp>
-#include <gyrores/theorem/horizon.hpp>
+#include <gyrores/report/horizon_report.hpp>
 
 namespace gyrores::app {
 

@@ -13,7 +13,7 @@
 #include <gyrores/design/design.hpp>
 #include <gyrores/design/tolerance.hpp>
 #include <gyrores/model/inputs.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 namespace gyrores::app {
 

@@ -11,9 +11,13 @@
 //                     no lobe is admissible (K_T = -1);
 //   at_horizon_end    the minimum is R(T) at t = T (strictly below the lobe's value);
 //   h_min, t_min      decimal brackets of relative width <= 10^-digits.
-// The producer takes the decisions from theorem/horizon.hpp and proves every bracket in Arb; the
-// independent checker (src/checker/horizon_checker.hpp) re-derives the lobe with its own
-// continued-fraction recursion and re-proves every bracket.
+// A certificate is written from a proof of theorem/horizon.hpp, the very proof a report rounded
+// (report/horizon_report.hpp), never from a second computation: the proof's decisions and
+// integers, its roots' brackets (proved there together with their decimals to
+// certificate_digits(digits) digits) and its enclosures rounded outward to digits + 3 digits.
+// Nothing is computed here but the decimal text and floor(k x). The independent checker
+// (src/checker/horizon_checker.hpp) re-derives the lobe with its own continued-fraction
+// recursion and re-proves every bracket.
 #pragma once
 #include <optional>
 #include <string>
@@ -22,6 +26,8 @@
 #include <gyrores/core/integer.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/model/coupling.hpp>
+#include <gyrores/model/inputs.hpp>
+#include <gyrores/theorem/horizon.hpp>
 
 namespace gyrores {
 
@@ -64,16 +70,24 @@ struct horizon_certificate {
   std::optional<below_certificate> below;  // the first time below a level, when asked
 };
 
-// Proves and writes the certificate of min H_q over [0, T] with `digits` correct digits in each
-// claim. Throws usage_error for T <= 0 or digits outside [1, report_digits_max]; otherwise as
-// prove_horizon_minimum.
-horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_rational& horizon, unsigned digits);
+// usage_error unless T is a rational > 0: the format states the horizon as a rational (a
+// multiple of pi, which a report accepts, is refused here, before any work).
+void check_certificate_horizon(const horizon_time& T);
 
-// The first time below E >= 0 (Throws as prove_first_below).
+// The certificate of a proof of min H_q over [0, T] (made with at least `digits` digits), with
+// `digits` correct digits in each claim. usage_error as check_certificate_horizon; compute_error
+// if a claim is wider than 10^-digits (the proof was made with fewer digits).
+horizon_certificate horizon_certificate_of(const coupling_spec& c, const horizon_minimum_proof& proof, unsigned digits);
+
+// The certificate of a proof of the first time below E >= 0, likewise.
+below_certificate below_certificate_of(const coupling_spec& c, const first_below_proof& proof, unsigned digits);
+
+// Proves and certifies in one call (a proof made for the certificate alone).
+horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_rational& horizon, unsigned digits);
 below_certificate certify_first_below(const coupling_spec& c, const big_rational& level, unsigned digits);
 
-// The entry of one lobe k (its j, side and root bracket), for any k >= 0: the certificate's
-// lobe, and a tool for tests that build a wrong lobe on purpose.
+// The entry of one lobe k (its j, side and root bracket), for any k >= 0 (theorem/horizon.hpp,
+// certified_lobe_root): a tool for tests that build a wrong lobe on purpose.
 certificate_lobe certificate_lobe_of(const coupling_spec& c, const big_int& k, unsigned digits);
 
 }  // namespace gyrores

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include <gyrores/core/integer.hpp>
+#include <gyrores/core/stop.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
 
@@ -38,8 +39,10 @@ struct theorem_certificate {
 };
 
 // Proves and writes the certificate of p with `digits` correct digits in every claim. Throws
-// usage_error for digits outside [1, 10000]; compute_error only when max_bits is reached
-// before the digits (a resource limit, named in the message).
-theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned digits, unsigned max_bits = 1u << 17);
+// usage_error for digits outside [1, report_digits_max]; compute_error only when max_bits is
+// reached before the digits (a resource limit, named in the message); interrupted when `stop`
+// is set.
+theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned digits, unsigned max_bits = 1u << 17,
+                                       stop_token stop = {});
 
 }  // namespace gyrores

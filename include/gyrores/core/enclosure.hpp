@@ -7,7 +7,8 @@
 //                    of [lo, hi] rounds alike (else none: refine the enclosure); an exact rational
 //                    is rounded once, ties to even (an exact tie no enclosure could settle);
 //   nearest_double() the double nearest to the value, when every value of [lo, hi] rounds to it;
-//   outward(D)       D-digit decimal ends rounded outward: lo rounded down, hi rounded up.
+//   outward(D)       D-digit decimal ends rounded outward: lo rounded down, hi rounded up (an
+//                    exact rational: its own D-digit decimal at both ends when that is exact).
 // The report digit limits (report_digits_max) live here: every real the tool prints goes through
 // rounded() with digits in [1, report_digits_max].
 #pragma once
@@ -15,6 +16,7 @@
 #include <mpfr.h>
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <utility>
 
@@ -48,30 +50,44 @@ class exact_binary {
   mpfr_t v_;
 };
 
+// A proved real as a report prints it: the correct rounding to nearest with the digits asked,
+// and (when asked) the enclosure rounded outward to digits + 3 digits (report/).
+struct proved_real {
+  std::string value;                              // correctly rounded, `digits` significant digits
+  std::pair<std::string, std::string> enclosure;  // holds the exact value; outward, digits + 3 digits (when asked)
+  operator const std::string&() const { return value; }  // where text is wanted, the value
+};
+inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }
+
 class enclosure {
  public:
   enclosure() : exact_(big_rational(0)) {}  // [0, 0], exact 0
   // [lo, hi] from two MPFR numbers (copied exactly). Precondition (not checked): lo <= hi, finite.
   enclosure(mpfr_srcptr lo, mpfr_srcptr hi) : lo_(lo), hi_(hi) {}
   explicit enclosure(mpfi_srcptr v) : lo_(&v->left), hi_(&v->right) {}
-  // An exact rational; its binary ends are v rounded outward to `bits` bits (the enclosure an
-  // interval computation at that precision would hold), which outward() prints.
+  // An exact rational; its binary ends lo(), hi() are v rounded outward to `bits` bits (the
+  // enclosure an interval computation at that precision would hold).
   static enclosure exact(const big_rational& v, mpfr_prec_t bits = 128);
 
   mpfr_srcptr lo() const { return lo_; }
   mpfr_srcptr hi() const { return hi_; }
   bool is_exact() const { return exact_.has_value(); }
-  const std::optional<big_rational>& exact_value() const { return exact_; }
 
   std::optional<std::string> rounded(unsigned digits) const;
   std::optional<double> nearest_double() const;
   std::pair<std::string, std::string> outward(unsigned digits) const;
+  // The values of outward(D) as exact rationals (no text).
+  std::pair<big_rational, big_rational> outward_rationals(unsigned digits) const;
+  // rounded(D) with outward(D + 3), as a report prints it (proved_real above); none while the
+  // rounding is undecided.
+  std::optional<proved_real> report(unsigned digits) const;
 
   // The ends as exact rationals (lo <= value <= hi).
   big_rational lo_rational() const;
   big_rational hi_rational() const;
 
  private:
+  std::pair<exact_binary, exact_binary> outward_ends(unsigned digits) const;
   exact_binary lo_, hi_;
   std::optional<big_rational> exact_;
 };

@@ -29,8 +29,13 @@ template <class T> T real_from_rational(const big_rational& q) {
 // once from the exact value, to nearest with ties to even (the rule of format_scientific,
 // core/decimal.hpp, for binary values). Zero prints as 0.000...e+00. This is how exact
 // quantities (beat ratio, qdot0, ...) are printed: an exact tie such as 2305843009213693950 at
-// 18 digits has no floating Ziv test that could ever settle it.
-std::string format_rational_scientific(const big_rational& q, unsigned digits);
+// 18 digits has no floating Ziv test that could ever settle it. `exact`, when given, receives
+// whether the text is q itself (no rounding happened).
+std::string format_rational_scientific(const big_rational& q, unsigned digits, bool* exact = nullptr);
+
+// q rounded to `digits` significant digits down (dir -1) or up (+1), as an exact rational: the
+// value of format_scientific's directed roundings (core/decimal.hpp), with no text.
+big_rational decimal_rounded(const big_rational& q, unsigned digits, int dir);
 
 // True when v >= 0 is a perfect square; root receives floor(sqrt(v)).
 bool int_is_square(const big_int& v, big_int& root);

@@ -8,6 +8,7 @@
 //   out_of_domain  an argument lies where the step does not apply (e.g. a bracket end past pi/2);
 //   no_convergence an iteration did not settle within its budget.
 #pragma once
+#include <functional>
 
 namespace gyrores {
 
@@ -39,5 +40,15 @@ class proof_status {
     const ::gyrores::proof_status status_ = (expr);  \
     if (!status_) return status_;                    \
   } while (false)
+
+// What a refinement of a proof must reach: `digits` sets where the precision starts (the
+// relative accuracy 10^-digits the proof aims at); `accept`, when given, is asked of each proof
+// that held, and the precision keeps doubling until it holds too (a report's roundings decided,
+// a double decided, a certificate's claims narrow enough).
+template <class Proof> struct refine_goal {
+  unsigned digits = 17;
+  std::function<proof_status(const Proof&)> accept;
+  proof_status accepts(const Proof& p) const { return accept ? accept(p) : proof_status::proved(); }
+};
 
 }  // namespace gyrores

@@ -20,7 +20,7 @@
 // zeros by integer arithmetic). Decisions that double cannot make safely are made on proved
 // 256-bit enclosures (theorem/minimum.hpp): a time within a relative 1e-9 of T_max, and
 // neighbouring r_res values within a relative 1e-11 among the reported ranks. The application
-// layer (app/design.hpp) lists the reported pairs' values proved and correctly rounded.
+// layer (app/design.hpp, report/pair_report.hpp) lists the reported pairs' values proved and correctly rounded.
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -8,7 +8,7 @@
 #include <gyrores/io/json.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/theorem/band.hpp>
-#include <gyrores/theorem/horizon.hpp>
+#include <gyrores/report/horizon_report.hpp>
 
 namespace gyrores {
 

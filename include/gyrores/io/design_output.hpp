@@ -10,7 +10,7 @@
 #include <gyrores/design/design.hpp>
 #include <gyrores/design/tolerance.hpp>
 #include <gyrores/io/json.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 namespace gyrores {
 

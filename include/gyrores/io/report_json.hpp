@@ -1,15 +1,15 @@
 // The JSON forms of the reports that `gyrores pair`, `design`, `pareto` and `coupling` print
 // with --json and that the Python module returns as dicts (docs/formats.md): one definition for
 // both, so the two stay key for key the same. Integers of any size are JSON numbers; reals are
-// decimal strings, each the correct rounding of a proved enclosure (theorem/pair_report.hpp).
+// decimal strings, each the correct rounding of a proved enclosure (report/pair_report.hpp).
 #pragma once
 #include <string>
 #include <vector>
 
-#include <gyrores/design/coupling_report.hpp>
+#include <gyrores/report/coupling_report.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/model/pair.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 namespace gyrores {
 

@@ -8,7 +8,7 @@
 // r_res, theta_first and t_first within one ulp of the exact value (formed in double-double and
 // rounded once, with the error bounds of core/double_double.hpp and theorem/root.hpp; the other
 // minimisers a few ulps), and as enclosures at an explicit precision (everything the tool prints;
-// theorem/pair_report.hpp).
+// report/pair_report.hpp).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -67,8 +67,8 @@ struct minimum_enclosure {
   root_enclosure u_star;                                // U = [0, 0] for degenerate pairs
 };
 
-// False when u* could not be proved at this precision (the caller doubles it).
-bool prove_minimum(minimum_enclosure& out, const theorem_constants& K, const resonant_pair<big_int>& p,
+// Not proved when u* could not be proved at this precision (the caller doubles it).
+proof_status prove_minimum(minimum_enclosure& out, const theorem_constants& K, const resonant_pair<big_int>& p,
                    const fixed_mpfi& v);
 
 }  // namespace gyrores

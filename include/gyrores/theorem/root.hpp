@@ -2,28 +2,36 @@
 // as points in double (the fast paths: sweep rows, the design catalogue, figures) and as proved
 // enclosures at an explicit precision (everything printed, the certificates, certified sweeps).
 //
-//   theorem  H(u) = x u + arctan(x tan u) = mu = pi m/(2a), 0 < m, unique root in (0, pi/2)
-//            (u* for m = m_min; the paper's lobe root theta_c for the fast node's |m|);
+//   theorem  H(u) = x u + arctan(x tan u) = mu, unique root in (0, pi/2) for 0 < mu <= pi/2:
+//            a pair's u* (x = b/a, mu = pi m/(2a)) and the paper's lobe roots, and any coupling's
+//            lobe roots H^{-1}(pi nu) (x = n/sqrt(n^2 + 4), nu in (0, 1/2]; theorem/horizon.hpp);
 //   paper    u + tan u = s, unique root in (-pi/2, pi/2) (the x -> 0 limit, divided by x).
 //
 // Enclosures (nothing here reads a process-wide precision: every object carries its own, so
-// all of it runs on any number of threads):
+// all of it runs on any number of threads). One solver for every x and mu, prove_theorem_root:
 //  1. A point by one Newton ladder (newton_ladder below): levels of precision planned from the
 //     top, each at most 4 times the accuracy of the level before, the last centre accurate to
 //     half the precision and 16 bits. Near a centre c every tangent comes from tan c (and
 //     tan(mu - x c)) and the addition formula tan(c + d) = (tan c + tan d)/(1 - tan c tan d),
 //     tan d = d + d^3/3 + r (tan_shift). At the last centre, at full precision, tan c and
 //     tan(mu - x c) are Arb enclosures, the equation's value there is enclosed from them, and one
-//     Newton step from them gives the point (doubling the centre's accuracy).
+//     Newton step from them gives the point (doubling the centre's accuracy). Where u* lies within
+//     2^-L of pi/2 (a coupling's x -> 0 with mu not small: tan u* ~ 2^L), every level carries L
+//     bits more (root_enclosure::pole_bits), which tan loses there; a pair never comes near
+//     (u* <= pi/4: L = 0).
 //  2. A bracket [lo, hi] about the point, proved. Theorem: for 0 < u < pi/2 the angle
 //     w = mu - x u lies in (-pi/2, pi/2) (mu <= pi/2, x u < pi/2), where tan increases, so
-//     H(u) < mu iff f(u) = b tan u - a tan w < 0. Paper: g(u) = u + tan u - s increases on
-//     (-pi/2, pi/2). f (or g) at each end is enclosed by the mean value form about the centre,
+//     H(u) < mu iff f(u) = x tan u - tan w < 0 (for a pair b tan u - a tan w, by integer
+//     products). Paper: g(u) = u + tan u - s increases on (-pi/2, pi/2). f (or g) at each end is
+//     enclosed by the mean value form about the centre,
 //     f(v) = f(c) + f'(xi) (v - c) with xi between c and v: f(c) from the centre's enclosures at
 //     full precision, f' over the hull of c and the ends from the addition formula with the
 //     remainder |r| <= |d|^5/7 for |d| <= 1/4 (tan's Taylor coefficients are positive, so
 //     0 <= r <= d^5 (tan(1/4) - 1/4 - 1/192) 4^5 < 0.137 d^5 for d >= 0; r is odd), at the bits
 //     its product with v - c (about 2^-(prec/2) of c) needs. No tangent is evaluated at an end.
+//     For a certificate the ends' outward roundings to D decimal digits, within e (a unit in the
+//     D-th digit) beyond lo and hi, bracket the root too, H being increasing, wherever they stay
+//     in (0, pi/2); so the decimals written are proved without being read back.
 //  3. From the bracket: T = tan([lo, hi]) by the same mean value form (1 + tan^2 over the hull),
 //     and for the theorem sqrt(G(u)) = x sqrt(1-x^2) t^2/sqrt((1 + t^2)(1 + x^2 t^2)), t = tan u,
 //     increasing in t: r_res = v sqrt(G(u*)) over T (theorem_radius).
@@ -31,6 +39,7 @@
 #include <gyrores/core/double_double.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/integer.hpp>
+#include <gyrores/core/status.hpp>
 #include <gyrores/model/pair.hpp>
 
 namespace gyrores {
@@ -74,46 +83,66 @@ double paper_root_double(double s);
 
 // ---- enclosures at an explicit precision ----
 
-// The pair's constants as intervals at one precision.
+// The constants as intervals at one precision: a pair's a, b (x = b/a), x, x^2, sqrt(1 - x^2),
+// sqrt(tau sigma), pi and the integers a, b (ratio = true: the solver multiplies by the integers,
+// O(prec) each, where an interval x would cost a full product); any coupling's x and pi only.
 struct theorem_constants {
   explicit theorem_constants(mpfr_prec_t p) : prec(p), a(p), b(p), x(p), x2(p), s1mx2(p), sqrt_ts(p), pi(p) {}
   mpfr_prec_t prec;
   // a, b, x = b/a, x^2, sqrt(1-x^2) = 2 sqrt(tau sigma)/a, sqrt(tau sigma), pi
   fixed_mpfi a, b, x, x2, s1mx2, sqrt_ts, pi;
-  big_int ai, bi;  // a and b as integers (a multiplication or division by one costs O(prec), not a product)
+  big_int ai, bi;      // a and b as integers (pairs)
+  bool ratio = false;  // x = bi/ai exactly
 };
 void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p);
+// Any coupling: x an interval in (0, 1) holding the exact x (for the solver: the rest unset).
+void set_theorem_constants(theorem_constants& K, const fixed_mpfi& x);
 
 // An enclosure of a root: U holds it, T = tan(U). `centre` is the last centre of the ladder,
 // tc and wc enclosures of tan(centre) and (theorem only) tan(mu - x centre), fc of the equation
-// there (step 2: f(centre) or g(centre)).
+// there (step 2: f(centre) or g(centre)). lo and hi are the proved bracket's ends before the
+// widening for decimals (U = [lo, hi] without it).
 struct root_enclosure {
-  explicit root_enclosure(mpfr_prec_t p) : u(p), centre(p), U(p), T(p), tc(p), wc(p), mu(p), fc(p) {}
+  explicit root_enclosure(mpfr_prec_t p) : u(p), centre(p), lo(p), hi(p), U(p), T(p), tc(p), wc(p), mu(p), fc(p) {}
   fixed_mpfr u, centre;   // the ladder's point, the last centre
+  fixed_mpfr lo, hi;      // the bracket's ends (their outward decimals proved too when asked)
   fixed_mpfi U, T;        // the proved bracket and tan over it
   fixed_mpfi tc, wc, mu;  // tan(centre), tan(mu - x centre), mu (theorem) or s (paper)
   fixed_mpfi fc;          // f(centre) (theorem) or g(centre) (paper)
+  long pole_bits = 0;     // L of step 1: the bits tan loses near pi/2 (0 for pairs and the paper)
+  unsigned decimals = 0;  // D when lo, hi are proved with their outward roundings to D digits, else 0
 };
 
-// The theorem's root for offset 0 < m < a (mu = pi m/(2a) < pi/2; true for m_min and the fast
-// node's |m|; usage_error otherwise): r.U is a proved bracket of H^{-1}(mu) about the ladder's
-// point with relative half-width 2^-(prec - 16), r.T = tan(r.U). False when the proof fails at
-// this precision (the caller doubles it); never a wrong enclosure.
-bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
+// THE proved solver of H(u) = mu (steps 1-2), for any coupling: r.mu holds the exact mu, and
+// 0 < mu <= pi/2 exactly (not checked: the caller's integers decide it); K's precision. Proved:
+// r.U is a bracket of H^{-1}(mu) about the ladder's point with relative half-width
+// 2^-(prec - 16), r.T = tan(r.U). With decimal_digits = D > 0 the ends r.lo, r.hi are then
+// proved with their outward roundings to D digits too (r.decimals = D, and r.U holds them), unless
+// such a decimal would leave (0, pi/2) (a root within 10^-D of pi/2: r.decimals = 0). Not proved:
+// the status says which step failed at this precision (the caller doubles it); never a wrong
+// enclosure.
+proof_status prove_theorem_root(root_enclosure& r, const theorem_constants& K, unsigned decimal_digits = 0);
 
-// The ladder alone (step 1): r.u, r.centre, r.tc, r.wc, r.fc, r.mu for offset m; false if the
-// centre's enclosures could not be formed.
-bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m);
+// A pair's root for offset 0 < m < a (mu = pi m/(2a) < pi/2; true for m_min and the fast
+// node's |m|; usage_error otherwise), as above.
+proof_status prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m,
+                                unsigned decimal_digits = 0);
 
-// Step 2 for the theorem: true if H(lo) < mu < H(hi) is proved for every lo in LO and hi in HI
-// (then the root lies in (lo, hi)); T receives tan([lo, hi]). False (nothing proved) unless
+// The ladder alone (step 1): r.u, r.centre, r.tc, r.wc, r.fc for r.mu (the second form sets
+// r.mu = pi m/(2a) for a pair's offset m, as prove_theorem_root); not proved if the centre's
+// enclosures could not be formed.
+proof_status theorem_centre(root_enclosure& r, const theorem_constants& K);
+proof_status theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m);
+
+// Step 2 for the theorem: proved if H(lo) < mu < H(hi) is proved for every lo in LO and hi in HI
+// (then the root lies in (lo, hi)); T receives tan([lo, hi]). Refused (out of domain) unless
 // 0 < LO, HI < pi/2 and both lie within 2^-10 of r.centre.
-bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& LO,
-                           const fixed_mpfi& HI, fixed_mpfi& T);
+proof_status prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const fixed_mpfi& LO,
+                                   const fixed_mpfi& HI, fixed_mpfi& T);
 
 // The paper's root of u + tan u = s for s = pi m/(2b) (any integer m with |m| <= b): as
 // prove_theorem_root. m = 0 gives the exact root 0.
-bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
+proof_status prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m);
 
 // out = pi m/(2 d) at K's precision (d = K.ai: the theorem's mu; d = K.bi: the paper's s).
 void pi_ratio(fixed_mpfi& out, const theorem_constants& K, const big_int& m, const big_int& d);

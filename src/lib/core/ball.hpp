@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include <gyrores/core/enclosure.hpp>
+#include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/quadratic.hpp>
 #include <gyrores/core/rational.hpp>
 
@@ -113,6 +114,21 @@ inline void set_interval(arb_t out, const big_rational& lo, const big_rational& 
   set_rational(b, hi, prec);
   arb_union(out, a, b, prec);
 }
+
+// An exact copy of a finite arf, an MPFR number of its own bits.
+inline exact_binary binary_of(const arf_t v) {
+  exact_binary out(std::max<slong>(2, arf_bits(v)));
+  arf_get_mpfr(out.get(), v, MPFR_RNDN);
+  return out;
+}
+
+// The interval of a finite ball (its ends rounded outward to the interval's precision), and the
+// ball of an interval.
+inline void interval_of(fixed_mpfi& out, const arb_t v) {
+  mpfi_ptr p = out;
+  arb_get_interval_mpfr(&p->left, &p->right, v);
+}
+inline void set_ball(arb_t out, const fixed_mpfi& v, slong prec) { arb_set_interval_mpfr(out, v.left(), v.right(), prec); }
 
 // The ball holding an enclosure, and the enclosure of a finite ball (its ends exactly, at `prec`
 // bits rounded outward: arb_get_interval_mpfr).

@@ -83,28 +83,52 @@ long decimal_length(const big_int& v) { return long(v.str().size()); }
 
 }  // namespace
 
-std::string format_rational_scientific(const big_rational& q, unsigned digits) {
-  if (digits < 1) digits = 1;
+namespace {
+
+// |q| = n 10^(e10 - digits + 1), n of `digits` digits, rounded in magnitude: to nearest with ties
+// to even (dir 0), down (-1) or up (+1); `exact` when no rounding happened. q != 0.
+big_int decimal_digits_of(const big_rational& q, unsigned digits, int dir, long& e10, bool& exact) {
   const long d = long(digits);
-  if (q == 0) return scientific_text(false, std::string(std::size_t(d), '0'), 0);
   big_int num = boost::multiprecision::numerator(q), den = boost::multiprecision::denominator(q);
-  const bool neg = num < 0;
-  if (neg) num = -num;
+  if (num < 0) num = -num;
   // e10 = floor(log10 |q|): 10^e10 <= num/den < 10^(e10+1); the length difference is within 1.
-  long e10 = decimal_length(num) - decimal_length(den);
+  e10 = decimal_length(num) - decimal_length(den);
   auto at_least = [&](long e) { return e >= 0 ? num >= den * pow10(e) : num * pow10(-e) >= den; };
   if (!at_least(e10)) --e10;
-  // N = round(|q| 10^(d-1-e10)) with ties to even, in integers.
   const long s = d - 1 - e10;
   big_int top = s >= 0 ? big_int(num * pow10(s)) : num, bottom = s >= 0 ? den : big_int(den * pow10(-s));
   big_int n = top / bottom, rem = top - n * bottom;
+  exact = rem == 0;
   const int cmp = big_int(2 * rem).compare(bottom);
-  if (cmp > 0 || (cmp == 0 && (n & 1) != 0)) ++n;
+  if (dir > 0 ? !exact : dir == 0 && (cmp > 0 || (cmp == 0 && (n & 1) != 0))) ++n;
   if (n == pow10(d)) {  // rounded up to 10^d: one more decade, d digits 100...0
     n = pow10(d - 1);
     ++e10;
   }
-  return scientific_text(neg, n.str(), e10);
+  return n;
+}
+
+}  // namespace
+
+std::string format_rational_scientific(const big_rational& q, unsigned digits, bool* exact) {
+  if (digits < 1) digits = 1;
+  if (exact) *exact = true;
+  if (q == 0) return scientific_text(false, std::string(std::size_t(digits), '0'), 0);
+  long e10 = 0;
+  bool is_exact = false;
+  const big_int n = decimal_digits_of(q, digits, 0, e10, is_exact);
+  if (exact) *exact = is_exact;
+  return scientific_text(q < 0, n.str(), e10);
+}
+
+big_rational decimal_rounded(const big_rational& q, unsigned digits, int dir) {
+  if (q == 0) return q;
+  long e10 = 0;
+  bool exact = false;
+  const big_int n = decimal_digits_of(q, digits, q < 0 ? -dir : dir, e10, exact);
+  const long s = long(digits) - 1 - e10;
+  const big_rational v = s >= 0 ? big_rational(n, pow10(s)) : big_rational(big_int(n * pow10(-s)));
+  return q < 0 ? big_rational(-v) : v;
 }
 
 bool int_is_square(const big_int& v, big_int& root) {

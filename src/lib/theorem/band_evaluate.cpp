@@ -6,8 +6,9 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/theorem/horizon.hpp>
+#include <gyrores/theorem/root.hpp>
 
-#include "lobe_balls.hpp"
+#include "kernels_arb.hpp"
 
 namespace gyrores::band_detail {
 
@@ -179,60 +180,25 @@ big_int band_arith::cut_lobe(const band_coupling& c) const {
   return z.value();
 }
 
-// H_x^{-1}(target), target a ball in [0, pi/2] (x = c.x, a point): Newton on midpoints from a
-// double start, then a bracket decided at both ends (H increases: H(lo) < target < H(hi)).
+// H_x^{-1}(target), target a ball in [0, pi/2] (x = c.x, a point), by the one solver of
+// H(u) = mu (theorem/root.hpp), with x and mu as intervals; its failure at this precision is a
+// precision_shortfall (the band's loop raises the precision).
 void band_arith::lobe_root(arb_t out, const band_coupling& c, const arb_t target) const {
-  ball x;
-  set_quadratic(x, c.x, prec_);
-  const double xd = c.x.approx(), cd = arf_get_d(arb_midref(target), ARF_RND_NEAR);
-  if (cd <= 0) {
+  if (arb_is_zero(target)) {
     arb_zero(out);
     return;
   }
-  double lo = 0, hi = M_PI / 2;
-  for (int i = 0; i < 80; ++i) {
-    const double m = (lo + hi) / 2;
-    (xd * m + std::atan2(xd * std::sin(m), std::cos(m)) < cd ? lo : hi) = m;
-  }
-  ball u, h, d, step;
-  arb_set_d(u, (lo + hi) / 2);
-  for (slong good = 40; good < 2 * prec_; good *= 2) {  // Newton doubles the good bits
-    lobe_balls::H_of(h, x, u, prec_);
-    arb_sub(h, h, target, prec_);
-    lobe_balls::dH_of(d, x, u, prec_);
-    arb_get_mid_arb(h, h);
-    arb_get_mid_arb(d, d);
-    arb_div(step, h, d, prec_);
-    arb_sub(u, u, step, prec_);
-    arb_get_mid_arb(u, u);
-  }
-  // eps: the rounding left plus the target's width over the slope (H' >= 2x).
-  ball eps, slope, floor_eps;
-  arb_get_rad_arb(eps, target);
-  lobe_balls::dH_of(slope, x, u, prec_);
-  arb_get_mid_arb(slope, slope);
-  arb_div(eps, eps, slope, prec_);
-  arb_mul_2exp_si(eps, eps, 1);
-  arb_one(floor_eps);
-  arb_mul_2exp_si(floor_eps, floor_eps, -(prec_ - 24));
-  arb_add(eps, eps, floor_eps, prec_);
-  arb_get_ubound_arf(arb_midref(eps.get()), eps, prec_);
-  mag_zero(arb_radref(eps.get()));
-  for (int tries = 0; tries < 4; ++tries, arb_mul_2exp_si(eps, eps, 12)) {
-    ball a, b, ha, hb;
-    arb_sub(a, u, eps, prec_);
-    arb_add(b, u, eps, prec_);
-    arb_get_mid_arb(a, a);
-    arb_get_mid_arb(b, b);
-    if (arb_is_negative(a)) arb_zero(a);
-    lobe_balls::H_of(ha, x, a, prec_);
-    lobe_balls::H_of(hb, x, b, prec_);
-    if ((arb_is_zero(a) || arb_lt(ha, target)) && arb_gt(hb, target)) {
-      arb_union(out, a, b, prec_);
-      return;
-    }
-  }
-  throw precision_shortfall("a lobe's root H^{-1}(c) was not bracketed");
+  ball x;
+  set_quadratic(x, c.x, prec_);
+  fixed_mpfi xi(prec_);
+  arb_support::interval_of(xi, x);
+  theorem_constants K(prec_);
+  set_theorem_constants(K, xi);
+  root_enclosure r(prec_);
+  arb_support::interval_of(r.mu, target);
+  const proof_status proved = prove_theorem_root(r, K);
+  if (!proved) throw precision_shortfall(proved.reason());
+  arb_support::set_ball(out, r.U, prec_);
 }
 
 void band_arith::signed_root(arb_t out, const band_coupling& c, const quadratic_number& signed_nu) const {
@@ -251,7 +217,7 @@ void band_arith::V(arb_t out, const band_coupling& c, const quadratic_number& nu
   ball u, x;
   signed_root(u, c, nu);
   set_quadratic(x, c.x, prec_);
-  lobe_balls::G_of(out, x, u, prec_);
+  kernels_arb::G(out, x, u, prec_);
   if (!arb_is_finite(out)) throw precision_shortfall("a lobe value V_x(nu) was not enclosed");
 }
 
@@ -377,19 +343,21 @@ std::pair<big_rational, big_rational> band_arith::end_point_range(const band_cou
   return {*inf, *sup};
 }
 
+// The proofs of the horizon theorem at one coupling, at this precision's digits: their enclosures'
+// exact ends (2 h_min = the minimum of R).
 std::pair<big_rational, big_rational> band_arith::minimum_at(const band_coupling& c, const stop_token& stop) const {
   const unsigned digits = std::clamp<unsigned>(unsigned(prec_ / 4), 12, report_digits_max - 3);
-  const horizon_minimum_report h = prove_horizon_minimum(c.spec, T_, digits, stop);
-  return {parse_rational(h.h_min.enclosure.first, "h_min") * 2, parse_rational(h.h_min.enclosure.second, "h_min") * 2};
+  const horizon_minimum_proof h = prove_horizon_minimum(c.spec, T_, {digits, {}}, proof_use::report, stop);
+  return {h.h_min.lo_rational() * 2, h.h_min.hi_rational() * 2};
 }
 
 std::optional<std::pair<big_rational, big_rational>> band_arith::first_below_at(const band_coupling& c,
                                                                                 const big_rational& E,
                                                                                 const stop_token& stop) const {
   const unsigned digits = std::clamp<unsigned>(unsigned(prec_ / 4), 12, report_digits_max - 3);
-  const first_below_report f = prove_first_below(c.spec, E, digits, stop);
-  if (f.never) return std::nullopt;
-  return std::pair{parse_rational(f.t_below.enclosure.first, "t"), parse_rational(f.t_below.enclosure.second, "t")};
+  const first_below_proof f = prove_first_below(c.spec, E, {digits, {}}, proof_use::report, stop);
+  if (f.kase == below_case::never) return std::nullopt;
+  return std::pair{f.t_below.lo_rational(), f.t_below.hi_rational()};
 }
 
 std::pair<big_rational, big_rational> band_arith::middle_third(const band_coupling& a, const band_coupling& b) const {

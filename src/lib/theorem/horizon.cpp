@@ -3,36 +3,31 @@
 
 #include <arb.h>
 
-#include "../core/ball.hpp"
-#include "lobe_balls.hpp"
-
 #include <algorithm>
-#include <functional>
 
-#include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/refine.hpp>
 #include <gyrores/model/rotation.hpp>
+#include <gyrores/theorem/root.hpp>
+
+#include "../core/ball.hpp"
+#include "../core/ball_root.hpp"
+#include "kernels_arb.hpp"
 
 namespace gyrores {
 namespace {
 
 using namespace arb_support;
 
-// The precision a proof may reach before it gives up (compute_error): 64 times its start, and
-// at least 2^16 bits. Only a tie (the end point R(T) equal to a lobe's minimum, a level equal
-// to one) needs more, and a tie is never decided.
-slong precision_cap(slong prec0) { return std::max<slong>(prec0 << 6, slong(1) << 16); }
-std::string bits_text(slong prec0) { return std::to_string(precision_cap(prec0)) + " bits"; }
-
-// The coupling at one precision: x, s = sqrt(n^2 + 4), |n|, sqrt(1 - x^2), pi.
+// The coupling at one precision: x, S = sqrt(n^2 + 4), sqrt(1 - x^2) and pi as balls, and x as
+// the interval of the solver of H(u) = mu (theorem/root.hpp).
 struct coupling_balls {
   slong prec;
-  ball x, s, n, c, pi;
-  coupling_balls(const coupling_spec& spec, const quadratic_number& xq, slong p) : prec(p) {
+  ball x, s, c, pi;
+  theorem_constants K;
+  coupling_balls(const coupling_spec& spec, const quadratic_number& xq, slong p) : prec(p), K(p) {
     set_quadratic(x, xq, prec);
-    set_rational(n, spec.n2, prec);
-    arb_sqrt(n, n, prec);
     set_rational(s, spec.n2 + 4, prec);
     arb_sqrt(s, s, prec);
     ball x2;
@@ -41,203 +36,67 @@ struct coupling_balls {
     arb_neg(c, c);
     arb_sqrt(c, c, prec);
     arb_const_pi(pi, prec);
-  }
-
-  // H, H' and G of theorem/lobe_balls.hpp at this coupling's x (|u| <= pi/2 here).
-  void H(arb_t out, const arb_t u) const { lobe_balls::H_of(out, x, u, prec); }
-  void dH(arb_t out, const arb_t u) const { lobe_balls::dH_of(out, x, u, prec); }
-  void G(arb_t out, const arb_t u) const { lobe_balls::G_of(out, x, u, prec); }
-  // dG/du = (1 - x^2) x^2 sin^3 u cos u (4 E - 2 sin^2 u (x^2 - 1)) / E^2, for Newton only.
-  void dG(arb_t out, const arb_t u) const {
-    ball sn, cs, xs, e, t, w;
-    arb_sin_cos(sn, cs, u, prec);
-    arb_mul(xs, x, sn, prec);
-    arb_mul(xs, xs, xs, prec);
-    arb_mul(t, cs, cs, prec);
-    arb_add(e, t, xs, prec);
-    arb_mul(t, sn, sn, prec);                 // sin^2
-    arb_mul(w, c, c, prec);                   // 1 - x^2
-    arb_mul(out, t, w, prec);                 // (1 - x^2) sin^2
-    arb_mul_2exp_si(out, out, 1);             // 2 (1 - x^2) sin^2 = -2 sin^2 (x^2 - 1)
-    arb_mul_2exp_si(e, e, 2);
-    arb_add(out, out, e, prec);               // 4E + 2 (1 - x^2) sin^2
-    arb_mul_2exp_si(e, e, -2);
-    arb_mul(out, out, w, prec);
-    arb_mul(w, x, x, prec);
-    arb_mul(out, out, w, prec);
-    arb_mul(out, out, t, prec);
-    arb_mul(out, out, sn, prec);
-    arb_mul(out, out, cs, prec);
-    arb_mul(e, e, e, prec);
-    arb_div(out, out, e, prec);
-  }
-  // R = q^2 + q'^2 (qdot0 = 1) at alpha = s t/2, beta = x alpha, and dR/dalpha = -4 n q' z'/s.
-  void R(arb_t out, const arb_t alpha) const {
-    ball sa, ca, sb, cb, b, q, qd, t;
-    arb_mul(b, x, alpha, prec);
-    arb_sin_cos(sa, ca, alpha, prec);
-    arb_sin_cos(sb, cb, b, prec);
-    arb_mul(q, sa, cb, prec);
-    arb_mul(q, q, c, prec);
-    arb_mul(qd, ca, cb, prec);
-    arb_mul(t, sa, sb, prec);
-    arb_mul(t, t, x, prec);
-    arb_sub(qd, qd, t, prec);
-    arb_mul(q, q, q, prec);
-    arb_mul(qd, qd, qd, prec);
-    arb_add(out, q, qd, prec);
-  }
-  void dR(arb_t out, const arb_t alpha) const {
-    ball sa, ca, sb, cb, b, qd, zd, t;
-    arb_mul(b, x, alpha, prec);
-    arb_sin_cos(sa, ca, alpha, prec);
-    arb_sin_cos(sb, cb, b, prec);
-    arb_mul(qd, ca, cb, prec);
-    arb_mul(t, sa, sb, prec);
-    arb_mul(t, t, x, prec);
-    arb_sub(qd, qd, t, prec);
-    arb_mul(zd, sa, cb, prec);
-    arb_mul(zd, zd, x, prec);
-    arb_mul(t, ca, sb, prec);
-    arb_add(zd, zd, t, prec);
-    arb_mul(out, qd, zd, prec);
-    arb_mul(out, out, n, prec);
-    arb_mul_2exp_si(out, out, 2);
-    arb_div(out, out, s, prec);
-    arb_neg(out, out);
+    fixed_mpfi xi(p);
+    interval_of(xi, x);
+    set_theorem_constants(K, xi);
   }
 };
 
-using ball_fn = std::function<void(arb_t, const arb_t)>;
-
-// out = max(1, |u|): the scale of a convergence test.
-void unit_floor(arb_t out, const arb_t u) {
-  arb_abs(out, u);
-  ball one;
-  arb_one(one);
-  if (arb_lt(out, one)) arb_one(out);
+// The enclosure of a ball (its ends at 64 bits more, outward); undecided when not finite.
+proof_status enclosure_from(const arb_t v, slong prec, enclosure& out) {
+  if (!arb_is_finite(v)) return proof_status::undecided("an enclosure is not finite at this precision");
+  out = enclosure_of(v, prec + 64);
+  return proof_status::proved();
 }
 
-// The root of g in (lo, hi) where g < 0 before the root and g > 0 after it (g need not be
-// monotone elsewhere, only this sign pattern holds: the callers prove it), enclosed in a ball:
-// safeguarded Newton on exact midpoints, then the ends of a tiny bracket [a, b] are decided:
-// g(a) < 0 < g(b) proves a < root < b. False when this precision cannot decide (raise it).
-// A bracket whose ends (midpoints at this precision) are in the wrong order or where g has the
-// wrong sign is refused at once (false, and the caller raises the precision): it happens when
-// the ends are closer than the precision can tell, or where g is steep (for a tiny x, H rises
-// from about 0 to pi/2 within x of pi/2).
-bool prove_root(const ball_fn& g, const ball_fn& dg, const arb_t lo_in, const arb_t hi_in, slong prec, arb_t out) {
-  ball lo, hi, u, gu, du, step, next, width;
-  arb_get_mid_arb(lo, lo_in);
-  arb_get_mid_arb(hi, hi_in);
-  g(gu, lo);
-  g(du, hi);
-  if (arb_gt(lo, hi) || arb_is_positive(gu) || arb_is_negative(du)) return false;
-  arb_add(u, lo, hi, prec);
-  arb_mul_2exp_si(u, u, -1);
-  arb_get_mid_arb(u, u);
-  bool converged = false;
-  for (int it = 0; it < 4 * int(prec) + 200 && !converged; ++it) {
-    g(gu, u);
-    if (arb_is_negative(gu)) arb_set(lo, u);
-    else if (arb_is_positive(gu)) arb_set(hi, u);
-    dg(du, u);
-    bool newton = false;
-    if (arb_is_finite(du) && !arb_contains_zero(du)) {
-      arb_get_mid_arb(step, gu);
-      arb_get_mid_arb(next, du);
-      arb_div(step, step, next, prec);
-      arb_sub(next, u, step, prec);
-      arb_get_mid_arb(next, next);
-      newton = arb_gt(next, lo) && arb_lt(next, hi);
-      // Converged: the Newton step is below 2^(-prec + 8) relative to max(1, |u|).
-      arb_abs(step, step);
-      arb_get_mid_arb(step, step);
-      ball scale;
-      unit_floor(scale, u);
-      arb_mul_2exp_si(scale, scale, -prec + 8);
-      if (newton && arb_lt(step, scale)) converged = true;
-    }
-    if (newton) arb_set(u, next);
-    else {
-      arb_sub(width, hi, lo, prec);
-      arb_add(u, lo, hi, prec);
-      arb_mul_2exp_si(u, u, -1);
-      arb_get_mid_arb(u, u);
-      ball scale;
-      unit_floor(scale, u);
-      arb_mul_2exp_si(scale, scale, -prec + 8);
-      if (arb_lt(width, scale)) converged = true;
-    }
-  }
-  // The bracket: u -+ eps, eps = 2^(-prec + shift) max(1, |u|) plus 4 rad(g(u))/|g'(u)| (the
-  // uncertainty of g itself, e.g. of a target given as a ball).
-  ball slack;
-  g(gu, u);
-  dg(du, u);
-  arb_zero(slack);
-  if (arb_is_finite(du) && !arb_contains_zero(du)) {
-    arb_get_rad_arb(slack, gu);
-    ball slope;
-    arb_get_mid_arb(slope, du);
-    arb_abs(slope, slope);
-    arb_div(slack, slack, slope, prec);
-    arb_mul_2exp_si(slack, slack, 2);
-    arb_get_ubound_arf(arb_midref(slack.get()), slack, prec);
-    mag_zero(arb_radref(slack.get()));
-  }
-  for (slong shift = 12; shift <= 60; shift += 16) {
-    ball eps, a, b, ga, gb;
-    unit_floor(eps, u);
-    arb_mul_2exp_si(eps, eps, -prec + shift);
-    arb_add(eps, eps, slack, prec);
-    arb_get_mid_arb(eps, eps);
-    arb_sub(a, u, eps, prec);
-    arb_add(b, u, eps, prec);
-    arb_get_mid_arb(a, a);
-    arb_get_mid_arb(b, b);
-    g(ga, a);
-    g(gb, b);
-    if (arb_is_negative(ga) && arb_is_positive(gb)) {
-      arb_set_interval_arf(out, arb_midref(a.get()), arb_midref(b.get()), prec);
-      return true;
-    }
-  }
-  return false;
+// h_min = R/2 and r_min = sqrt(R) from a ball of the minimum R.
+proof_status set_minimum(const arb_t R, slong prec, horizon_minimum_proof& r) {
+  ball h, radius;
+  arb_sqrtpos(radius, R, prec);
+  arb_mul_2exp_si(h, R, -1);
+  GYRORES_TRY_PROOF(enclosure_from(h, prec, r.h_min));
+  return enclosure_from(radius, prec, r.r_min);
 }
 
-ball_fn constant_minus(const ball_fn& f, const arb_t target, slong prec) {
-  return [f, target, prec](arb_t out, const arb_t u) {
-    f(out, u);
-    arb_sub(out, out, target, prec);
-  };
+// A certificate's decimals (horizon.hpp) that cannot be: compute_error at once.
+[[noreturn]] void no_decimals(const std::string& what, unsigned decimals) {
+  throw compute_error("coupling certificate: " + what + " within 10^-" + std::to_string(decimals) +
+                      ", where the certificate's decimals cannot decide it");
 }
 
-// u0 = H^{-1}(pi nu) in [0, pi/2) for nu in [0, 1/2] (exactly 0 for nu = 0).
-bool prove_lobe_root(const coupling_balls& cb, const quadratic_number& nu, arb_t out) {
-  if (nu.sign() == 0) {
-    arb_zero(out);
-    return true;
+// The root u0 = H^{-1}(pi nu) of a lobe (exactly 0 for nu = 0) by the one solver, for a
+// certificate (decimals > 0) with its bracket's decimals to `decimals` digits; u0 as a ball.
+proof_status prove_root_of(const coupling_balls& cb, const horizon_lobe& lobe, unsigned decimals, lobe_root& out,
+                           arb_t u0) {
+  out.lobe = lobe;
+  if (lobe.nu.sign() == 0) {
+    out.bracket = {enclosure(), decimals};
+    out.u = enclosure();
+    arb_zero(u0);
+    return proof_status::proved();
   }
-  ball target, lo, hi;
-  set_quadratic(target, nu, cb.prec);
-  arb_mul(target, target, cb.pi, cb.prec);
-  arb_zero(lo);
-  arb_set(hi, cb.pi);
-  arb_mul_2exp_si(hi, hi, -1);  // H(pi/2) = (1 + x) pi/2 > pi nu
-  auto H = [&cb](arb_t o, const arb_t u) { cb.H(o, u); };
-  auto dH = [&cb](arb_t o, const arb_t u) { cb.dH(o, u); };
-  return prove_root(constant_minus(H, target, cb.prec), dH, lo, hi, cb.prec, out);
+  ball mu;
+  set_quadratic(mu, lobe.nu, cb.prec);
+  arb_mul(mu, mu, cb.pi, cb.prec);
+  root_enclosure r(cb.prec);
+  interval_of(r.mu, mu);
+  GYRORES_TRY_PROOF(prove_theorem_root(r, cb.K, decimals));
+  if (r.decimals < decimals) no_decimals("a lobe's root lies next to pi/2", decimals);
+  out.bracket = {enclosure(r.lo, r.hi), r.decimals};
+  out.u = enclosure(r.U);
+  set_ball(u0, r.U, cb.prec);
+  return proof_status::proved();
 }
 
-// The lobe's minimiser alpha = k pi + side u0, the minimum value R = G(u0) and the time 2 alpha/s.
+// A lobe's minimiser alpha = k pi + side u0, the minimum value R = G(u0) and the time 2 alpha/S.
 struct lobe_point {
+  lobe_root root;
   ball u0, alpha, value, t;
 };
 
-bool prove_lobe_point(const coupling_balls& cb, const horizon_lobe& lobe, lobe_point& p) {
-  if (!prove_lobe_root(cb, lobe.nu, p.u0)) return false;
-  cb.G(p.value, p.u0);
+proof_status prove_lobe_point(const coupling_balls& cb, const horizon_lobe& lobe, unsigned decimals, lobe_point& p) {
+  GYRORES_TRY_PROOF(prove_root_of(cb, lobe, decimals, p.root, p.u0));
+  kernels_arb::G(p.value, cb.x, p.u0, cb.prec);
   set_int(p.alpha, lobe.k);
   arb_mul(p.alpha, p.alpha, cb.pi, cb.prec);
   ball su;
@@ -245,34 +104,7 @@ bool prove_lobe_point(const coupling_balls& cb, const horizon_lobe& lobe, lobe_p
   arb_add(p.alpha, p.alpha, su, cb.prec);
   arb_mul_2exp_si(p.t, p.alpha, 1);
   arb_div(p.t, p.t, cb.s, cb.prec);
-  return true;
-}
-
-// The correct rounding of a ball to `digits` digits, with its enclosure (digits + 3, outward).
-bool round_ball(const arb_t v, unsigned digits, slong prec, proved_real& out) {
-  if (!arb_is_finite(v)) return false;
-  fixed_mpfr lo(prec + 64), hi(prec + 64);
-  arb_get_interval_mpfr(lo, hi, v);
-  if (!enclosure_rounding(lo, hi, digits, out.value)) return false;
-  out.enclosure = {format_scientific(static_cast<mpfr_srcptr>(lo), digits + 3, MPFR_RNDD),
-                   format_scientific(static_cast<mpfr_srcptr>(hi), digits + 3, MPFR_RNDU)};
-  return true;
-}
-
-proved_real exact_rational_value(const big_rational& v, unsigned digits) {
-  proved_real out;
-  out.value = format_rational_scientific(v, digits);
-  const std::string e = format_rational_scientific(v, digits + 3);
-  out.enclosure = {e, e};
-  if (v != parse_rational(e, "enclosure")) {
-    // Outward: the (digits + 3)-digit text is not exact; widen by one unit of its last place.
-    fixed_mpfr lo(64 + 4 * (digits + 3)), hi(64 + 4 * (digits + 3));
-    mpfr_set_q(lo, v.backend().data(), MPFR_RNDD);
-    mpfr_set_q(hi, v.backend().data(), MPFR_RNDU);
-    out.enclosure = {format_scientific(static_cast<mpfr_srcptr>(lo), digits + 3, MPFR_RNDD),
-                     format_scientific(static_cast<mpfr_srcptr>(hi), digits + 3, MPFR_RNDU)};
-  }
-  return out;
+  return proof_status::proved();
 }
 
 horizon_lobe lobe_of(const quadratic_number& x, const big_int& k) {
@@ -288,15 +120,18 @@ slong magnitude_bits(const big_rational& v) {
   return v == 0 ? 0 : bits(boost::multiprecision::numerator(v)) - bits(boost::multiprecision::denominator(v)) + 1;
 }
 
-// The starting precision: the digits asked, plus twice the bits of the integer part of `scale`
-// (the phases reach about scale and must keep the digits after their integer part), plus
-// log2(1/x) for a small coupling (H rises steeply within x of pi/2, and x pi/2 must show).
-slong start_bits(unsigned digits, const big_rational& scale, const coupling_spec& spec) {
-  return slong(digits * 3.33) + 64 + 2 * std::max<slong>(0, magnitude_bits(scale)) +
+// The starting precision: the digits asked and 64 guard bits, plus twice the bits of the integer
+// part of `scale` (the phases reach about scale and must keep the digits after their integer
+// part), plus log2(1/x) for a small coupling (H rises steeply within x of pi/2, and x pi/2 must
+// show).
+mpfr_prec_t start_bits(unsigned digits, const big_rational& scale, const coupling_spec& spec) {
+  return mpfr_prec_t(digits10_to_bits(digits)) + 64 + 2 * std::max<slong>(0, magnitude_bits(scale)) +
          std::max<slong>(0, -magnitude_bits(spec.n2) / 2);
 }
 
-// alpha_T = s T/2 as a ball.
+precision_plan plan_of(mpfr_prec_t start) { return {start, tie_bits_cap(start)}; }
+
+// alpha_T = S T/2 as a ball.
 void set_alpha_T(arb_t out, const coupling_balls& cb, const horizon_time& T) {
   set_rational(out, T.value, cb.prec);
   arb_mul(out, out, cb.s, cb.prec);
@@ -304,10 +139,10 @@ void set_alpha_T(arb_t out, const coupling_balls& cb, const horizon_time& T) {
   if (T.times_pi) arb_mul(out, out, cb.pi, cb.prec);
 }
 
-// k_c = floor(alpha_T/pi + 1/2), exactly. For T = value pi it is floor(s value/2 + 1/2) with
-// s = sqrt(Q (P + 4Q))/Q in Q(sqrt d); for a rational T > 0 the argument is transcendental (pi), so
+// k_c = floor(alpha_T/pi + 1/2), exactly. For T = value pi it is floor(S value/2 + 1/2) with
+// S = sqrt(Q (P + 4Q))/Q in Q(sqrt d); for a rational T > 0 the argument is transcendental (pi), so
 // it is never an integer and a fine enough ball decides the floor.
-big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const horizon_time& T, slong prec,
+big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const horizon_time& T, mpfr_prec_t start,
                     const stop_token& stop) {
   if (T.value == 0) return 0;
   if (T.times_pi) {
@@ -316,9 +151,7 @@ big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const 
     const quadratic_number s = int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
     return (s * quadratic_number(T.value / 2) + quadratic_number(1, 2)).floor();
   }
-  const slong prec0 = prec;
-  for (; prec <= precision_cap(prec0); prec *= 2) {
-    stop.throw_if_requested();
+  return refine(plan_of(start), stop, "horizon: the lobe holding t = T", [&](mpfr_prec_t prec, proof_status& status) {
     coupling_balls cb(spec, x, prec);
     ball a, f, half;
     set_alpha_T(a, cb, T);
@@ -327,83 +160,105 @@ big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const 
     arb_add(a, a, half, prec);
     arb_floor(f, a, prec);
     fmpz_holder z;
-    if (arb_get_unique_fmpz(z, f)) return z.value();
+    if (arb_get_unique_fmpz(z, f)) return std::optional<big_int>(z.value());
+    status = proof_status::undecided("the floor of S T/(2 pi) + 1/2");
+    return std::optional<big_int>();
+  });
+}
+
+// The exact half of the minimum's proof: the cut lobe and the best full lobe.
+struct horizon_setup {
+  const coupling_spec& spec;
+  horizon_time T;
+  quadratic_number x;
+  big_int cut_lobe;
+  std::optional<horizon_lobe> full;  // the best of the lobes 0..k_c - 1
+  horizon_lobe cut;
+  unsigned decimals;
+};
+
+// The minimum over [0, T] at one precision (proofs/horizon-theorem.md, items 2-3).
+proof_status minimum_at(const horizon_setup& h, slong prec, horizon_minimum_proof& r) {
+  coupling_balls cb(h.spec, h.x, prec);
+  ball alpha_T;
+  set_alpha_T(alpha_T, cb, h.T);
+  lobe_point cut;
+  GYRORES_TRY_PROOF(prove_lobe_point(cb, h.cut, h.decimals, cut));
+  r.cut = cut.root;
+  if (arb_le(cut.alpha, alpha_T)) r.cut_lobe_reached = true;
+  else if (arb_gt(cut.alpha, alpha_T)) r.cut_lobe_reached = false;
+  else return proof_status::undecided("whether the cut lobe's minimiser lies before T");
+  // The winner among lobes: the smaller nu, ties to the earlier lobe (exact comparison).
+  std::optional<horizon_lobe> best = h.full;
+  if (r.cut_lobe_reached && (!best || h.cut.nu < best->nu)) best = h.cut;
+  lobe_point bp;
+  if (best && best->k == h.cut_lobe) bp = cut;
+  else if (best) GYRORES_TRY_PROOF(prove_lobe_point(cb, *best, h.decimals, bp));
+  if (best) r.best = bp.root;
+  if (!r.cut_lobe_reached) {
+    // Against the end point R(T): decided by balls (V(nu) and R(T) differ unless T is a minimiser).
+    ball end;
+    kernels_arb::R(end, cb.x, cb.c, alpha_T, prec);
+    if (!best || arb_lt(end, bp.value)) {
+      r.at_horizon_end = true;
+      r.t_min = enclosure::exact(h.T.value);
+      if (h.T.times_pi) {
+        ball t;
+        set_rational(t, h.T.value, prec);
+        arb_mul(t, t, cb.pi, prec);
+        GYRORES_TRY_PROOF(enclosure_from(t, prec, r.t_min));
+      }
+      return set_minimum(end, prec, r);
+    }
+    if (!arb_gt(end, bp.value)) return proof_status::undecided("the end point R(T) against the best lobe's minimum");
   }
-  throw compute_error("horizon: the lobe holding t = T was not decided within " + bits_text(prec0));
+  r.at_horizon_end = false;
+  GYRORES_TRY_PROOF(enclosure_from(bp.t, prec, r.t_min));
+  if (best->nu.sign() != 0) return set_minimum(bp.value, prec, r);
+  r.h_min = r.r_min = enclosure::exact(0);  // a degenerate pair's zero
+  return proof_status::proved();
 }
 
 }  // namespace
 
-horizon_minimum_report prove_horizon_minimum(const coupling_spec& spec, const horizon_time& T, unsigned digits,
-                                             stop_token stop) {
-  check_report_digits(digits);
+horizon_minimum_proof prove_horizon_minimum(const coupling_spec& spec, const horizon_time& T,
+                                            const refine_goal<horizon_minimum_proof>& goal, proof_use use,
+                                            stop_token stop) {
+  check_report_digits(goal.digits);
   if (T.value < 0) throw usage_error("the horizon must be >= 0, got " + T.str());
-  horizon_minimum_report r;
-  r.digits = digits;
-  r.horizon = T;
-  r.x = coupling_rotation_number(spec);
-  const slong prec0 = start_bits(digits, T.times_pi ? big_rational(T.value * 4) : T.value, spec);
-  r.cut_lobe = cut_lobe_of(spec, r.x, T, prec0, stop);
+  const quadratic_number x = coupling_rotation_number(spec);
+  const mpfr_prec_t start = start_bits(goal.digits, T.times_pi ? big_rational(T.value * 4) : T.value, spec);
+  const unsigned decimals = use == proof_use::certificate ? certificate_digits(goal.digits) : 0;
+  horizon_setup h{spec, T, x, cut_lobe_of(spec, x, T, start, stop), std::nullopt, {}, decimals};
   // The best full lobe (exact), and the cut lobe.
-  std::optional<horizon_lobe> full;
-  if (r.cut_lobe >= 1) full = lobe_of(r.x, min_distance_to_half(r.x, big_int(r.cut_lobe - 1)).k);
-  const horizon_lobe cut = lobe_of(r.x, r.cut_lobe);
-  for (slong prec = prec0; prec <= precision_cap(prec0); prec *= 2) {
-    stop.throw_if_requested();
-    coupling_balls cb(spec, r.x, prec);
-    ball alpha_T;
-    set_alpha_T(alpha_T, cb, T);
-    lobe_point cut_point;
-    if (!prove_lobe_point(cb, cut, cut_point)) continue;
-    if (arb_le(cut_point.alpha, alpha_T)) r.cut_lobe_reached = true;
-    else if (arb_gt(cut_point.alpha, alpha_T)) r.cut_lobe_reached = false;
-    else continue;  // not decided at this precision
-    // The winner among lobes: the smaller nu, ties to the earlier lobe (exact comparison).
-    std::optional<horizon_lobe> best = full;
-    if (r.cut_lobe_reached && (!best || cut.nu < best->nu)) best = cut;
-    if (!r.cut_lobe_reached) {
-      // Against the end point R(T): decided by balls (V(nu) and R(T) differ unless T is a minimiser).
-      ball end;
-      cb.R(end, alpha_T);
-      lobe_point bp;
-      if (best && !prove_lobe_point(cb, *best, bp)) continue;
-      if (!best || arb_lt(end, bp.value)) {
-        r.at_horizon_end = true;
-        r.lobe.reset();
-        ball radius;
-        arb_sqrtpos(radius, end, prec);
-        arb_mul_2exp_si(end, end, -1);
-        if (!round_ball(end, digits, prec, r.h_min) || !round_ball(radius, digits, prec, r.r_min)) continue;
-        if (!T.times_pi) r.t_min = exact_rational_value(T.value, digits);
-        else {
-          ball t;
-          set_rational(t, T.value, prec);
-          arb_mul(t, t, cb.pi, prec);
-          if (!round_ball(t, digits, prec, r.t_min)) continue;
-        }
-        return r;
-      }
-      if (!arb_gt(end, bp.value)) continue;
-    }
-    r.at_horizon_end = false;
-    r.lobe = best;
-    lobe_point p;
-    if (!prove_lobe_point(cb, *best, p)) continue;
-    ball radius;
-    arb_sqrtpos(radius, p.value, prec);
-    arb_mul_2exp_si(p.value, p.value, -1);
-    if (best->nu.sign() == 0) {
-      r.h_min = r.r_min = exact_rational_value(0, digits);
-      if (!round_ball(p.t, digits, prec, r.t_min)) continue;
-      return r;
-    }
-    if (!round_ball(p.value, digits, prec, r.h_min) || !round_ball(p.t, digits, prec, r.t_min) ||
-        !round_ball(radius, digits, prec, r.r_min))
-      continue;
-    return r;
-  }
-  throw compute_error("horizon: the minimum over [0, " + T.str() +
-                      "] was not decided within " + bits_text(prec0) + " (the end point ties a lobe's minimum)");
+  if (h.cut_lobe >= 1) h.full = lobe_of(x, min_distance_to_half(x, big_int(h.cut_lobe - 1)).k);
+  h.cut = lobe_of(x, h.cut_lobe);
+  return refine(plan_of(start), stop, "horizon: the minimum over [0, " + T.str() + "]", [&](mpfr_prec_t bits, proof_status& status) {
+    horizon_minimum_proof r;
+    r.horizon = T;
+    r.x = x;
+    r.cut_lobe = h.cut_lobe;
+    r.bits = bits;
+    status = minimum_at(h, slong(bits), r);
+    if (status) status = goal.accepts(r);
+    return status ? std::optional<horizon_minimum_proof>(std::move(r)) : std::nullopt;
+  });
+}
+
+lobe_root certified_lobe_root(const coupling_spec& spec, const big_int& k, unsigned digits) {
+  if (k < 0) throw usage_error("a lobe index must be >= 0, got " + k.str());
+  check_report_digits(digits);
+  const quadratic_number x = coupling_rotation_number(spec);
+  horizon_lobe lobe = lobe_of(x, k);
+  if (k == 0) lobe.side = 1;  // lobe 0: only u >= 0 is in [0, T]
+  const mpfr_prec_t start = start_bits(digits, 1, spec);  // (the root depends on nu alone)
+  return refine(plan_of(start), {}, "horizon: the root of lobe " + k.str(), [&](mpfr_prec_t bits, proof_status& status) {
+    coupling_balls cb(spec, x, slong(bits));
+    lobe_root out;
+    ball u0;
+    status = prove_root_of(cb, lobe, certificate_digits(digits), out, u0);
+    return status ? std::optional<lobe_root>(std::move(out)) : std::nullopt;
+  });
 }
 
 namespace {
@@ -419,119 +274,169 @@ std::optional<big_int> first_lobe_at_most(const quadratic_number& x, const quadr
   }
 }
 
+// The first lobe k with nu_k <= delta, for every delta in [lo, hi]: undecided when the ends differ.
+proof_status first_lobe_within(const quadratic_number& x, const big_rational& lo, const big_rational& hi,
+                               const stop_token& stop, std::optional<big_int>& k) {
+  if (lo < 0) return proof_status::undecided("delta's lower end is not positive at this precision");
+  k = first_lobe_at_most(x, quadratic_number(hi), stop);
+  if (k != first_lobe_at_most(x, quadratic_number(lo), stop))
+    return proof_status::undecided("delta is too close to some lobe's ||k x - 1/2||");
+  return proof_status::proved();
+}
+
+// The first lobe whose minimum reaches 2E (none: never), from delta = H(G^{-1}(2E))/pi
+// (horizon-theorem item 5) when 2E < G(pi/2) = 1 - x^2, with the level root's bracket and
+// delta's enclosure in r. For a certificate (decimals > 0) delta is H over the level root's
+// decimal bracket, and the lobe must be the same for every value within 2 units of the last of
+// delta's decimals about it (every decimal a certificate may write for delta lies there), or no
+// certificate can state it. Otherwise delta >= 1/2: lobe 0 reaches the level.
+proof_status first_lobe_at_level(const coupling_balls& cb, const quadratic_number& x, const arb_t level,
+                                 unsigned decimals, const stop_token& stop, first_below_proof& r,
+                                 std::optional<big_int>& k) {
+  const slong prec = cb.prec;
+  ball gmax, half_pi;
+  arb_mul_2exp_si(half_pi, cb.pi, -1);
+  kernels_arb::G(gmax, cb.x, half_pi, prec);
+  if (arb_ge(level, gmax)) return first_lobe_within(x, big_rational(1, 2), big_rational(1, 2), stop, k);
+  if (!arb_lt(level, gmax)) return proof_status::undecided("2E against G(pi/2) = 1 - x^2");
+  ball zero, d, plain;
+  arb_zero(zero);
+  auto g = [&cb, level](arb_t o, const arb_t v) {
+    kernels_arb::G(o, cb.x, v, cb.prec);
+    arb_sub(o, o, level, cb.prec);
+  };
+  auto dg = [&cb](arb_t o, const arb_t v) { kernels_arb::dG(o, cb.x, v, cb.prec); };
+  ball_root u;
+  GYRORES_TRY_PROOF(prove_ball_root(g, dg, zero, half_pi, prec, decimals, u));
+  if (u.decimals < decimals) no_decimals("the level's root G^{-1}(2E) lies next to pi/2", decimals);
+  r.level_root = proved_bracket{u.bracket, u.decimals};
+  // delta over the plain bracket decides the lobe (as precise as the precision allows).
+  set_enclosure(plain, u.bracket, prec);
+  kernels_arb::H(d, cb.x, plain, prec);
+  arb_div(d, d, cb.pi, prec);
+  if (!arb_is_finite(d)) return proof_status::undecided("delta is not finite at this precision");
+  r.delta = proved_bracket{enclosure_of(d, prec), 0};
+  GYRORES_TRY_PROOF(first_lobe_within(x, r.delta->ends.lo_rational(), r.delta->ends.hi_rational(), stop, k));
+  if (decimals == 0) return proof_status::proved();
+  // For the certificate: over the decimals, and a unit of delta's last decimal digit on each side.
+  kernels_arb::H(d, cb.x, u.value, prec);
+  arb_div(d, d, cb.pi, prec);
+  r.delta = proved_bracket{enclosure_of(d, prec), decimals};
+  ball e;
+  decimal_unit(e, arb_midref(d.get()), arb_midref(d.get()), decimals);
+  arb_mul_2exp_si(e, e, 1);  // above the ends' own units too (d's radius is far below e)
+  const big_rational unit = lower_rational(e, prec);
+  std::optional<big_int> k_decimals;
+  if (!first_lobe_within(x, r.delta->ends.lo_rational() - unit, r.delta->ends.hi_rational() + unit, stop, k_decimals) ||
+      k_decimals != k)
+    no_decimals("delta lies next to a lobe's ||k x - 1/2||", decimals);
+  return proof_status::proved();
+}
+
+// The crossing R = 2E on lobe k's descending branch: u in [k pi - pi/2 (0 for k = 0), k pi +
+// side u0], where R > 2E before it and R <= 2E after it (proofs/horizon-theorem.md), so
+// g = 2E - R has the sign pattern of prove_ball_root; R at k pi + u with the bits of k more.
+proof_status crossing_at(const coupling_spec& spec, const quadratic_number& x, const big_rational& E, slong prec,
+                         unsigned decimals, first_below_proof& r) {
+  const big_int& k = r.lobe->lobe.k;
+  const slong p2 = prec + slong(boost::multiprecision::msb(big_int(k + 1)));
+  coupling_balls cb(spec, x, p2);
+  lobe_point p;
+  GYRORES_TRY_PROOF(prove_lobe_point(cb, r.lobe->lobe, decimals, p));
+  r.lobe = p.root;
+  ball level, kpi, lo, hi, c, t;
+  set_rational(level, 2 * E, p2);
+  set_int(kpi, k);
+  arb_mul(kpi, kpi, cb.pi, p2);
+  if (k == 0) arb_zero(lo);
+  else {
+    arb_mul_2exp_si(lo, cb.pi, -1);
+    arb_neg(lo, lo);
+  }
+  arb_mul_si(hi, p.u0, r.lobe->lobe.side, p2);
+  auto g = [&cb, &level, &kpi, p2](arb_t o, const arb_t u) {
+    ball a;
+    arb_add(a, kpi, u, p2);
+    kernels_arb::R(o, cb.x, cb.c, a, p2);
+    arb_sub(o, level, o, p2);
+  };
+  auto dg = [&cb, &kpi, p2](arb_t o, const arb_t u) {
+    ball a;
+    arb_add(a, kpi, u, p2);
+    kernels_arb::dR(o, cb.x, a, p2);
+    arb_neg(o, o);
+  };
+  ball_root u;
+  GYRORES_TRY_PROOF(prove_ball_root(g, dg, lo, hi, prec, decimals, u));
+  if (u.decimals < decimals) no_decimals("the crossing lies next to the lobe's minimiser", decimals);
+  r.crossing = proved_bracket{u.bracket, u.decimals};
+  arb_add(t, kpi, u.value, p2);
+  arb_mul_2exp_si(t, t, 1);
+  arb_div(t, t, cb.s, p2);
+  return enclosure_from(t, p2, r.t_below);
+}
+
+// The first zero of a degenerate coupling: the centre of lobe k (nu = 0, u0 = 0), t = 2 k pi/S.
+proof_status zero_at(const coupling_spec& spec, const quadratic_number& x, slong prec, first_below_proof& r) {
+  coupling_balls cb(spec, x, prec);
+  lobe_point p;
+  GYRORES_TRY_PROOF(prove_lobe_point(cb, r.lobe->lobe, 0, p));
+  r.lobe = p.root;
+  return enclosure_from(p.t, prec, r.t_below);
+}
+
 }  // namespace
 
-first_below_report prove_first_below(const coupling_spec& spec, const big_rational& E, unsigned digits,
-                                     stop_token stop) {
-  check_report_digits(digits);
+first_below_proof prove_first_below(const coupling_spec& spec, const big_rational& E,
+                                    const refine_goal<first_below_proof>& goal, proof_use use, stop_token stop) {
+  check_report_digits(goal.digits);
   if (E < 0) throw usage_error("the level E must be >= 0, got " + rational_str(E));
-  first_below_report r;
-  r.digits = digits;
-  r.level = E;
   const quadratic_number x = coupling_rotation_number(spec);
+  const unsigned decimals = use == proof_use::certificate ? certificate_digits(goal.digits) : 0;
+  first_below_proof base;
+  base.level = E;
+  base.resonant = x.is_rational();
+  // The cases without a real to prove (their values are exact).
+  const auto exact_case = [&](below_case kase) {
+    base.kase = kase;
+    if (!goal.accepts(base)) throw compute_error("first time below: an exact answer was refused by its goal");
+    return base;
+  };
   if (2 * E >= 1) {
-    r.t_below = exact_rational_value(0, digits);
-    r.reason = "H_q(0) = qdot0^2/2 = 1/2 is already <= E";
-    return r;
+    base.t_below = enclosure::exact(0);
+    return exact_case(below_case::start);
   }
+  std::optional<big_int> zero_lobe;
   if (E == 0) {
     // R = 0 only at a lobe with nu = 0, at its centre (q = q' = 0): x = (2j+1)/(2k), a degenerate pair.
-    auto k = first_lobe_at_most(x, quadratic_number(0), stop);
-    if (!k) {
-      r.never = true;
-      r.reason = x.is_rational() ? "resonant and not degenerate (delta != 2 mod 4): H_q >= H_min > 0 for all time"
-                                 : "W1/W2 is irrational: H_q comes arbitrarily close to 0 but never reaches it";
-      return r;
-    }
-    r.lobe = lobe_of(x, *k);
-    const slong zero_prec0 = start_bits(digits, big_rational(*k), spec);
-    for (slong prec = zero_prec0; prec <= precision_cap(zero_prec0); prec *= 2) {
+    zero_lobe = first_lobe_at_most(x, quadratic_number(0), stop);
+    if (!zero_lobe) return exact_case(below_case::never);
+  }
+  const mpfr_prec_t start = start_bits(goal.digits, zero_lobe ? big_rational(*zero_lobe) : big_rational(1), spec);
+  return refine(plan_of(start), stop, "first time below", [&](mpfr_prec_t bits, proof_status& status) {
+    first_below_proof r = base;
+    r.bits = bits;
+    const slong prec = slong(bits);
+    if (zero_lobe) {
+      r.kase = below_case::zero;
+      r.lobe = lobe_root{lobe_of(x, *zero_lobe), {}, enclosure()};
+      status = zero_at(spec, x, prec, r);
+    } else {
       coupling_balls cb(spec, x, prec);
-      lobe_point p;
-      if (prove_lobe_point(cb, *r.lobe, p) && round_ball(p.t, digits, prec, r.t_below)) {
-        r.reason = "the first exact zero of H_q (a degenerate pair), at the centre of lobe " + k->str();
-        return r;
+      ball level;
+      set_rational(level, 2 * E, prec);
+      std::optional<big_int> k;
+      status = first_lobe_at_level(cb, x, level, decimals, stop, r, k);
+      if (status && !k) r.kase = below_case::never;
+      else if (status) {
+        r.kase = below_case::lobe;
+        r.lobe = lobe_root{lobe_of(x, *k), {}, enclosure()};
+        status = crossing_at(spec, x, E, prec, decimals, r);
       }
     }
-    throw compute_error("first time below: not decided within " + bits_text(zero_prec0));
-  }
-  const slong prec0 = start_bits(digits, 1, spec);
-  for (slong prec = prec0; prec <= precision_cap(prec0); prec *= 2) {
-    stop.throw_if_requested();
-    coupling_balls cb(spec, x, prec);
-    ball level;
-    set_rational(level, 2 * E, prec);
-    // delta = H(G^{-1}(2E))/pi, or >= 1/2 when 2E >= G(pi/2) = 1 - x^2 (then lobe 0 reaches it).
-    ball gmax, half_pi;
-    arb_mul_2exp_si(half_pi, cb.pi, -1);
-    cb.G(gmax, half_pi);
-    quadratic_number delta_lo, delta_hi;
-    if (arb_ge(level, gmax)) delta_lo = delta_hi = quadratic_number(1, 2);
-    else if (arb_lt(level, gmax)) {
-      ball u, zero, d;
-      arb_zero(zero);
-      auto G = [&cb](arb_t o, const arb_t v) { cb.G(o, v); };
-      auto dG = [&cb](arb_t o, const arb_t v) { cb.dG(o, v); };
-      if (!prove_root(constant_minus(G, level, prec), dG, zero, half_pi, prec, u)) continue;
-      cb.H(d, u);
-      arb_div(d, d, cb.pi, prec);
-      arf_t lo, hi;
-      arf_init(lo);
-      arf_init(hi);
-      arb_get_lbound_arf(lo, d, prec);
-      arb_get_ubound_arf(hi, d, prec);
-      const big_rational l = arf_rational(lo), h = arf_rational(hi);
-      arf_clear(lo);
-      arf_clear(hi);
-      if (l < 0) continue;
-      delta_lo = quadratic_number(l);
-      delta_hi = quadratic_number(h);
-    } else continue;
-    const auto k_hi = first_lobe_at_most(x, delta_hi, stop);
-    const auto k_lo = first_lobe_at_most(x, delta_lo, stop);
-    if (k_hi != k_lo) continue;  // delta is too close to some lobe's ||k x - 1/2||
-    if (!k_hi) {
-      r.never = true;
-      r.reason = "resonant: H_q >= H_min > E for all time (the motion is periodic and no lobe's minimum reaches E)";
-      return r;
-    }
-    r.lobe = lobe_of(x, *k_hi);
-    // The crossing on the descending branch [k pi - pi/2 (0 for k = 0), k pi + side u0]: before it
-    // R > 2E, after it R <= 2E (proofs/horizon-theorem.md), so g = 2E - R has the sign pattern of prove_root.
-    const slong p2 = prec + slong(boost::multiprecision::msb(big_int(*k_hi + 1)));
-    coupling_balls cb2(spec, x, p2);
-    ball level2;
-    set_rational(level2, 2 * E, p2);
-    lobe_point p;
-    if (!prove_lobe_point(cb2, *r.lobe, p)) continue;
-    ball lo;
-    if (*k_hi == 0) arb_zero(lo);
-    else {
-      set_int(lo, *k_hi);
-      arb_mul(lo, lo, cb2.pi, p2);
-      ball hp;
-      arb_mul_2exp_si(hp, cb2.pi, -1);
-      arb_sub(lo, lo, hp, p2);
-    }
-    auto g = [&cb2, &level2, p2](arb_t o, const arb_t a) {
-      cb2.R(o, a);
-      arb_sub(o, level2, o, p2);
-    };
-    auto dg = [&cb2](arb_t o, const arb_t a) {
-      cb2.dR(o, a);
-      arb_neg(o, o);
-    };
-    ball hi, alpha;
-    arb_set(hi, p.alpha);
-    if (!prove_root(g, dg, lo, hi, p2, alpha)) continue;
-    ball t;
-    arb_mul_2exp_si(t, alpha, 1);
-    arb_div(t, t, cb2.s, p2);
-    if (!round_ball(t, digits, p2, r.t_below)) continue;
-    r.reason = "lobe " + k_hi->str() + " is the first whose minimum reaches E; H_q crosses E once on its descending branch";
-    return r;
-  }
-  throw compute_error("first time below: not decided within " + bits_text(prec0) + " (E equals a lobe's minimum?)");
+    if (status) status = goal.accepts(r);
+    return status ? std::optional<first_below_proof>(std::move(r)) : std::nullopt;
+  });
 }
 
 }  // namespace gyrores

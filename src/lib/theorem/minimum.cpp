@@ -174,15 +174,15 @@ void lobe_theta(fixed_mpfi& out, const theorem_constants& K, const big_int& k, c
   mpfi_div_z(out, out, K.ai.backend().data());
 }
 
-bool prove_minimum(minimum_enclosure& out, const theorem_constants& K, const resonant_pair<big_int>& p,
-                   const fixed_mpfi& v) {
+proof_status prove_minimum(minimum_enclosure& out, const theorem_constants& K, const resonant_pair<big_int>& p,
+                           const fixed_mpfi& v) {
   const big_int a = p.order(), b = big_int(p.delta());
   const int m_min = p.strand_offset_min();
   if (m_min == 0) {
     mpfi_set_ui(out.r_res, 0);
     mpfi_set_ui(out.u_star.U, 0);
   } else {
-    if (!prove_theorem_root(out.u_star, K, big_int(m_min))) return false;
+    GYRORES_TRY_PROOF(prove_theorem_root(out.u_star, K, big_int(m_min)));
     theorem_radius(out.r_res, K, out.u_star.T);
     mpfi_mul(out.r_res, out.r_res, v);
   }
@@ -197,7 +197,7 @@ bool prove_minimum(minimum_enclosure& out, const theorem_constants& K, const res
     out.minimisers.push_back(std::make_unique<fixed_mpfi>(K.prec));
     minimiser_theta(*out.minimisers.back(), K, a, f, out.u_star.U);
   }
-  return true;
+  return proof_status::proved();
 }
 
 }  // namespace gyrores

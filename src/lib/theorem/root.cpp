@@ -86,6 +86,13 @@ void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p
   mpfi_mul_2ui(K.s1mx2, K.sqrt_ts, 1);
   mpfi_div_z(K.s1mx2, K.s1mx2, K.ai.backend().data());
   mpfi_const_pi(K.pi);
+  K.ratio = true;
+}
+
+void set_theorem_constants(theorem_constants& K, const iv& x) {
+  mpfi_set(K.x, x);
+  mpfi_const_pi(K.pi);
+  K.ratio = false;
 }
 
 void pi_ratio(iv& out, const theorem_constants& K, const big_int& m, const big_int& d) {
@@ -158,10 +165,11 @@ mpfr_prec_t small_argument_bits(mpfr_srcptr v) {
 
 // out = an enclosure of tan over W (inside (-pi/2, pi/2)): Arb's arb_tan of the ball holding W
 // (rigorous, and about 3 times cheaper than one MPFR tangent at these precisions), turned into
-// an interval rounded outward. False if Arb's ball is not finite (W too close to a pole).
-bool tan_enclosure(iv& out, const iv& W) {
+// an interval rounded outward, with pole_bits more for a W near pi/2. False if Arb's ball is not
+// finite (W too close to a pole).
+bool tan_enclosure(iv& out, const iv& W, long pole_bits) {
   const mpfr_prec_t prec = mpfi_get_prec(out);
-  const mpfr_prec_t work = prec + 8 + small_argument_bits(W.left());
+  const mpfr_prec_t work = prec + 8 + small_argument_bits(W.left()) + pole_bits;
   arb_t w, t;
   arb_init(w);
   arb_init(t);
@@ -180,8 +188,8 @@ bool tan_enclosure(iv& out, const iv& W) {
 
 // out ~ tan(v) at out's precision, for the ladder's centres (no proof needed there): the
 // midpoint of Arb's ball.
-void tan_point(fr& out, mpfr_srcptr v) {
-  const mpfr_prec_t work = mpfr_get_prec(out) + 8 + small_argument_bits(v);
+void tan_point(fr& out, mpfr_srcptr v, long pole_bits) {
+  const mpfr_prec_t work = mpfr_get_prec(out) + 8 + small_argument_bits(v) + pole_bits;
   arb_t w, t;
   arb_init(w);
   arb_init(t);
@@ -197,8 +205,9 @@ void tan_point(fr& out, mpfr_srcptr v) {
 // A point of the ladder at precision `prec`: c (the centre), tan c and, for the theorem,
 // tan(mu - x c); x and mu (theorem) or s (paper) as points.
 struct centre_point {
-  explicit centre_point(mpfr_prec_t p) : c(p), tc(p), tw(p), x(p), mu(p) {}
+  explicit centre_point(mpfr_prec_t p, long pole) : c(p), tc(p), tw(p), x(p), mu(p), pole_bits(pole) {}
   fr c, tc, tw, x, mu;
+  long pole_bits;  // root_enclosure::pole_bits
 };
 
 // One Newton step on the theorem's f(u) = tan(mu - x u) - x tan u about the centre (f' =
@@ -234,37 +243,40 @@ long newton_step(fr& u, const centre_point& z, bool theorem) {
 
 // Newton from u about the centre z until the step just made leaves an error below
 // 2^-(prec - 8) |u|: a step of relative size 2^e leaves about kappa 2^(2e), kappa = |u f''/(2 f')|,
-// taken as at most 2^6 (it is below 10 for every root of offset m_min; a root closer to pi/2 may
-// stop a step early, and then its proof fails at this precision: never a wrong enclosure).
+// taken as at most 2^(6 + L), L the pole bits (kappa is below 10 for every root of a pair, and
+// about u tan u near pi/2; a root it underestimates may stop a step early, and then its proof
+// fails at this precision: never a wrong enclosure).
 void newton_about(fr& u, const centre_point& z, bool theorem) {
   const long prec = long(mpfr_get_prec(u));
   for (int it = 0; it < 8; ++it)
-    if (2 * newton_step(u, z, theorem) + 6 <= -(prec - 8)) return;
+    if (2 * newton_step(u, z, theorem) + 6 + z.pole_bits <= -(prec - 8)) return;
 }
 
 // The point tangents of a centre at z's precision (the ladder's levels below the last).
 void set_point_tangents(centre_point& z, bool theorem) {
-  tan_point(z.tc, z.c);
+  tan_point(z.tc, z.c, z.pole_bits);
   if (theorem) {
     const mpfr_prec_t p = mpfr_get_prec(z.c);
     fr w(p);
     mpfr_mul(w, z.x, z.c, MPFR_RNDN);
     mpfr_sub(w, z.mu, w, MPFR_RNDN);
-    tan_point(z.tw, w);
+    tan_point(z.tw, w, z.pole_bits);
   }
 }
 
 // The bits a factor needs when it multiplies an offset |d| < 2^e_off from the centre c in a sum
 // exact to `prec` bits relative to c: the product is about 2^(e_off - exp c) of the sum, so it
-// needs that many bits fewer (and 32 guard bits; at least 64, at most prec).
-mpfr_prec_t offset_bits(mpfr_prec_t prec, long e_off, mpfr_srcptr c) {
+// needs that many bits fewer (and 32 guard bits, and the pole bits, which the sum's terms lose
+// to their cancellation near pi/2; at least 64, at most prec).
+mpfr_prec_t offset_bits(mpfr_prec_t prec, long e_off, mpfr_srcptr c, long pole_bits) {
   const long drop = std::max(0L, long(mpfr_get_exp(c)) - e_off);
-  return std::min<mpfr_prec_t>(prec, std::max<long>(64, long(prec) + 32 - drop));
+  return std::min<mpfr_prec_t>(prec, std::max<long>(64, long(prec) + 32 + pole_bits - drop));
 }
 
 // The equations as the proof evaluates them (header, step 2), both increasing in u:
-//   theorem  f(u) = b tan u - a tan(mu - x u)   (a (x tan u - tan w): the sign of H(u) - mu),
-//            f'(u) = b (2 + tan^2 u + tan^2 w);
+//   theorem  f(u) = x tan u - tan(mu - x u)   (the sign of H(u) - mu), for a pair
+//            b tan u - a tan w = a f(u), by the integers;
+//            f'(u) = x (2 + tan^2 u + tan^2 w) (b (...) for a pair);
 //   paper    g(u) = u + tan u - s,  g'(u) = 2 + tan^2 u.
 // The derivative from enclosures TV of tan u and TW of tan w (theorem) at DF's precision.
 void derivative_from_tangents(iv& DF, const theorem_constants& K, bool theorem, const iv& TV, const iv& TW) {
@@ -276,16 +288,21 @@ void derivative_from_tangents(iv& DF, const theorem_constants& K, bool theorem, 
     mpfi_add(DF, DF, t);
   }
   mpfi_add_ui(DF, DF, 2);
-  if (theorem) mpfi_mul_z(DF, DF, K.bi.backend().data());
+  if (theorem && K.ratio) mpfi_mul_z(DF, DF, K.bi.backend().data());
+  else if (theorem) mpfi_mul(DF, DF, K.x);
 }
 
-// The value at the centre from its enclosures (r.fc): b tan c - a tan(mu - x c), or c + tan c - s.
+// The value at the centre from its enclosures (r.fc): b tan c - a tan(mu - x c) (a pair),
+// x tan c - tan(mu - x c), or c + tan c - s.
 void equation_at_centre(root_enclosure& r, const theorem_constants& K, bool theorem) {
-  if (theorem) {
+  if (theorem && K.ratio) {
     iv t(K.prec);
     mpfi_mul_z(r.fc, r.tc, K.bi.backend().data());
     mpfi_mul_z(t, r.wc, K.ai.backend().data());
     mpfi_sub(r.fc, r.fc, t);
+  } else if (theorem) {
+    mpfi_mul(r.fc, r.tc, K.x);
+    mpfi_sub(r.fc, r.fc, r.wc);
   } else {
     mpfi_add_fr(r.fc, r.tc, r.centre);
     mpfi_sub(r.fc, r.fc, r.mu);
@@ -298,9 +315,9 @@ void equation_at_centre(root_enclosure& r, const theorem_constants& K, bool theo
 // quarter of the one above and 8 bits (two Newton steps a level), down to the scout's accuracy.
 // Each level takes point tangents at its centre and Newton steps about it. At full precision the
 // centre's tangents are Arb enclosures (r.tc, r.wc), the equation's value there is r.fc, and
-// one Newton step from them gives r.u (the quotient at the bits its size needs). False if the
-// enclosures could not be formed.
-bool newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, unsigned acc) {
+// one Newton step from them gives r.u (the quotient at the bits its size needs). Not proved if
+// the enclosures could not be formed. Every level carries r.pole_bits more (header, step 1).
+proof_status newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, unsigned acc) {
   const mpfr_prec_t bits = K.prec;
   fr x(bits), mu(bits);
   mpfi_mid(x, K.x);
@@ -308,12 +325,12 @@ bool newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, 
   long levels[40];
   int n = 0;
   for (long need = (long(bits) + 1) / 2 + 16; n < 40; need = need / 4 + 8) {
-    levels[n++] = std::min<long>(bits, need + 8);
+    levels[n++] = std::min<long>(bits, need + 8 + r.pole_bits);
     if (need / 4 <= long(acc)) break;  // the scout's accuracy starts this level
   }
   for (int i = n - 1; i >= 0; --i) {
     const mpfr_prec_t level = levels[i];
-    centre_point z(level);
+    centre_point z(level, r.pole_bits);
     mpfr_set(z.c, r.u, MPFR_RNDN);
     mpfr_set(z.x, x, MPFR_RNDN);
     mpfr_set(z.mu, mu, MPFR_RNDN);
@@ -326,22 +343,28 @@ bool newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, 
   mpfr_set(r.centre, r.u, MPFR_RNDN);
   iv C(bits);
   mpfi_set_fr(C, r.centre);
-  if (!tan_enclosure(r.tc, C)) return false;
+  constexpr auto near_pole = proof_status::undecided("a tangent at the ladder's last centre is not finite (too close to pi/2)");
+  if (!tan_enclosure(r.tc, C, r.pole_bits)) return near_pole;
   if (theorem) {
-    iv W(bits);  // mu - b c/a
-    mpfi_mul_z(W, C, K.bi.backend().data());
-    mpfi_div_z(W, W, K.ai.backend().data());
+    iv W(bits);  // mu - x c (mu - b c/a)
+    if (K.ratio) {
+      mpfi_mul_z(W, C, K.bi.backend().data());
+      mpfi_div_z(W, W, K.ai.backend().data());
+    } else {
+      mpfi_mul(W, C, K.x);
+    }
     mpfi_sub(W, r.mu, W);
-    if (!tan_enclosure(r.wc, W)) return false;
+    if (!tan_enclosure(r.wc, W, r.pole_bits)) return near_pole;
   }
   equation_at_centre(r, K, theorem);
   // u = c - f(c)/f'(c), a point (step 2 proves the bracket about it): |f(c)/f'(c)| <= |f(c)|/(2b)
-  // (theorem) or |g(c)|/2 (paper).
+  // (a pair), |f(c)|/(2x) (a coupling) or |g(c)|/2 (paper).
   fr fmag(bits);
   mpfi_mag(fmag, r.fc);
-  if (mpfr_zero_p(fmag)) return true;
-  const long e_step = long(mpfr_get_exp(fmag)) - (theorem ? long(mpz_sizeinbase(K.bi.backend().data(), 2)) : 1);
-  const mpfr_prec_t q = offset_bits(bits, e_step, r.centre);
+  if (mpfr_zero_p(fmag)) return proof_status::proved();
+  const long scale = !theorem ? 1 : K.ratio ? long(mpz_sizeinbase(K.bi.backend().data(), 2)) : long(mpfr_get_exp(K.x.left()));
+  const long e_step = long(mpfr_get_exp(fmag)) - scale;
+  const mpfr_prec_t q = offset_bits(bits, e_step, r.centre, r.pole_bits);
   iv TV(q), TW(q), DF(q);
   mpfi_set(TV, r.tc);
   if (theorem) mpfi_set(TW, r.wc);
@@ -351,8 +374,9 @@ bool newton_ladder(root_enclosure& r, const theorem_constants& K, bool theorem, 
   mpfi_mid(df, DF);
   mpfr_div(step, step, df, MPFR_RNDN);
   mpfr_sub(r.u, r.centre, step, MPFR_RNDN);
-  return true;
+  return proof_status::proved();
 }
+
 // ---- scouts: the ladder's starting points ----
 
 // Beyond 2^900 the pair's integers leave double's exponent range (mu, x, u* underflow).
@@ -384,18 +408,17 @@ template <class FDF> void scout_mpfr(fr& u, mpfr_srcptr lo0, mpfr_srcptr hi0, FD
   throw compute_error("lattice theorem: the 64-bit scout of a root did not converge");
 }
 
-// The theorem's root to about 50 bits (double) or 60 (MPFR, beyond double's range) in r.u.
-unsigned theorem_scout(root_enclosure& r, const theorem_constants& K) {
-  if (!beyond_double(K.a)) {
-    fr x(53), mu(53);
-    mpfi_mid(x, K.x);
-    mpfi_mid(mu, r.mu);
-    mpfr_set_d(r.u, theorem_root_double(mpfr_get_d(x, MPFR_RNDN), mpfr_get_d(mu, MPFR_RNDN)), MPFR_RNDN);
-    // Claimed accuracy: 32 bits, not double's 53: near pi/2 tan's conditioning leaves the scout
-    // about 2^-39 (6/5, m = 5), and a ladder that assumes more bits than it has takes too few
-    // Newton steps and fails its proof (safe, but at every other precision).
-    return 32;
-  }
+// The theorem's root by the double path in r.u, accurate to about 50 bits.
+void theorem_scout_double(root_enclosure& r, const theorem_constants& K) {
+  fr x(53), mu(53);
+  mpfi_mid(x, K.x);
+  mpfi_mid(mu, r.mu);
+  mpfr_set_d(r.u, theorem_root_double(mpfr_get_d(x, MPFR_RNDN), mpfr_get_d(mu, MPFR_RNDN)), MPFR_RNDN);
+}
+
+// The theorem's root in r.u to about 60 bits by safeguarded Newton at 64 bits (MPFR numbers
+// carry their own exponent range: x or mu beyond double's).
+unsigned theorem_scout_mpfr(root_enclosure& r, const theorem_constants& K) {
   fr x(64), mu(64), lo(64), hi(64), t(64), xt(64);
   mpfi_mid(x, K.x);
   mpfi_mid(mu, r.mu);
@@ -421,6 +444,77 @@ unsigned theorem_scout(root_enclosure& r, const theorem_constants& K) {
   });
   mpfr_set(r.u, u, MPFR_RNDN);
   return 40;
+}
+
+// A pair's root to about 50 bits (double) or 60 (MPFR, beyond double's range) in r.u.
+unsigned theorem_scout(root_enclosure& r, const theorem_constants& K) {
+  if (beyond_double(K.a)) return theorem_scout_mpfr(r, K);
+  theorem_scout_double(r, K);
+  // Claimed accuracy: 32 bits, not double's 53: near pi/2 tan's conditioning leaves the scout
+  // about 2^-39 (6/5, m = 5), and a ladder that assumes more bits than it has takes too few
+  // Newton steps and fails its proof (safe, but at every other precision).
+  return 32;
+}
+
+// The pole bits of a root whose tangent has MPFR exponent E (2^(E-1) <= tan u < 2^E): log2 tan u
+// beyond 4, 0 while tan u < 16 (every pair: u* <= pi/4).
+long pole_bits_of(long tan_exponent) { return std::max(0L, tan_exponent - 5); }
+
+// A coupling's root near pi/2 (header, step 1), in r.u with its pole bits, when it lies within
+// 2^-20 of pi/2; false otherwise. With u = pi/2 - e, x tan u = tan w reads tan e = x tan(c0 - x e),
+// c0 = pi/2 - mu + x pi/2 (formed at full precision: mu may be pi/2 to many bits). The map
+// e -> atan(x tan(c0 - x e)) decreases, so e <= its value e1 at 0, and where e1 is small it
+// contracts by about x^2 (1 + tan^2): its iterates alternate about the root and settle in a few
+// steps, at 64 bits (e carries its own exponent, which no precision of u near pi/2 could).
+bool scout_near_pole(root_enclosure& r, const theorem_constants& K) {
+  const mpfr_prec_t bits = K.prec;
+  fr x(bits), c0(bits), half_pi(bits);
+  mpfi_mid(x, K.x);
+  mpfi_mid(c0, r.mu);
+  mpfr_const_pi(half_pi, MPFR_RNDN);
+  mpfr_div_2ui(half_pi, half_pi, 1, MPFR_RNDN);
+  mpfr_sub(c0, half_pi, c0, MPFR_RNDN);
+  mpfr_fma(c0, x, half_pi, c0, MPFR_RNDN);
+  fr e(64), next(64), t(64), x64(64), c(64);
+  mpfr_set(x64, x, MPFR_RNDN);
+  mpfr_set(c, c0, MPFR_RNDN);
+  if (mpfr_sgn(static_cast<mpfr_srcptr>(c)) <= 0 || mpfr_cmp(c, half_pi) >= 0) return false;  // mu <= x pi/2
+  mpfr_set_ui(e, 0, MPFR_RNDN);
+  for (int it = 0; it < 100; ++it) {
+    mpfr_mul(t, x64, e, MPFR_RNDN);
+    mpfr_sub(t, c, t, MPFR_RNDN);
+    mpfr_tan(t, t, MPFR_RNDN);
+    mpfr_mul(t, t, x64, MPFR_RNDN);
+    mpfr_atan(next, t, MPFR_RNDN);
+    if (it == 0 && mpfr_cmp_d(next, 0x1p-20) >= 0) return false;  // e <= e1: not near pi/2
+    mpfr_sub(t, next, e, MPFR_RNDN);
+    mpfr_set(e, next, MPFR_RNDN);
+    mpfr_mul_2si(next, e, -60, MPFR_RNDN);
+    if (mpfr_cmpabs(t, next) <= 0) break;
+  }
+  mpfr_sub(r.u, half_pi, e, MPFR_RNDN);
+  r.pole_bits = pole_bits_of(1 - long(mpfr_get_exp(e)));  // tan u ~ 1/e
+  return true;
+}
+
+// Any coupling's root (x and mu intervals) in r.u, with its pole bits; returns the accuracy
+// claimed (bits relative to u): near pi/2 the fixed point above; else the double path, and
+// safeguarded Newton at 64 bits for x or mu beyond double's range (or if the double path fails).
+unsigned coupling_scout(root_enclosure& r, const theorem_constants& K) {
+  if (scout_near_pole(r, K)) return 40 + unsigned(r.pole_bits);
+  unsigned acc = 40;
+  const bool in_range = mpfr_get_exp(K.x.left()) > -900 && mpfr_get_exp(r.mu.left()) > -900;
+  try {
+    if (!in_range) throw compute_error("beyond double");
+    theorem_scout_double(r, K);
+    acc = 32;  // as theorem_scout
+  } catch (const compute_error&) {
+    acc = theorem_scout_mpfr(r, K);
+  }
+  fr t(64);
+  mpfr_tan(t, r.u, MPFR_RNDN);
+  r.pole_bits = pole_bits_of(mpfr_get_exp(t));
+  return acc;
 }
 
 // The paper's root of u + tan u = s in r.u, likewise.
@@ -450,16 +544,30 @@ unsigned paper_scout(root_enclosure& r) {
 
 // ---- brackets ----
 
-// The bracket's two ends about the ladder's point: u -+ |u| 2^-(prec - 16).
-void bracket_ends(iv& lo, iv& hi, const root_enclosure& r) {
-  const mpfr_prec_t p = mpfi_get_prec(lo);
-  fr rad(p), end(p);
+// The bracket's two ends about the ladder's point, r.lo, r.hi = u -+ |u| 2^-(prec - 16), as
+// intervals LO, HI.
+void bracket_ends(iv& LO, iv& HI, root_enclosure& r) {
+  const mpfr_prec_t p = mpfi_get_prec(LO);
+  fr rad(p);
   mpfr_abs(rad, r.u, MPFR_RNDN);
   mpfr_mul_2si(rad, rad, -int(p) + 16, MPFR_RNDU);
-  mpfr_sub(end, r.u, rad, MPFR_RNDD);
-  mpfi_set_fr(lo, end);
-  mpfr_add(end, r.u, rad, MPFR_RNDU);
-  mpfi_set_fr(hi, end);
+  mpfr_sub(r.lo, r.u, rad, MPFR_RNDD);
+  mpfr_add(r.hi, r.u, rad, MPFR_RNDU);
+  mpfi_set_fr(LO, r.lo);
+  mpfi_set_fr(HI, r.hi);
+}
+
+// The intervals holding the ends' outward roundings to D digits: LO = [lo - e, lo],
+// HI = [hi, hi + e], e = 2^(exp(hi) - k) >= 10^(1-D) hi (a unit in the D-th digit of either end).
+void decimal_ends(iv& LO, iv& HI, const root_enclosure& r, unsigned decimal_digits) {
+  const mpfr_prec_t p = mpfi_get_prec(LO);
+  const long k = long(digits10_to_bits(decimal_digits - 1)) - 1;  // < (D - 1) log2 10: 2^-k > 10^(1-D)
+  fr unit(p), end(p);
+  mpfr_set_ui_2exp(unit, 1, mpfr_get_exp(r.hi) - k, MPFR_RNDU);  // hi < 2^exp(hi)
+  mpfr_sub(end, r.lo, unit, MPFR_RNDD);
+  mpfi_interv_fr(LO, end, r.lo);
+  mpfr_add(end, r.hi, unit, MPFR_RNDU);
+  mpfi_interv_fr(HI, r.hi, end);
 }
 
 // d = U - centre, false unless |d| <= 2^-10 (the remainder bound needs |d| <= 1/4).
@@ -477,103 +585,158 @@ bool offset_from_centre(iv& d, const root_enclosure& r, const iv& U) {
 // the addition formula (tan_shift) from the centre's enclosures. Those factors multiply offsets
 // of at most 2^-10 (2^-(prec/2) in the ladder's brackets), so they are formed at the bits the
 // products need (offset_bits); f(c) and tan c keep the full precision. flo, fhi (when given)
-// receive f(LO), f(HI) (g for the paper), T receives tan([LO, HI]). False if an end is farther
-// than 2^-10 from the centre.
-bool mean_value_ends(const theorem_constants& K, const root_enclosure& r, bool theorem, const iv& LO, const iv& HI,
-                     iv* flo, iv* fhi, iv& T) {
+// receive f(LO), f(HI) (g for the paper), T receives tan([LO, HI]). Refused if an end is
+// farther than 2^-10 from the centre.
+proof_status mean_value_ends(const theorem_constants& K, const root_enclosure& r, bool theorem, const iv& LO,
+                             const iv& HI, iv& flo, iv& fhi, iv& T) {
   const mpfr_prec_t bits = K.prec;
   iv dlo(bits), dhi(bits);
-  if (!offset_from_centre(dlo, r, LO) || !offset_from_centre(dhi, r, HI)) return false;
+  if (!offset_from_centre(dlo, r, LO) || !offset_from_centre(dhi, r, HI))
+    return proof_status::out_of_domain("a bracket end lies farther than 2^-10 from the ladder's centre");
   fr m(bits), m2(bits);
   mpfi_mag(m, dlo);
   mpfi_mag(m2, dhi);
   mpfr_max(m, m, m2, MPFR_RNDU);
-  const mpfr_prec_t q = mpfr_zero_p(m) ? 64 : offset_bits(bits, long(mpfr_get_exp(m)), r.centre);
+  const mpfr_prec_t q = mpfr_zero_p(m) ? 64 : offset_bits(bits, long(mpfr_get_exp(m)), r.centre, r.pole_bits);
   iv H(q), TV(q), S(q), p(q);
   mpfi_set(H, dlo);  // hull(0, LO - c, HI - c)
   mpfi_put(H, dhi);
   mpfi_put_si(H, 0);
   mpfi_set(p, r.tc);
   tan_shift(TV, p, H);
-  if (!mpfi_bounded_p(TV)) return false;  // V reaches a pole of tan: no mean value form
-  if (flo || fhi) {
-    iv TW(q), DF(q);
-    if (theorem) {  // tan(mu - x xi) = tan((mu - x c) - x (xi - c))
-      iv e(q), wq(q);
-      mpfi_set(e, K.x);
-      mpfi_mul(e, e, H);
-      mpfi_neg(e, e);
-      mpfi_set(wq, r.wc);
-      tan_shift(TW, wq, e);
-      if (!mpfi_bounded_p(TW)) return false;
-    }
-    derivative_from_tangents(DF, K, theorem, TV, TW);
-    if (flo) {
-      mpfi_mul(p, DF, dlo);
-      mpfi_add(*flo, r.fc, p);
-    }
-    if (fhi) {
-      mpfi_mul(p, DF, dhi);
-      mpfi_add(*fhi, r.fc, p);
-    }
+  constexpr auto pole = proof_status::out_of_domain("the bracket's hull reaches a pole of tan");
+  if (!mpfi_bounded_p(TV)) return pole;  // V reaches a pole of tan: no mean value form
+  iv TW(q), DF(q);
+  if (theorem) {  // tan(mu - x xi) = tan((mu - x c) - x (xi - c))
+    iv e(q), wq(q);
+    mpfi_set(e, K.x);
+    mpfi_mul(e, e, H);
+    mpfi_neg(e, e);
+    mpfi_set(wq, r.wc);
+    tan_shift(TW, wq, e);
+    if (!mpfi_bounded_p(TW)) return pole;
   }
+  derivative_from_tangents(DF, K, theorem, TV, TW);
+  mpfi_mul(p, DF, dlo);
+  mpfi_add(flo, r.fc, p);
+  mpfi_mul(p, DF, dhi);
+  mpfi_add(fhi, r.fc, p);
   mpfi_sqr(S, TV);
   mpfi_add_ui(S, S, 1);  // 1 + tan^2 over V
   mpfi_set(p, dlo);
   mpfi_put(p, dhi);
   mpfi_mul(p, S, p);
   mpfi_add(T, r.tc, p);
-  return true;
+  return proof_status::proved();
+}
+
+// The ends' signs: f < 0 over LO and f > 0 over HI (g for the paper), each proved ("certainly",
+// never "possibly": an end within the enclosures' width of the root is refused).
+proof_status signs_at_ends(const iv& flo, const iv& fhi) {
+  constexpr auto close = proof_status::undecided("a bracket end lies within the enclosures' width of the root");
+  if (!(mpfr_sgn(flo.right()) < 0)) return close;
+  if (!(mpfr_sgn(fhi.left()) > 0)) return close;
+  return proof_status::proved();
 }
 
 }  // namespace
 
-bool theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m) {
+proof_status theorem_centre(root_enclosure& r, const theorem_constants& K) {
+  return newton_ladder(r, K, true, K.ratio ? theorem_scout(r, K) : coupling_scout(r, K));
+}
+
+proof_status theorem_centre_of(root_enclosure& r, const theorem_constants& K, const big_int& m) {
   // 0 < m < a keeps mu in (0, pi/2), where the bracket's argument holds (header, step 2).
   if (m <= 0 || mpfr_cmp_z(K.a.left(), m.backend().data()) <= 0)
     throw usage_error("the theorem's root needs an offset 0 < m < a, got m = " + m.str());
   pi_ratio(r.mu, K, m, K.ai);
-  return newton_ladder(r, K, true, theorem_scout(r, K));
+  return theorem_centre(r, K);
 }
 
-bool prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const iv& lo, const iv& hi, iv& T) {
-  iv flo(K.prec), fhi(K.prec), half_pi(K.prec);
+namespace {
+
+// 0 < LO and HI < pi/2, where the argument of step 2 holds.
+proof_status in_domain(const theorem_constants& K, const iv& lo, const iv& hi) {
+  iv half_pi(K.prec);
   mpfi_div_2ui(half_pi, K.pi, 1);
-  if (mpfr_sgn(lo.left()) <= 0 || mpfr_cmp(hi.right(), half_pi.left()) >= 0) return false;
+  if (mpfr_sgn(lo.left()) <= 0 || mpfr_cmp(hi.right(), half_pi.left()) >= 0)
+    return proof_status::out_of_domain("a bracket end lies outside (0, pi/2)");
+  return proof_status::proved();
+}
+
+}  // namespace
+
+proof_status prove_theorem_bracket(const theorem_constants& K, const root_enclosure& r, const iv& lo, const iv& hi,
+                                   iv& T) {
+  iv flo(K.prec), fhi(K.prec);
+  GYRORES_TRY_PROOF(in_domain(K, lo, hi));
   // b tan lo < a tan(mu - x lo) and b tan hi > a tan(mu - x hi), each side bounded the safe way.
-  if (!mean_value_ends(K, r, true, lo, hi, &flo, &fhi, T)) return false;
-  if (!(mpfr_sgn(flo.right()) < 0)) return false;
-  return mpfr_sgn(fhi.left()) > 0;
+  GYRORES_TRY_PROOF(mean_value_ends(K, r, true, lo, hi, flo, fhi, T));
+  return signs_at_ends(flo, fhi);
 }
 
-bool prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
-  if (!theorem_centre_of(r, K, m)) return false;
-  iv lo(K.prec), hi(K.prec);
-  bracket_ends(lo, hi, r);
-  if (!prove_theorem_bracket(K, r, lo, hi, r.T)) return false;
-  mpfi_union(r.U, lo, hi);
-  return true;
+namespace {
+
+// Step 2 about the ladder's point (prove_theorem_root): r.U, r.T, r.lo, r.hi, and when asked
+// the decimal ends (r.decimals, U and T over them), which lie beyond the binary ends. First the
+// bracket of the decimals (it holds the binary ends); if the mean value form over them is too
+// coarse, the binary ends, and then the decimals are brackets too wherever they stay in
+// (0, pi/2), H being increasing there (proofs/lattice-theorem.md, Step A): a root within a
+// decimal unit of pi/2 has none.
+proof_status bracket_about_point(root_enclosure& r, const theorem_constants& K, unsigned decimal_digits) {
+  iv LO(K.prec), HI(K.prec), DLO(K.prec), DHI(K.prec), T(K.prec), flo(K.prec), fhi(K.prec);
+  r.decimals = 0;
+  bracket_ends(LO, HI, r);
+  if (decimal_digits > 0) {
+    decimal_ends(DLO, DHI, r, decimal_digits);
+    if (prove_theorem_bracket(K, r, DLO, DHI, r.T)) {
+      mpfi_union(r.U, DLO, DHI);
+      r.decimals = decimal_digits;
+      return proof_status::proved();
+    }
+  }
+  GYRORES_TRY_PROOF(prove_theorem_bracket(K, r, LO, HI, r.T));
+  mpfi_union(r.U, LO, HI);
+  if (decimal_digits == 0 || !in_domain(K, DLO, DHI) || !mean_value_ends(K, r, true, DLO, DHI, flo, fhi, T))
+    return proof_status::proved();
+  mpfi_set(r.T, T);
+  mpfi_union(r.U, DLO, DHI);
+  r.decimals = decimal_digits;
+  return proof_status::proved();
 }
 
-bool prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
+}  // namespace
+
+proof_status prove_theorem_root(root_enclosure& r, const theorem_constants& K, unsigned decimal_digits) {
+  GYRORES_TRY_PROOF(theorem_centre(r, K));
+  return bracket_about_point(r, K, decimal_digits);
+}
+
+proof_status prove_theorem_root(root_enclosure& r, const theorem_constants& K, const big_int& m,
+                                unsigned decimal_digits) {
+  GYRORES_TRY_PROOF(theorem_centre_of(r, K, m));
+  return bracket_about_point(r, K, decimal_digits);
+}
+
+proof_status prove_paper_root(root_enclosure& r, const theorem_constants& K, const big_int& m) {
   pi_ratio(r.mu, K, m, K.bi);
   if (m == 0) {
     mpfr_set_ui(r.u, 0, MPFR_RNDN);
     mpfi_set_ui(r.U, 0);
     mpfi_set_ui(r.T, 0);
-    return true;
+    return proof_status::proved();
   }
-  if (!newton_ladder(r, K, false, paper_scout(r))) return false;
+  GYRORES_TRY_PROOF(newton_ladder(r, K, false, paper_scout(r)));
   iv lo(K.prec), hi(K.prec), half_pi(K.prec), glo(K.prec), ghi(K.prec);
   bracket_ends(lo, hi, r);
   mpfi_div_2ui(half_pi, K.pi, 1);
-  if (mpfr_cmpabs(lo.left(), half_pi.left()) >= 0 || mpfr_cmpabs(hi.right(), half_pi.left()) >= 0) return false;
+  if (mpfr_cmpabs(lo.left(), half_pi.left()) >= 0 || mpfr_cmpabs(hi.right(), half_pi.left()) >= 0)
+    return proof_status::out_of_domain("a bracket end lies outside (-pi/2, pi/2)");
   // lo + tan lo < s < hi + tan hi (g = u + tan u increases on (-pi/2, pi/2)).
-  if (!mean_value_ends(K, r, false, lo, hi, &glo, &ghi, r.T)) return false;
-  if (!(mpfr_sgn(glo.right()) < 0)) return false;
-  if (!(mpfr_sgn(ghi.left()) > 0)) return false;
+  GYRORES_TRY_PROOF(mean_value_ends(K, r, false, lo, hi, glo, ghi, r.T));
+  GYRORES_TRY_PROOF(signs_at_ends(glo, ghi));
   mpfi_union(r.U, lo, hi);
-  return true;
+  return proof_status::proved();
 }
 
 void theorem_radius(iv& r, const theorem_constants& K, const iv& T) {

@@ -2,11 +2,12 @@
 // module) prints about one resonant pair, every real proved.
 //
 // Each real is the correct rounding, to nearest with `digits` significant digits, of its exact
-// value, read off a proved enclosure (MPFI at an explicit precision, the roots by
-// theorem/root.hpp): the enclosures are computed at a precision that starts with 32 guard bits
-// (more where a field cancels, e.g. the paper's error theta_c - theta_asy), and the precision
-// doubles until both ends of every enclosure round to the same text (core/decimal.hpp,
-// enclosure_rounding). Fields whose exact value is a rational (the beat ratio a/b, qdot0, n and
+// value, read off a proved enclosure of the theorem (MPFI at an explicit precision,
+// theorem/minimum.hpp, the roots by theorem/root.hpp): the enclosures are computed at a
+// precision that starts with 32 guard bits (more where a field cancels, e.g. the paper's error
+// theta_c - theta_asy), and the precision doubles (core/refine.hpp) until both ends of every
+// enclosure round to the same text (core/decimal.hpp, enclosure_rounding). This file is where the
+// pair's reals become digits. Fields whose exact value is a rational (the beat ratio a/b, qdot0, n and
 // rho0 when tau sigma is a square, omega1 and omega2 when tau and sigma are, H_z max of a
 // degenerate pair, and the zeros) are rounded once from that rational, ties to even (an exact
 // tie could never be decided by an enclosure). Each real also carries its enclosure [lo, hi],
@@ -21,25 +22,16 @@
 // them are proved enclosures rounded, like the rest.
 #pragma once
 #include <optional>
-#include <ostream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/integer.hpp>
+#include <gyrores/core/rational.hpp>
 #include <gyrores/core/stop.hpp>
 #include <gyrores/model/pair.hpp>
 
 namespace gyrores {
-
-// One real of a report.
-struct proved_real {
-  std::string value;                              // correctly rounded, `digits` significant digits
-  std::pair<std::string, std::string> enclosure;  // holds the exact value; outward, digits + 3 digits (when asked)
-  operator const std::string&() const { return value; }  // where text is wanted, the value
-};
-inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }
 
 // One lobe of the paper's asymptotics.
 struct paper_lobe_report {
@@ -49,8 +41,8 @@ struct paper_lobe_report {
 };
 
 struct pair_report_options {
-  unsigned digits = 17;      // significant digits of every real, in [1, 10000]
-  std::string qdot0 = "1";   // impulse amplitude v > 0: an exact decimal or fraction
+  unsigned digits = 17;      // significant digits of every real, in [1, report_digits_max]
+  big_rational qdot0 = 1;    // impulse amplitude v > 0, exactly
   bool asymptotics = true;   // the paper's asymptotics (the pair values of design, Pareto, coupling skip them)
   bool enclosures = false;   // fill proved_real::enclosure (decimal text costs as much as the roundings)
   stop_token stop;           // looked at before each precision (throws `interrupted`, core/stop.hpp)
@@ -71,10 +63,10 @@ struct pair_report {
   std::optional<proved_real> r_res_asy, r_res_asy_rel_error;
 };
 
-// The report of p. usage_error for digits outside [1, 10000] or a qdot0 that is not an exact
-// number > 0 (parse_rational, core/rational.hpp); compute_error only if some rounding is still
-// undecided at 2^20 bits (a resource limit, named in the message), never a wrong digit;
-// `interrupted` when opt.stop is requested (checked before each doubling of the precision).
+// The report of p. usage_error for digits outside [1, report_digits_max] or qdot0 <= 0;
+// compute_error only if some rounding is still undecided at report_bits_cap (a resource limit,
+// named in the message), never a wrong digit; `interrupted` when opt.stop is requested (checked
+// before each doubling of the precision).
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt = {});
 
 // The values the design, Pareto, coupling and report commands list: prove_pair without the
@@ -84,7 +76,7 @@ pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits);
 // The paper's Case B quantities of its lobe k of p (qdot0 = 1): u_asy, theta_asy, q'(theta_asy)
 // (= (-1)^k cos u_asy cos w (tan w - w), w = x tan u_asy), q'(theta_asy)/rho0, the error and
 // bound, theta_c and r_c = sqrt(G(u_c)) (the lobe's candidate for r_res). usage_error for
-// digits outside [1, 10000]; compute_error when k is not a fast node of p (x >= 1/2, or another
+// digits outside [1, report_digits_max]; compute_error when k is not a fast node of p (x >= 1/2, or another
 // k) or as prove_pair.
 struct paper_lobe_detail {
   proved_real u_asy, theta_asy, qdot_asy, qdot_asy_over_rho0, error, bound, theta_c, r_c;

@@ -1,11 +1,12 @@
 // What gyrores reports about any coupling n (`gyrores coupling`): the exact resonance test, the
 // pair analysis when resonant, the minimum of H_q over a horizon [0, T] and its first time, the
 // first time H_q falls to a level, the infimum over all time, and the continued-fraction
-// convergents of W1/W2 as resonant pairs (model/coupling.hpp, theorem/horizon.hpp).
+// convergents of W1/W2 as resonant pairs (model/coupling.hpp, report/horizon_report.hpp).
 //
 // Every number is proved: the correct rounding of an enclosure (the horizon theorem for the
 // minimum over [0, T] and the first time below a level, the lattice theorem for the pair).
-// Impulse qdot0 = 1 throughout (H_q(0) = 1/2).
+// Impulse qdot0 = 1 throughout (H_q(0) = 1/2). The horizon reports keep the proofs they
+// rounded: `gyrores coupling --certificate` writes its certificate from them (app/coupling.hpp).
 #pragma once
 #include <cstddef>
 #include <optional>
@@ -16,8 +17,8 @@
 #include <gyrores/core/stop.hpp>
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/model/pair.hpp>
-#include <gyrores/theorem/horizon.hpp>
-#include <gyrores/theorem/pair_report.hpp>
+#include <gyrores/report/horizon_report.hpp>
+#include <gyrores/report/pair_report.hpp>
 
 namespace gyrores {
 
@@ -27,13 +28,14 @@ struct coupling_report_options {
   std::optional<big_rational> below;     // a level E: the first time H_q <= E
   std::size_t convergents = 8;           // how many convergents of W1/W2
   stop_token stop;                       // Ctrl-C
+  proof_use use = proof_use::report;     // certificate: the horizon proofs made to be certified too
 };
 
 // One convergent p/q of W1/W2: the resonant pair (p, q) when p > q, with its proved values.
 struct coupling_convergent {
   ratio_convergent convergent;
   std::optional<resonant_pair<big_int>> pair;  // none for the ratio 1 (p = q)
-  std::optional<pair_report> values;           // proved (theorem/pair_report.hpp)
+  std::optional<pair_report> values;           // proved (report/pair_report.hpp)
 };
 
 struct coupling_report {

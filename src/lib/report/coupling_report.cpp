@@ -1,30 +1,36 @@
-// include/gyrores/design/coupling_report.hpp
-#include <gyrores/design/coupling_report.hpp>
+// include/gyrores/report/coupling_report.hpp
+#include <gyrores/report/coupling_report.hpp>
 
-#include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/refine.hpp>
 
 namespace gyrores {
 namespace {
 
 // |n| = sqrt(n^2) and pi/|n|, proved: the correct roundings of enclosures (the precision doubles
 // until both ends round alike; sqrt(n^2) is rounded once from the rational when n^2 is a square).
-void prove_coupling_numbers(coupling_report& r, unsigned digits) {
+void prove_coupling_numbers(coupling_report& r, unsigned digits, const stop_token& stop) {
   const big_rational& n2 = r.spec.n2;
   big_int rp, rq;
   const bool rational = int_is_square(big_int(numerator(n2)), rp) && int_is_square(big_int(denominator(n2)), rq);
-  for (unsigned bits = digits10_to_bits(digits) + 32; bits <= (1u << 20); bits *= 2) {
-    fixed_mpfi n(bits), t(bits);
-    mpfi_set_q(n, n2.backend().data());
-    mpfi_sqrt(n, n);
-    mpfi_const_pi(t);
-    mpfi_div(t, t, n);
-    if (rational) r.abs_n = format_rational_scientific(big_rational(rp, rq), digits);
-    else if (!enclosure_rounding(n.left(), n.right(), digits, r.abs_n)) continue;
-    if (enclosure_rounding(t.left(), t.right(), digits, r.t_min_paper)) return;
-  }
-  throw compute_error("coupling: |n| or pi/|n| was not decided to " + std::to_string(digits) + " digits");
+  refine(precision_plan{mpfr_prec_t(digits10_to_bits(digits) + 32)}, stop, "coupling: |n| or pi/|n|",
+         [&](mpfr_prec_t bits, proof_status& status) {
+           fixed_mpfi n(bits), t(bits);
+           mpfi_set_q(n, n2.backend().data());
+           mpfi_sqrt(n, n);
+           mpfi_const_pi(t);
+           mpfi_div(t, t, n);
+           auto abs_n = rational ? enclosure::exact(big_rational(rp, rq)).rounded(digits) : enclosure(n).rounded(digits);
+           auto t_min = enclosure(t).rounded(digits);
+           if (!abs_n || !t_min) {
+             status = proof_status::undecided("a rounding of |n| or pi/|n|");
+             return std::optional<bool>();
+           }
+           r.abs_n = std::move(*abs_n);
+           r.t_min_paper = std::move(*t_min);
+           return std::optional<bool>(true);
+         });
 }
 
 void set_infimum(coupling_report& r) {
@@ -77,9 +83,9 @@ coupling_report analyse_coupling(const coupling_spec& spec, const coupling_repor
   r.n_negative = spec.n && *spec.n < 0;
   r.pair = coupling_resonant_pair(spec);
   if (r.pair) r.pair_values = pair_values(*r.pair, opt.digits, opt.stop);
-  prove_coupling_numbers(r, opt.digits);
-  r.horizon = prove_horizon_minimum(spec, opt.horizon, opt.digits, opt.stop);
-  if (opt.below) r.below = prove_first_below(spec, *opt.below, opt.digits, opt.stop);
+  prove_coupling_numbers(r, opt.digits, opt.stop);
+  r.horizon = report_horizon_minimum(spec, opt.horizon, opt.digits, opt.stop, opt.use);
+  if (opt.below) r.below = report_first_below(spec, *opt.below, opt.digits, opt.stop, opt.use);
   set_infimum(r);
   r.convergents = proved_convergents(spec, opt.convergents, opt.digits, opt.stop);
   return r;

@@ -1,5 +1,5 @@
-// include/gyrores/theorem/pair_report.hpp: every real of a pair's report, proved and rounded.
-#include <gyrores/theorem/pair_report.hpp>
+// include/gyrores/report/pair_report.hpp: every real of a pair's report, proved and rounded.
+#include <gyrores/report/pair_report.hpp>
 
 #include <algorithm>
 #include <map>
@@ -9,6 +9,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/rational.hpp>
+#include <gyrores/core/refine.hpp>
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/minimum.hpp>
 #include <gyrores/theorem/root.hpp>
@@ -19,16 +20,14 @@ namespace {
 
 using iv = fixed_mpfi;
 
-constexpr unsigned max_report_bits = 1u << 20;
-
 // Rounds the enclosures of one precision into proved_reals; remembers the first field it could
-// not decide (the precision then doubles).
+// not decide (the precision then doubles). The names are static texts (proof_status reasons).
 class rounder {
  public:
   rounder(unsigned digits, bool enclosures) : digits_(digits), enclosures_(enclosures) {}
   void operator()(proved_real& out, const iv& x, const char* name) {
     if (!enclosure_rounding(x.left(), x.right(), digits_, out.value)) {
-      if (undecided_.empty()) undecided_ = name;
+      if (!undecided_) undecided_ = name;
       return;
     }
     enclosure(out, x);
@@ -39,7 +38,8 @@ class rounder {
     mpfi_set_q(x, q.backend().data());
     enclosure(out, x);
   }
-  const std::string& undecided() const { return undecided_; }
+  // Proved when every rounding was decided; else undecided, naming the first field that was not.
+  proof_status status() const { return undecided_ ? proof_status::undecided(undecided_) : proof_status::proved(); }
 
  private:
   void enclosure(proved_real& out, const iv& x) const {
@@ -48,25 +48,22 @@ class rounder {
   }
   unsigned digits_;
   bool enclosures_;
-  std::string undecided_;
+  const char* undecided_ = nullptr;
 };
 
-// Calls fill(bits, rounder) at doubling precisions from `start` until it succeeds (its proofs
-// held) with every rounding decided. A requested stop is honoured before each precision (one
-// fill at the highest precision is the longest wait: about a second at 10000 digits).
+// Calls fill(bits, rounder) at doubling precisions from `start` (core/refine.hpp) until its
+// proofs hold with every rounding decided. A requested stop is honoured before each precision
+// (one fill at the highest precision is the longest wait: about a second at 10000 digits).
 template <class Fill>
-void refine(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, unsigned start, Fill&& fill,
-            const stop_token& stop = {}) {
-  std::string last = "a proof of the root";
-  for (unsigned bits = start; bits <= max_report_bits; bits *= 2) {
-    stop.throw_if_requested();
-    rounder r(digits, enclosures);
-    if (!fill(bits, r)) continue;
-    if (r.undecided().empty()) return;
-    last = "the rounding of " + r.undecided();
-  }
-  throw compute_error("pair " + p.str() + ": " + last + " was not decided to " + std::to_string(digits) +
-                      " digits within " + std::to_string(max_report_bits) + " bits");
+void round_refined(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, unsigned start, Fill&& fill,
+                   const stop_token& stop = {}) {
+  refine(precision_plan{mpfr_prec_t(start)}, stop, "pair " + p.str() + ": the report to " + std::to_string(digits) + " digits",
+         [&](mpfr_prec_t bits, proof_status& status) {
+           rounder r(digits, enclosures);
+           status = fill(unsigned(bits), r);
+           if (status) status = r.status();
+           return status ? std::optional<bool>(true) : std::nullopt;
+         });
 }
 
 // The exact rationals of a pair (pair_report.hpp): squares decide which fields are rational.
@@ -75,10 +72,10 @@ struct exact_values {
   std::optional<big_rational> n, rho0, omega1, omega2;
 };
 
-exact_values exact_values_of(const resonant_pair<big_int>& p, const std::string& qdot0) {
+exact_values exact_values_of(const resonant_pair<big_int>& p, const big_rational& qdot0) {
   exact_values e;
-  e.v = parse_rational(qdot0, "qdot0");
-  if (!(e.v > 0)) throw usage_error("qdot0 must be > 0, got " + qdot0);
+  e.v = qdot0;
+  if (!(e.v > 0)) throw usage_error("qdot0 must be > 0, got " + rational_str(qdot0));
   const big_int a = p.order(), b = big_int(p.delta());
   big_int rts, rt, rs;
   if (int_is_square(big_int(p.tau() * p.sigma()), rts)) {
@@ -152,15 +149,16 @@ void minimum_fields(pair_report& r, const theorem_constants& K, const minimum_en
 class root_cache {
  public:
   explicit root_cache(const theorem_constants& K) : K_(K) {}
-  // H^{-1}(pi |m|/(2a)) (theorem) or the root of u + tan u = pi |m|/(2b) (paper); nullptr if
-  // the proof failed at this precision.
-  const root_enclosure* get(const big_int& m, bool theorem) {
+  // H^{-1}(pi |m|/(2a)) (theorem) or the root of u + tan u = pi |m|/(2b) (paper); nullptr, with
+  // the reason in `status`, if the proof failed at this precision.
+  const root_enclosure* get(const big_int& m, bool theorem, proof_status& status) {
     auto& slot = (theorem ? theorem_ : paper_)[m];
     if (!slot) {
       slot = std::make_unique<root_enclosure>(K_.prec);
-      ok_[{m, theorem}] = theorem ? prove_theorem_root(*slot, K_, m) : prove_paper_root(*slot, K_, m);
+      status_[{m, theorem}] = theorem ? prove_theorem_root(*slot, K_, m) : prove_paper_root(*slot, K_, m);
     }
-    return ok_[{m, theorem}] ? slot.get() : nullptr;
+    status = status_[{m, theorem}];
+    return status ? slot.get() : nullptr;
   }
   // Seeds the theorem's root for m_min from the minimum's proof.
   void put_theorem(const big_int& m, const root_enclosure& r) {
@@ -168,31 +166,32 @@ class root_cache {
     slot = std::make_unique<root_enclosure>(K_.prec);
     mpfi_set(slot->U, r.U);
     mpfi_set(slot->T, r.T);
-    ok_[{m, true}] = true;
+    status_[{m, true}] = proof_status::proved();
   }
 
  private:
   const theorem_constants& K_;
   std::map<big_int, std::unique_ptr<root_enclosure>> theorem_, paper_;
-  std::map<std::pair<big_int, bool>, bool> ok_;
+  std::map<std::pair<big_int, bool>, proof_status> status_;
 };
 
 // U (and T = tan U) of a signed root: the cached root of |m|, negated for m < 0; exact 0 for m = 0.
-bool signed_root(iv& U, iv* T, root_cache& cache, const big_int& m, bool theorem) {
+proof_status signed_root(iv& U, iv* T, root_cache& cache, const big_int& m, bool theorem) {
   if (m == 0) {
     mpfi_set_ui(U, 0);
     if (T) mpfi_set_ui(*T, 0);
-    return true;
+    return proof_status::proved();
   }
-  const root_enclosure* r = cache.get(big_int(abs(m)), theorem);
-  if (!r) return false;
+  proof_status status;
+  const root_enclosure* r = cache.get(big_int(abs(m)), theorem, status);
+  if (!r) return status;
   mpfi_set(U, r->U);
   if (T) mpfi_set(*T, r->T);
   if (m < 0) {
     mpfi_neg(U, U);
     if (T) mpfi_neg(*T, *T);
   }
-  return true;
+  return proof_status::proved();
 }
 
 // The enclosures of one paper lobe k: s, u_asy (and tan u_asy in Ta), theta_asy, u_c (in Uc),
@@ -202,8 +201,10 @@ struct lobe_enclosures {
   iv s, u_asy, Ta, theta_asy, Uc, Tc, theta_c, error, bound, ratio;
 };
 
-bool prove_lobe(lobe_enclosures& L, const theorem_constants& K, root_cache& cache, const big_int& k, const big_int& m) {
-  if (!signed_root(L.u_asy, &L.Ta, cache, m, false) || !signed_root(L.Uc, &L.Tc, cache, m, true)) return false;
+proof_status prove_lobe(lobe_enclosures& L, const theorem_constants& K, root_cache& cache, const big_int& k,
+                        const big_int& m) {
+  GYRORES_TRY_PROOF(signed_root(L.u_asy, &L.Ta, cache, m, false));
+  GYRORES_TRY_PROOF(signed_root(L.Uc, &L.Tc, cache, m, true));
   pi_ratio(L.s, K, m, K.bi);
   lobe_theta(L.theta_asy, K, k, L.u_asy);
   lobe_theta(L.theta_c, K, k, L.Uc);
@@ -212,7 +213,7 @@ bool prove_lobe(lobe_enclosures& L, const theorem_constants& K, root_cache& cach
   mpfi_abs(d, d);
   paper_error_bound(L.error, L.bound, K, d);
   mpfi_div(L.ratio, L.error, L.bound);
-  return true;
+  return proof_status::proved();
 }
 
 std::vector<big_int> fast_nodes(const big_int& a, const big_int& b) {
@@ -235,10 +236,10 @@ std::string asymptotic_remarks(const resonant_pair<big_int>& p, bool tie) {
 
 // r_res_asy = v x |sin u_a tan u_a| = v x t^2/sqrt(1 + t^2), t = tan u_a (|u_a| < pi/2), and its
 // relative error against r_res (absolute when r_res = 0: degenerate pairs, where both are 0).
-bool asymptotic_radius(pair_report& r, const theorem_constants& K, root_cache& cache, const minimum_enclosure& M,
-                       const iv& v, rounder& round) {
+proof_status asymptotic_radius(pair_report& r, const theorem_constants& K, root_cache& cache,
+                               const minimum_enclosure& M, const iv& v, rounder& round) {
   iv U(K.prec), T(K.prec), ra(K.prec), x(K.prec);
-  if (!signed_root(U, &T, cache, big_int(r.m_min), false)) return false;
+  GYRORES_TRY_PROOF(signed_root(U, &T, cache, big_int(r.m_min), false));
   mpfi_sqr(ra, T);
   mpfi_add_ui(x, ra, 1);
   mpfi_sqrt(x, x);
@@ -252,10 +253,10 @@ bool asymptotic_radius(pair_report& r, const theorem_constants& K, root_cache& c
   mpfi_abs(x, x);
   if (r.m_min > 0) mpfi_div(x, x, M.r_res);
   round(*r.r_res_asy_rel_error, x, "r_res_asy_rel_error");
-  return true;
+  return proof_status::proved();
 }
 
-bool asymptotic_fields(pair_report& r, const theorem_constants& K, const resonant_pair<big_int>& p, root_cache& cache,
+proof_status asymptotic_fields(pair_report& r, const theorem_constants& K, const resonant_pair<big_int>& p, root_cache& cache,
                        const minimum_enclosure& M, const iv& v, rounder& round) {
   const big_int a = p.order(), b = big_int(p.delta());
   r.lobes.clear();
@@ -265,7 +266,7 @@ bool asymptotic_fields(pair_report& r, const theorem_constants& K, const resonan
     lo.m = a - 2 * k * b;
     lo.holds_global_min = abs(lo.m) == r.m_min;
     lobe_enclosures L(K.prec);
-    if (!prove_lobe(L, K, cache, k, lo.m)) return false;
+    GYRORES_TRY_PROOF(prove_lobe(L, K, cache, k, lo.m));
     round(lo.s, L.s, "asymptotic s");
     round(lo.u_asy, L.u_asy, "u_asy");
     round(lo.theta_asy, L.theta_asy, "theta_asy");
@@ -302,17 +303,17 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
                           " >= 1/2: the lobe equation x tan u = tan(mu - x u) need not have a unique root in "
                           "|u| < pi/2 and the slow-node reduction (mu and x u small) does not apply";
   if (r.asymptotic_applicable) r.asymptotic_reason = asymptotic_remarks(p, paper_fast_node(a, b).tie);
-  refine(p, opt.digits, opt.enclosures, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
+  round_refined(p, opt.digits, opt.enclosures, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
     r.bits = bits;
     theorem_constants K(bits);
     set_theorem_constants(K, p);
     iv v(bits);
     mpfi_set_q(v, e.v.backend().data());
     minimum_enclosure M(bits);
-    if (!prove_minimum(M, K, p, v)) return false;
+    GYRORES_TRY_PROOF(prove_minimum(M, K, p, v));
     model_fields(r, K, p, e, v, round);
     minimum_fields(r, K, M, e, round);
-    if (!r.asymptotic_applicable) return true;
+    if (!r.asymptotic_applicable) return proof_status::proved();
     root_cache cache(K);
     if (r.m_min > 0) cache.put_theorem(big_int(r.m_min), M.u_star);
     return asymptotic_fields(r, K, p, cache, M, v, round);
@@ -336,12 +337,12 @@ paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_in
     throw compute_error("pair " + p.str() + " has no asymptotic lobe k = " + k.str());
   const big_int m = a - 2 * k * b;
   paper_lobe_detail d;
-  refine(p, digits, true, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
+  round_refined(p, digits, true, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
     theorem_constants K(bits);
     set_theorem_constants(K, p);
     root_cache cache(K);
     lobe_enclosures L(bits);
-    if (!prove_lobe(L, K, cache, k, m)) return false;
+    GYRORES_TRY_PROOF(prove_lobe(L, K, cache, k, m));
     iv w(bits), q(bits), c(bits), t(bits);
     // q'(theta_asy) = (-1)^k cos u cos w (tan w - w), w = x tan u_asy (pair_report.hpp).
     mpfi_mul(w, K.x, L.Ta);
@@ -363,7 +364,7 @@ paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_in
     round(d.theta_c, L.theta_c, "theta_c");
     theorem_radius(c, K, L.Tc);  // sqrt(G) is even in u: tan of u_c's sign does not matter
     round(d.r_c, c, "r_c");
-    return true;
+    return proof_status::proved();
   });
   return d;
 }

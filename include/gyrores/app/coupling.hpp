@@ -1,0 +1,51 @@
+// The application layer (docs/architecture.md): `gyrores coupling N` and gyrores.coupling, the
+// analysis of one coupling (report/coupling_report.hpp), and with a certificate asked, the
+// certificate of the horizon minimum and the first time below a level written from the very
+// proofs the report rounded (certify/horizon_certificate.hpp): one computation. Also one element
+// of gyrores.couplings: the same proofs, refined until every double is decided. (A band of
+// couplings is still asked of theorem/band.hpp by the front ends.)
+#pragma once
+#include <cstddef>
+#include <optional>
+
+#include <gyrores/certify/horizon_certificate.hpp>
+#include <gyrores/core/rational.hpp>
+#include <gyrores/core/stop.hpp>
+#include <gyrores/model/coupling.hpp>
+#include <gyrores/model/inputs.hpp>
+#include <gyrores/report/coupling_report.hpp>
+
+namespace gyrores::app {
+
+// The most digits `gyrores coupling` prints (the library's reports go to report_digits_max; a
+// coupling's report also proves its convergents' pairs, so the front ends stop at 1000), and
+// the most convergents of W1/W2 it lists.
+inline constexpr unsigned coupling_digits_max = 1000;
+inline constexpr std::size_t coupling_convergents_max = 60;
+
+struct coupling_request {
+  coupling_spec spec;
+  coupling_report_options options;  // digits, horizon, below, convergents (<= coupling_convergents_max), stop
+  bool certificate = false;         // also the certificate (T a rational > 0)
+};
+
+struct coupling_result {
+  coupling_report report;
+  std::optional<horizon_certificate> certificate;  // when asked (with `below` when a level is given)
+};
+
+// usage_error for a request out of range, and for a certificate of a horizon that is not a
+// positive rational (before any work); otherwise as analyse_coupling and horizon_certificate_of.
+coupling_result run_coupling(const coupling_request& request);
+
+// One element of gyrores.couplings: min H_q over [0, T], its first time and the first time
+// H_q <= E (NaN when never), each the double nearest the exact value (the proofs refined until
+// it is decided), and whether the minimum is at t = T and the coupling resonant.
+struct coupling_doubles {
+  double h_min = 0, t_min = 0, t_below = 0;
+  bool at_end = false, resonant = false;
+};
+coupling_doubles run_coupling_doubles(const coupling_spec& spec, const horizon_time& horizon,
+                                      const std::optional<big_rational>& level, stop_token stop = {});
+
+}  // namespace gyrores::app

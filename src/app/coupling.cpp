@@ -1,0 +1,56 @@
+// include/gyrores/app/coupling.hpp
+#include <gyrores/app/coupling.hpp>
+
+#include <limits>
+
+#include <gyrores/core/error.hpp>
+
+namespace gyrores::app {
+
+coupling_result run_coupling(const coupling_request& request) {
+  coupling_report_options opt = request.options;
+  if (opt.convergents > coupling_convergents_max)
+    throw usage_error("convergents must be in [0, " + std::to_string(coupling_convergents_max) + "], got " +
+                      std::to_string(opt.convergents));
+  if (request.certificate) check_certificate_horizon(opt.horizon);
+  opt.use = request.certificate ? proof_use::certificate : proof_use::report;
+  coupling_result out{analyse_coupling(request.spec, opt), std::nullopt};
+  if (!request.certificate) return out;
+  const coupling_report& r = out.report;
+  out.certificate = horizon_certificate_of(request.spec, r.horizon.proof, opt.digits);
+  if (r.below) out.certificate->below = below_certificate_of(request.spec, r.below->proof, opt.digits);
+  return out;
+}
+
+namespace {
+
+// The nearest double of e into `out`; undecided (the proof's precision rises) while it is not.
+proof_status double_into(double& out, const enclosure& e) {
+  const auto d = e.nearest_double();
+  if (!d) return proof_status::undecided("the nearest double");
+  out = *d;
+  return proof_status::proved();
+}
+
+}  // namespace
+
+coupling_doubles run_coupling_doubles(const coupling_spec& spec, const horizon_time& horizon,
+                                      const std::optional<big_rational>& level, stop_token stop) {
+  constexpr unsigned digits = 17;  // the precision to start from: a double's digits
+  coupling_doubles out;
+  out.resonant = coupling_resonant_pair(spec).has_value();
+  const auto m = prove_horizon_minimum(spec, horizon, {digits, [&](const horizon_minimum_proof& p) {
+                                                          GYRORES_TRY_PROOF(double_into(out.h_min, p.h_min));
+                                                          return double_into(out.t_min, p.t_min);
+                                                        }}, proof_use::report, stop);
+  out.at_end = m.at_horizon_end;
+  out.t_below = std::numeric_limits<double>::quiet_NaN();
+  if (level)
+    prove_first_below(spec, *level, {digits, [&](const first_below_proof& p) {
+                                       if (p.kase == below_case::never) return proof_status::proved();
+                                       return double_into(out.t_below, p.t_below);
+                                     }}, proof_use::report, stop);
+  return out;
+}
+
+}  // namespace gyrores::app

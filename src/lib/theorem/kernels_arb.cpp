@@ -1,0 +1,136 @@
+// src/lib/theorem/kernels_arb.hpp: the equations in balls.
+#include "kernels_arb.hpp"
+
+#include "../core/ball.hpp"
+
+namespace gyrores::kernels_arb {
+
+using arb_support::ball;
+
+void square(arb_t out, const arb_t v, slong p) {
+  arf_t l, h;
+  arf_init(l);
+  arf_init(h);
+  arb_get_lbound_arf(l, v, p);
+  arb_get_ubound_arf(h, v, p);
+  ball a, b;
+  arb_set_arf(a, l);
+  arb_set_arf(b, h);
+  arb_mul(a, a, a, p);
+  arb_mul(b, b, b, p);
+  arb_union(out, a, b, p);
+  if (arf_sgn(l) < 0 && arf_sgn(h) > 0) {  // 0 inside
+    ball z;
+    arb_zero(z);
+    arb_union(out, out, z, p);
+  }
+  arf_clear(l);
+  arf_clear(h);
+}
+
+void H(arb_t out, const arb_t x, const arb_t u, slong p) {
+  ball sn, cs, t;
+  arb_sin_cos(sn, cs, u, p);
+  arb_mul(sn, sn, x, p);
+  arb_atan2(t, sn, cs, p);
+  arb_mul(out, x, u, p);
+  arb_add(out, out, t, p);
+}
+
+void dH(arb_t out, const arb_t x, const arb_t u, slong p) {
+  ball sn, cs, e;
+  arb_sin_cos(sn, cs, u, p);
+  arb_mul(sn, sn, x, p);
+  arb_mul(sn, sn, sn, p);
+  arb_mul(cs, cs, cs, p);
+  arb_add(e, sn, cs, p);
+  arb_div(out, x, e, p);
+  arb_add(out, out, x, p);
+}
+
+void G(arb_t out, const arb_t x, const arb_t u, slong p) {
+  ball sn, cs, xs, e, t, w;
+  arb_sin_cos(sn, cs, u, p);
+  arb_mul(xs, x, sn, p);
+  square(xs, xs, p);       // x^2 sin^2
+  square(cs, cs, p);
+  arb_add(e, cs, xs, p);
+  square(t, sn, p);
+  arb_mul(t, t, xs, p);    // x^2 sin^4
+  square(w, x, p);
+  arb_sub_si(w, w, 1, p);
+  arb_neg(w, w);           // 1 - x^2
+  arb_mul(out, w, t, p);
+  arb_div(out, out, e, p);
+}
+
+void dG(arb_t out, const arb_t x, const arb_t u, slong p) {
+  ball sn, cs, s2, e, w, t;
+  arb_sin_cos(sn, cs, u, p);
+  arb_mul(s2, sn, sn, p);           // sin^2
+  arb_mul(w, x, x, p);              // x^2
+  arb_mul(e, cs, cs, p);
+  arb_addmul(e, w, s2, p);          // E
+  arb_sub_si(t, w, 1, p);
+  arb_neg(t, t);                    // 1 - x^2
+  arb_mul(out, t, s2, p);
+  arb_mul_2exp_si(out, out, 1);     // 2 (1 - x^2) sin^2
+  arb_addmul_si(out, e, 4, p);      // 4E + 2 (1 - x^2) sin^2
+  arb_mul(out, out, t, p);
+  arb_mul(out, out, w, p);
+  arb_mul(out, out, s2, p);
+  arb_mul(out, out, sn, p);
+  arb_mul(out, out, cs, p);
+  arb_mul(e, e, e, p);
+  arb_div(out, out, e, p);
+}
+
+namespace {
+
+// sin and cos of alpha and of beta = x alpha.
+struct phases {
+  ball sa, ca, sb, cb;
+  phases(const arb_t x, const arb_t alpha, slong p) {
+    ball b;
+    arb_mul(b, x, alpha, p);
+    arb_sin_cos(sa, ca, alpha, p);
+    arb_sin_cos(sb, cb, b, p);
+  }
+  // q' = cos alpha cos beta - x sin alpha sin beta
+  void qdot(arb_t out, const arb_t x, slong p) const {
+    ball t;
+    arb_mul(out, ca, cb, p);
+    arb_mul(t, sa, sb, p);
+    arb_mul(t, t, x, p);
+    arb_sub(out, out, t, p);
+  }
+};
+
+}  // namespace
+
+void R(arb_t out, const arb_t x, const arb_t c, const arb_t alpha, slong p) {
+  const phases f(x, alpha, p);
+  ball q, qd;
+  arb_mul(q, f.sa, f.cb, p);
+  arb_mul(q, q, c, p);
+  f.qdot(qd, x, p);
+  arb_mul(q, q, q, p);
+  arb_mul(qd, qd, qd, p);
+  arb_add(out, q, qd, p);
+}
+
+void dR(arb_t out, const arb_t x, const arb_t alpha, slong p) {
+  const phases f(x, alpha, p);
+  ball qd, zd, t;
+  f.qdot(qd, x, p);
+  arb_mul(zd, f.sa, f.cb, p);  // z' = x sin alpha cos beta + cos alpha sin beta
+  arb_mul(zd, zd, x, p);
+  arb_mul(t, f.ca, f.sb, p);
+  arb_add(zd, zd, t, p);
+  arb_mul(out, qd, zd, p);
+  arb_mul(out, out, x, p);
+  arb_mul_2exp_si(out, out, 2);
+  arb_neg(out, out);
+}
+
+}  // namespace gyrores::kernels_arb
