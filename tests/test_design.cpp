@@ -387,7 +387,7 @@ TEST_CASE("cli design --tolerance: a proved band verdict per ranked pair, and re
   if (!cli_available()) return;
   const auto j = cli_json("design absorb --tmax 20 --tolerance 1% --level 1% --json");
   REQUIRE(j["tolerance"]["chosen"].is_object());
-  CHECK(j["tolerance"]["theorem"] == "horizon-theorem/1");
+  CHECK(j["tolerance"]["theorem"] == "band-theorem/1");
   CHECK(j["tolerance"]["checked"].back()["verdict"] == "meets");
   for (const char* bad : {"design absorb --tmax 20 --tolerance 1%", "design absorb --tmax 20 --tolerance 1 --level 1%",
                           "design absorb --tmax 20 --level 1%", "design absorb --tmax 20 --tolerance 1% --level 1% --horizon 5",

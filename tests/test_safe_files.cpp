@@ -400,6 +400,9 @@ TEST_CASE("safe files: figures follow the same rules (plot, pareto --plot, repor
   CHECK(private_dirs == 0);
 }
 
+// A command that runs for minutes: a wide band's guarantees to 2000 digits.
+const std::string long_band = "coupling --band 0.01:100 --horizon 1e50 --digits 2000";
+
 TEST_CASE("safe files: SIGINT and SIGTERM end every command with exit 130", "[cli][files]") {
   if (!cli_available()) return;
   temp_dir d("test_safe_files");
@@ -423,19 +426,26 @@ TEST_CASE("safe files: SIGINT and SIGTERM end every command with exit 130", "[cl
     CHECK(private_dirs == 0);
   }
   // SIGTERM killed the other commands (128 + 15 in a shell); now 130 as documented, like a sweep.
-  const int band = gyrores::test::cli_spawn("coupling 0.2 --tolerance 10% --horizon 1e6", d / "b.out", d / "b.err");
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // A band proved to 2000 digits runs for minutes; stopped, it prints the bracket it reached.
+  // Signalled once its first progress line (after a second of work) shows the proof has started.
+  const int band = gyrores::test::cli_spawn(long_band, d / "b.out", d / "b.err");
+  const auto band_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (read_text(d / "b.err").empty() && std::chrono::steady_clock::now() < band_deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ::kill(band, SIGTERM);
   CHECK(gyrores::test::cli_wait(band) == 130);
-  CHECK(read_text(d / "b.out").empty());
+  const std::string out = read_text(d / "b.out");
+  CHECK(has(out, "absorption guarantee   in ["));
+  CHECK(has(out, "interrupted"));
+  CHECK_FALSE(has(out, "each the correct rounding"));
 }
 
 TEST_CASE("safe files: a long command shows progress on a terminal", "[cli][files]") {
   if (!cli_available()) return;
   if (std::system("command -v script >/dev/null 2>&1 && command -v timeout >/dev/null 2>&1") != 0) return;
-  // script(1) gives gyrores a terminal; timeout stops it with SIGINT after 3 s (band: ~10 s or more).
-  const std::string cmd = "script -qfec \"timeout -s INT 3 " + gyrores::test::cli_path() +
-                          " coupling 0.2 --tolerance 10% --horizon 1e6 >/dev/null\" /dev/null 2>&1";
+  // script(1) gives gyrores a terminal; timeout stops it with SIGINT after 3 s (the band: minutes).
+  const std::string cmd = "script -qfec \"timeout -s INT 3 " + gyrores::test::cli_path() + " " + long_band +
+                          " >/dev/null\" /dev/null 2>&1";
   std::string out;
   if (FILE* p = ::popen(cmd.c_str(), "r")) {
     char buf[4096];
@@ -444,7 +454,7 @@ TEST_CASE("safe files: a long command shows progress on a terminal", "[cli][file
     ::pclose(p);
   }
   INFO(out);
-  CHECK(has(out, "gyrores coupling: worst min H_q in ["));
+  CHECK(has(out, "gyrores coupling: absorption in ["));
   CHECK(has(out, "(Ctrl-C stops it)"));
   CHECK(has(out, "gyrores: interrupted"));
 }

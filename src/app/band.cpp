@@ -27,8 +27,8 @@ band_result run_band(const band_request& request) {
   opt.progress = request.progress;
   band_result r;
   r.absorption = prove_band_absorption(request.n1, request.n2, request.horizon, opt);
-  r.containment = r.absorption.interrupted ? band_extreme{} : prove_band_containment(request.n1, request.n2, request.horizon, opt);
-  r.interrupted = r.absorption.interrupted || r.containment.interrupted;
+  if (!r.absorption.interrupted) r.containment = prove_band_containment(request.n1, request.n2, request.horizon, opt);
+  r.interrupted = r.absorption.interrupted || (r.containment && r.containment->interrupted);
   if (request.below && !r.interrupted) {
     r.below = prove_band_first_below(request.n1, request.n2, *request.below, opt);
     r.interrupted = r.below->interrupted;
@@ -36,9 +36,9 @@ band_result run_band(const band_request& request) {
   if (r.interrupted) return r;
   // Each extreme's own coupling, its lobe and time (the horizon theorem at the digits asked).
   r.absorption_at = attained(r.absorption.at);
-  r.containment_at = attained(r.containment.at);
-  r.absorption_at.minimum = report_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop);
-  r.containment_at.minimum = report_horizon_minimum(r.containment.at.spec, request.horizon, request.digits, request.stop);
+  r.containment_at = attained(r.containment->at);
+  r.absorption_at->minimum = report_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop);
+  r.containment_at->minimum = report_horizon_minimum(r.containment->at.spec, request.horizon, request.digits, request.stop);
   if (r.below) {
     r.below_at = attained(r.below->at);
     r.below_at->first_below = report_first_below(r.below->at.spec, *request.below, request.digits, request.stop);
@@ -60,8 +60,10 @@ json band_result_json(const band_request& request, const band_result& r) {
          {"horizon", request.horizon.str()},
          {"digits", request.digits},
          {"interrupted", r.interrupted},
-         {"absorption", band_extreme_json(r.absorption, request.digits, at(r.absorption_at))},
-         {"containment", band_extreme_json(r.containment, request.digits, at(r.containment_at))}};
+         {"absorption", band_extreme_json(r.absorption, request.digits, r.absorption_at ? at(*r.absorption_at) : json(nullptr))},
+         {"containment", r.containment ? band_extreme_json(*r.containment, request.digits,
+                                                            r.containment_at ? at(*r.containment_at) : json(nullptr))
+                                       : json(nullptr)}};
   j["first_below"] = r.below ? band_first_below_json(*r.below, request.digits, r.below_at ? at(*r.below_at) : json(nullptr))
                              : json(nullptr);
   return j;

@@ -138,10 +138,10 @@ std::string band_text(const coupling_args& a, const app::band_request& q, const 
   os << "band n in [" << band_end_text(q.n1) << ", " << band_end_text(q.n2) << "], over [0, " << a.horizon << "]:\n"
      << "  absorption guarantee   " << extreme_text(b.absorption, d) << "\n"
      << "                         every n of the band has min H_q <= this over [0, T] (the highest minimum)\n";
-  if (!b.interrupted) os << "                         " << attained_text(b.absorption_at) << "\n";
-  os << "  containment guarantee  " << extreme_text(b.containment, d) << "\n"
+  if (b.absorption_at) os << "                         " << attained_text(*b.absorption_at) << "\n";
+  os << "  containment guarantee  " << (b.containment ? extreme_text(*b.containment, d) : "not started (interrupted)") << "\n"
      << "                         every n of the band keeps H_q >= this on [0, T] (the lowest minimum)\n";
-  if (!b.interrupted) os << "                         " << attained_text(b.containment_at) << "\n";
+  if (b.containment_at) os << "                         " << attained_text(*b.containment_at) << "\n";
   if (b.below) {
     const band_first_below& f = *b.below;
     os << "  first time H_q <= " << a.below << (f.never ? "\n  never                  " + f.reason + "\n" : "");
@@ -156,10 +156,15 @@ std::string band_text(const coupling_args& a, const app::band_request& q, const 
       if (b.below_at) os << "                         " << attained_text(*b.below_at) << "\n";
     }
   }
+  const bool settled = b.absorption.settled && (!b.containment || b.containment->settled) && (!b.below || b.below->settled);
   os << "  proof                  " << band_theorem_id << ": "
-     << b.absorption.intervals + b.containment.intervals + (b.below ? b.below->intervals : 0) << " intervals of the band, "
-     << b.absorption.couplings + b.containment.couplings + (b.below ? b.below->couplings : 0)
-     << " couplings proved by the horizon theorem; " << d << " digits, each the correct rounding of a proved enclosure\n";
+     << b.absorption.intervals + (b.containment ? b.containment->intervals : 0) + (b.below ? b.below->intervals : 0)
+     << " intervals of the band, "
+     << b.absorption.couplings + (b.containment ? b.containment->couplings : 0) + (b.below ? b.below->couplings : 0)
+     << " couplings proved by the horizon theorem; "
+     << (b.interrupted ? "interrupted: the brackets reached so far, proved, rounded outward\n"
+                       : std::to_string(d) + " digits, each the correct rounding of a proved enclosure" +
+                             (settled ? "\n" : " where settled, else a proved bracket\n"));
   return os.str();
 }
 

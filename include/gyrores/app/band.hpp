@@ -37,8 +37,9 @@ struct band_attained {
 };
 
 struct band_result {
-  band_extreme absorption, containment;
-  band_attained absorption_at, containment_at;
+  band_extreme absorption;
+  std::optional<band_extreme> containment;  // none when interrupted before it started
+  std::optional<band_attained> absorption_at, containment_at;  // none when interrupted
   std::optional<band_first_below> below;
   std::optional<band_attained> below_at;
   bool interrupted = false;  // some proof stopped by the stop token: its bracket so far is reported
