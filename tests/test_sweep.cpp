@@ -27,8 +27,10 @@
 #include <gyrores/io/sweep_values_file.hpp>
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/sweep/engine.hpp>
-#include <gyrores/sweep/fast.hpp>
+#include <gyrores/sweep/testing.hpp>
 #include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/minimum_series.hpp>
+#include <gyrores/theorem/paper.hpp>
 #include <gyrores/theorem/root.hpp>
 
 #include "testing/cli_run.hpp"
@@ -234,14 +236,14 @@ TEST_CASE("sweep: P3's r_res^2 <= R(pi/2) is decided by the enclosure within rou
     const double R = double(N) / (4 * double(a) * double(a));
     const auto r = sweep_evaluate<double>(p, config(a));
     REQUIRE(r.r_res > 0);
-    CHECK(detail::sweep_r_below_quarter_R(p, r.r_res, N));
+    CHECK(sweep_testing::r_below_quarter_R(p, r.r_res, N));
     // An r_res a rounding above sqrt(R(pi/2)): the double comparison says no, but the true
     // r_res (which the enclosure proves) is below: the decision must not follow the rounding.
     const double above = std::sqrt(R) * (1 + 0x1p-44);
     REQUIRE(above * above > R);
-    CHECK(detail::sweep_r_below_quarter_R(p, above, N));
+    CHECK(sweep_testing::r_below_quarter_R(p, above, N));
     // Far above (beyond any rounding): the double comparison decides.
-    CHECK_FALSE(detail::sweep_r_below_quarter_R(p, std::sqrt(R) * (1 + 0x1p-30), N));
+    CHECK_FALSE(sweep_testing::r_below_quarter_R(p, std::sqrt(R) * (1 + 0x1p-30), N));
   }
 }
 
@@ -1008,7 +1010,7 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
   }
 }
 
-// ---- the fast path without rows (sweep/fast.hpp) ----
+// ---- the fast path without rows (src/lib/sweep/fast.cpp) ----
 
 namespace {
 
@@ -1065,6 +1067,14 @@ TEST_CASE("sweep: without rows the fast path gives the rows' summary", "[sweep]"
   }
 }
 
+namespace {
+// The series form's u* of the pair (a, b) with m_min = m, and its theta_first (theorem/minimum_series.hpp).
+double series_root(std::int64_t a, std::int64_t b, int m) {
+  return theorem_root_series(double(b) / double(a), std::numbers::pi / 4 * double(m) / double(b));
+}
+double series_theta(std::int64_t a, std::int64_t k, double su) { return lobe_theta_double(double(a), 1 / double(a), k, su); }
+}  // namespace
+
 TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_double", "[sweep]") {
   std::mt19937_64 rng(20261127);
   int tested = 0;
@@ -1072,15 +1082,15 @@ TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_dou
   for (std::int64_t a : {131, 1001, 1002, 100003, 100002, 99999998})
     for (std::int64_t b : {64, 65, 66, 67, 68, 69, 72, 76, 80, 1000, 1001})
       for (std::int64_t bb : {b, a - b}) {
-        if ((a - bb) % 2 != 0 || bb >= a || bb < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+        if ((a - bb) % 2 != 0 || bb >= a || bb < series_min_delta || a % 4 == 0) continue;
         const std::int64_t tau = (a + bb) / 2, sigma = (a - bb) / 2;
         if (sigma < 1 || std::gcd(tau, sigma) != 1) continue;
         const minimum_double M = theorem_minimum_double(resonant_pair<std::int64_t>(tau, sigma));
-        const double u = detail::sweep_fast_root(a, bb, M.m_min);
+        const double u = series_root(a, bb, M.m_min);
         INFO(tau << "," << sigma);
         CHECK(ulps(u, M.u_star) <= 8);
         const auto& f = M.lobes[0];
-        CHECK(ulps(detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u), M.theta_first) <= 1);
+        CHECK(ulps(series_theta(a, f.k, f.m < 0 ? -u : u), M.theta_first) <= 1);
         ++tested;
       }
   CHECK(tested >= 40);
@@ -1088,14 +1098,14 @@ TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_dou
     std::uniform_int_distribution<std::int64_t> sig(1, (a - 1) / 2);
     for (int n = 0; n < 400; ++n) {
       const std::int64_t sigma = sig(rng), tau = a - sigma, b = tau - sigma;
-      if (std::gcd(tau, sigma) != 1 || b < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+      if (std::gcd(tau, sigma) != 1 || b < series_min_delta || a % 4 == 0) continue;
       const resonant_pair<std::int64_t> p(tau, sigma);
       const minimum_double M = theorem_minimum_double(p);
-      const double u = detail::sweep_fast_root(a, b, M.m_min);
+      const double u = series_root(a, b, M.m_min);
       INFO(tau << "," << sigma);
       CHECK(ulps(u, M.u_star) <= 8);
       const auto& f = M.lobes[0];
-      const double theta = detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u);
+      const double theta = series_theta(a, f.k, f.m < 0 ? -u : u);
       CHECK(ulps(theta, M.theta_first) <= 1);
       ++tested;
     }
@@ -1105,11 +1115,11 @@ TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_dou
 
 TEST_CASE("sweep: the fast path's R(pi/2) in int64 is sweep_quarter_R_scaled", "[sweep]") {
   for (std::int64_t a = 3; a <= 400; ++a)
-    for (std::int64_t b = a - 2; b >= 1; b -= 2) CHECK(detail::sweep_fast_quarter_R_scaled(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
+    for (std::int64_t b = a - 2; b >= 1; b -= 2) CHECK(sweep_quarter_R_scaled<std::int64_t>(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
   const std::int64_t big = (std::int64_t(1) << 28) - 1;
   for (std::int64_t a : {big, big - 1, big - 2, big - 3})
     for (std::int64_t b : {std::int64_t(1), std::int64_t(2), a - 2, a / 2, a / 2 + 1})
-      if ((a - b) % 2 == 0 && b > 0) CHECK(detail::sweep_fast_quarter_R_scaled(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
+      if ((a - b) % 2 == 0 && b > 0) CHECK(sweep_quarter_R_scaled<std::int64_t>(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
 }
 
 TEST_CASE("sweep: the fast path's P3 bound holds, and refuses what it cannot prove", "[sweep]") {
@@ -1124,15 +1134,15 @@ TEST_CASE("sweep: the fast path's P3 bound holds, and refuses what it cannot pro
       const double m4 = std::pow(double(M.m_min), 4), pi4 = std::pow(std::numbers::pi, 4);
       const double bound = double(sigma) / double(tau) * pi4 * m4 / (64 * double(a) * double(a) * double(b) * double(b));
       CHECK(M.r_res * M.r_res <= bound * (1 + 1e-14));
-      CHECK(detail::sweep_fast_r_below_quarter_R(tau, sigma, M.m_min, std::int64_t(sweep_quarter_R_scaled(a, b))));
+      CHECK(sweep_testing::fast_r_below_quarter_R(tau, sigma, M.m_min, std::int64_t(sweep_quarter_R_scaled(a, b))));
     }
   // pi^4 sigma <= 16 b^2 tau N with tau = 2, sigma = 1 (b = 1), m = 1: 97.41 <= 32 N from N = 4 on.
-  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 3));
-  CHECK(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 4));
-  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 0));
+  CHECK_FALSE(sweep_testing::fast_r_below_quarter_R(2, 1, 1, 3));
+  CHECK(sweep_testing::fast_r_below_quarter_R(2, 1, 1, 4));
+  CHECK_FALSE(sweep_testing::fast_r_below_quarter_R(2, 1, 1, 0));
   // m = 2: 16 pi^4 = 1558.5 <= 32 N from N = 49 on.
-  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 2, 48));
-  CHECK(detail::sweep_fast_r_below_quarter_R(2, 1, 2, 49));
+  CHECK_FALSE(sweep_testing::fast_r_below_quarter_R(2, 1, 2, 48));
+  CHECK(sweep_testing::fast_r_below_quarter_R(2, 1, 2, 49));
 }
 
 TEST_CASE("sweep: the fast path's asy bound is above every computed constant, and the skip keeps a margin", "[sweep]") {
@@ -1143,22 +1153,22 @@ TEST_CASE("sweep: the fast path's asy bound is above every computed constant, an
   std::size_t tested = 0;
   for (std::int64_t a = 5; a <= 700; ++a)
     for (std::int64_t b = (a % 2 ? 1 : 2); 2 * b < a; b += 2) {
-      const std::int64_t am = detail::sweep_asy_offset(a, b);
-      const auto v = detail::sweep_asy_double_of(a, b, am);
-      const double bound = detail::sweep_fast_asy_bound(a, b, am);
+      const std::int64_t am = paper_offset(a, b);
+      const auto v = paper_error_of(a, b, am);
+      const double bound = paper_constant_bound_of(a, b, am);
       INFO(a << " " << b << " " << am);
       CHECK(v.constant <= bound * (1 + 0x1p-47));
       ++tested;
     }
   CHECK(tested > 50000);
   // Where s = pi/2 (b = 1, a tie: |m| = b) and x is small the bound is nearly the constant.
-  const auto v = detail::sweep_asy_double_of(2999, 1, 1);
-  CHECK(detail::sweep_fast_asy_bound(2999, 1, 1) <= v.constant * (1 + 1e-6));
+  const auto v = paper_error_of(2999, 1, 1);
+  CHECK(paper_constant_bound_of(2999, 1, 1) <= v.constant * (1 + 1e-6));
   // The skip: only strictly below a known constant, beyond the 2^-36 margin.
-  CHECK_FALSE(detail::sweep_fast_asy_below(0.1, 0));
-  CHECK_FALSE(detail::sweep_fast_asy_below(0.1, 0.1));
-  CHECK_FALSE(detail::sweep_fast_asy_below(0.1 * (1 - 0x1p-40), 0.1));
-  CHECK(detail::sweep_fast_asy_below(0.1 * (1 - 0x1p-35), 0.1));
+  CHECK_FALSE(sweep_testing::fast_asy_below(0.1, 0));
+  CHECK_FALSE(sweep_testing::fast_asy_below(0.1, 0.1));
+  CHECK_FALSE(sweep_testing::fast_asy_below(0.1 * (1 - 0x1p-40), 0.1));
+  CHECK(sweep_testing::fast_asy_below(0.1 * (1 - 0x1p-35), 0.1));
 }
 
 TEST_CASE("sweep: the fast path's batch inverses give the pass frames' k", "[sweep]") {
@@ -1174,7 +1184,7 @@ TEST_CASE("sweep: the fast path's batch inverses give the pass frames' k", "[swe
   for (std::int64_t sigma : {std::int64_t(1), std::int64_t(3), (big - 5) / 2 - 2})
     if (std::gcd(big - 5, sigma) == 1) pairs.emplace_back(big - 5 - sigma, sigma);  // 2 mod 4
   std::vector<std::int64_t> ks;
-  detail::sweep_fast_pass_ks(pairs, ks);
+  pass_ks_of_block(pairs, ks);
   REQUIRE(ks.size() == pairs.size());
   std::size_t checked = 0;
   for (std::size_t i = 0; i < pairs.size(); ++i) {

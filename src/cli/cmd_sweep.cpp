@@ -203,7 +203,7 @@ sweep_files files_of(const sweep_args& a) {
 sweep_report run_at_precision(const sweep_args& a, const sweep_config& cfg, const sweep_files& files) {
   sweep_engine_options eo;
   eo.threads = a.threads;
-  // Without rows a pair costs ~0.2 us (the fast path, sweep/fast.hpp): blocks of 1024 would be
+  // Without rows a pair costs ~0.2 us (the fast path, src/lib/sweep/fast.cpp): blocks of 1024 would be
   // handed out ~10^4 times a second, and the hand-over shows; 8192 keep it below 1%.
   if (a.out.empty()) eo.block_size = 8192;
   eo.max_pairs = std::uint64_t(a.max_pairs);
