@@ -12,6 +12,7 @@
 
 #include <gyrores/core/dd_ball.hpp>
 #include <gyrores/core/real.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 #include <gyrores/sweep/evaluate.hpp>
@@ -221,7 +222,7 @@ TEST_CASE("certified sweeps: the same rows and summary with the filter as withou
     sweep_files files;
     files.rows_path = d / (f ? "filter.csv" : "plain.csv");
     files.summary_path = d / (f ? "filter.json" : "plain.json");
-    REQUIRE(sweep_to_files<double>(certified(400, f == 1), files, e).complete);
+    REQUIRE(app::sweep_to_files<double>(certified(400, f == 1), files, e).complete);
     text[f] = test::read_text(files.rows_path);
     text[f] = text[f].substr(0, text[f].rfind("# end"));  // the end line holds the seconds
     summary[f] = sweep_summary_core(json::parse(test::read_text(files.summary_path))).dump();

@@ -21,6 +21,7 @@
 
 #include <gyrores/io/csv.hpp>
 #include <gyrores/io/files.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
@@ -352,7 +353,7 @@ TEST_CASE("sweep: an MPFR sweep on 2 threads equals the same sweep on 1 thread, 
     const std::string n = std::to_string(threads) + "_" + std::to_string(global);
     f.rows_path = d / ("rows" + n + ".csv");
     f.summary_path = d / ("sum" + n + ".json");
-    const auto rep = sweep_to_files<mpfr_real>(c, f, engine(threads, 16));
+    const auto rep = app::sweep_to_files<mpfr_real>(c, f, engine(threads, 16));
     REQUIRE(rep.complete);
     CHECK(rep.threads == threads);
     rows.push_back(without_last_line(read_text(f.rows_path)));
@@ -418,7 +419,7 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
     sweep_files f;
     f.rows_path = d / ("rows" + std::to_string(threads) + ".csv");
     f.summary_path = d / ("sum" + std::to_string(threads) + ".json");
-    auto rep = sweep_to_files<double>(c, f, engine(threads, threads == 1 ? 64 : 5));
+    auto rep = app::sweep_to_files<double>(c, f, engine(threads, threads == 1 ? 64 : 5));
     REQUIRE(rep.complete);
     CHECK(rep.threads == threads);
     (threads == 1 ? s1 : s2) = read_json(f.summary_path);
@@ -451,7 +452,7 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
   const std::int64_t M = 90;
   sweep_files single;
   single.summary_path = d / "single.json";
-  auto rep = sweep_to_files<double>(config(M), single, engine(2));
+  auto rep = app::sweep_to_files<double>(config(M), single, engine(2));
   REQUIRE(rep.complete);
   const json want = sweep_summary_core(read_json(single.summary_path));
 
@@ -463,11 +464,11 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
     sweep_files f;
     f.rows_path = d / ("shard" + std::to_string(i) + ".csv");
     f.summary_path = d / ("shard" + std::to_string(i) + ".json");
-    REQUIRE(sweep_to_files<double>(c, f, engine(2)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(2)).complete);
     sweep_files g;
     g.rows_path = d / ("shard" + std::to_string(i) + ".jsonl");
     g.rows_format = sweep_format::jsonl;
-    REQUIRE(sweep_to_files<double>(c, g, engine(1)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, g, engine(1)).complete);
     csv.push_back(f.rows_path);
     jsonl.push_back(g.rows_path);
     summaries.push_back(f.summary_path);
@@ -485,12 +486,12 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
   sweep_config oc = config(M - 1);
   oc.shard_index = 3;
   oc.shard_count = 4;
-  REQUIRE(sweep_to_files<double>(oc, other, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(oc, other, engine(1)).complete);
   CHECK_THROWS_AS(sweep_merge({csv[0], csv[1], csv[2], other.rows_path}), usage_error);
   // A single complete run merges to itself.
   sweep_files whole;
   whole.rows_path = d / "whole.csv";
-  REQUIRE(sweep_to_files<double>(config(M), whole, engine(2)).complete);
+  REQUIRE(app::sweep_to_files<double>(config(M), whole, engine(2)).complete);
   CHECK(sweep_summary_core(sweep_merge({whole.rows_path})) == want);
 }
 
@@ -508,7 +509,7 @@ class resume_fixture {
     sweep_files f;
     f.rows_path = d / "ref.csv";
     f.summary_path = d / "ref.json";
-    REQUIRE(sweep_to_files<double>(c, f, engine(2)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(2)).complete);
     ref_rows = without_last_line(read_text(f.rows_path));
     ref_summary = sweep_summary_core(read_json(f.summary_path));
   }
@@ -518,7 +519,7 @@ class resume_fixture {
     f.resume = true;
     e.max_pairs = 0;
     e.stop = nullptr;
-    const auto rep = sweep_to_files<double>(c, f, e);
+    const auto rep = app::sweep_to_files<double>(c, f, e);
     REQUIRE(rep.complete);
     CHECK_FALSE(path_exists(rep.state_path));
     CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_summary);
@@ -535,7 +536,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after max_pairs limits, twice, g
   f.summary_path = d / "a.json";
   auto e = engine(2);
   e.max_pairs = 100;
-  auto r1 = sweep_to_files<double>(c, f, e);
+  auto r1 = app::sweep_to_files<double>(c, f, e);
   CHECK_FALSE(r1.complete);
   CHECK(r1.done == 100);
   CHECK_FALSE(path_exists(f.rows_path));  // only a.csv.part: never a partial a.csv
@@ -544,7 +545,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after max_pairs limits, twice, g
   CHECK(path_exists(r1.state_path));
   f.resume = true;
   e.max_pairs = 333;
-  auto r2 = sweep_to_files<double>(c, f, e);
+  auto r2 = app::sweep_to_files<double>(c, f, e);
   CHECK_FALSE(r2.complete);
   CHECK(r2.done == 433);
   resume_to_end(f, e);
@@ -556,7 +557,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after the stop flag (as set by S
   std::atomic<bool> stop{false};
   auto e = engine(2, 16);
   e.stop = &stop;
-  auto r1 = sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
+  auto r1 = app::sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
     if (p.done >= 200) stop = true;
   });
   CHECK_FALSE(r1.complete);
@@ -574,7 +575,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after a crash drops the rows wri
   f.checkpoint_seconds = 1e-9;  // a checkpoint after every block
   auto e = engine(1, 10);
   int blocks = 0;
-  CHECK_THROWS_AS(sweep_to_files<double>(c, f, e,
+  CHECK_THROWS_AS(app::sweep_to_files<double>(c, f, e,
                                          [&](const sweep_progress_info&) {
                                            if (++blocks == 25) throw compute_error("simulated crash");
                                          }),
@@ -600,7 +601,7 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   f.summary_path = d / "old.json";
   auto e = engine(1);
   e.max_pairs = 50;
-  REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
   const std::string state = sweep_default_state_path(f);
   json st = read_json(state);
   const json run = st["run"];
@@ -611,7 +612,7 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   f.resume = true;
   auto message = [&](const sweep_config& cfg) {
     try {
-      sweep_to_files<double>(cfg, f, e);
+      app::sweep_to_files<double>(cfg, f, e);
     } catch (const usage_error& err) {
       return std::string(err.what());
     }
@@ -645,7 +646,7 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   sweep_config same = c;
   same.checks = some;
   e.max_pairs = 0;
-  CHECK(sweep_to_files<double>(same, f, e).complete);
+  CHECK(app::sweep_to_files<double>(same, f, e).complete);
 }
 
 TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[sweep]") {
@@ -655,13 +656,13 @@ TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[swee
   f.summary_path = d / "e.json";
   auto e = engine(1);
   e.max_pairs = 50;
-  REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
   f.resume = true;
-  CHECK_THROWS_AS(sweep_to_files<double>(config(81), f, e), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(config(81), f, e), usage_error);
   sweep_files g;
   g.summary_path = d / "nothing.json";
   g.resume = true;
-  CHECK_THROWS_AS(sweep_to_files<double>(c, g, e), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(c, g, e), usage_error);
 }
 
 TEST_CASE("sweep: files are written atomically", "[sweep]") {
@@ -703,7 +704,7 @@ TEST_CASE("sweep: files are written atomically", "[sweep]") {
   sweep_files f;
   f.rows_path = d / "rows.csv";
   f.summary_path = d / "missing/summary.json";
-  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(config(30), f, engine(1)), usage_error);
   CHECK_FALSE(path_exists(f.summary_path));
   CHECK_FALSE(path_exists(f.summary_path + ".part"));
   CHECK_FALSE(path_exists(d / "missing"));
@@ -801,14 +802,14 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   f.summary_path = d / "s.json";
   auto e = engine(1);
   e.max_pairs = 20;
-  REQUIRE_FALSE(sweep_to_files<double>(config(30), f, e).complete);
+  REQUIRE_FALSE(app::sweep_to_files<double>(config(30), f, e).complete);
   const std::string state = sweep_default_state_path(f);
   json st = read_json(state);
   write_file_atomically(state + ".bak", st.dump());
   st.erase("done");
   write_file_atomically(state, st.dump());
   f.resume = true;
-  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(config(30), f, engine(1)), usage_error);
   // A count beyond 64 bits (parsed as a double; converting it was undefined behaviour, UBSan).
   st = read_json(state + ".bak");
   REQUIRE(st.contains("summary"));
@@ -819,13 +820,13 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
     else big["done"] = huge;
     write_file_atomically(state, big.dump());
     INFO(where);
-    CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+    CHECK_THROWS_AS(app::sweep_to_files<double>(config(30), f, engine(1)), usage_error);
   }
   // A rows file naming shard 0 of 0 (merge divided by the shard count), or shard 3 of 2.
   sweep_files r;
   r.rows_path = d / "r.jsonl";
   r.rows_format = sweep_format::jsonl;
-  REQUIRE(sweep_to_files<double>(config(30), r, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(config(30), r, engine(1)).complete);
   const std::string rows = read_text(r.rows_path);
   REQUIRE(rows.find("\"shard\":[0,1]") != std::string::npos);
   for (const std::string shard : {"[0,0]", "[3,2]", "[\"x\",1]"}) {
@@ -839,7 +840,7 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   // "could not compute", for what is a malformed file).
   sweep_files c;
   c.rows_path = d / "r.csv";
-  REQUIRE(sweep_to_files<double>(config(30), c, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(config(30), c, engine(1)).complete);
   std::string csv = read_text(c.rows_path);
   const auto row = csv.find("\n2,1,3,");
   REQUIRE(row != std::string::npos);
@@ -861,7 +862,7 @@ TEST_CASE("sweep: integer fields of shard summaries beyond their type are usage 
     c.shard_count = 2;
     sweep_files f;
     f.summary_path = d / ("s" + std::to_string(i) + ".json");
-    REQUIRE(sweep_to_files<double>(c, f, engine(1)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(1)).complete);
     shards.push_back(f.summary_path);
   }
   REQUIRE_NOTHROW(sweep_merge(shards));
@@ -976,7 +977,7 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
   const sweep_config c = config(120);
   sweep_files mem;
   mem.summary_path = d / "mem.json";
-  REQUIRE(sweep_to_files<double>(c, mem, engine(2)).complete);
+  REQUIRE(app::sweep_to_files<double>(c, mem, engine(2)).complete);
   const json want = sweep_summary_core(read_json(mem.summary_path));
   REQUIRE(want.at("t_first_over_proxy").at("count").get<std::uint64_t>() > 1500);
 
@@ -987,11 +988,11 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
     f.values_in_memory = keep;
     auto e = engine(2, 16);
     e.max_pairs = 700;  // stop, resume, stop, resume: the file is cut back and appended to
-    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
     f.resume = true;
-    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
     e.max_pairs = 0;
-    REQUIRE(sweep_to_files<double>(c, f, e).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, e).complete);
     CHECK(sweep_summary_core(read_json(f.summary_path)) == want);
     CHECK_FALSE(path_exists(sweep_default_state_path(f) + ".values"));
 
@@ -1003,7 +1004,7 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
       sweep_files g;
       g.summary_path = d / ("shard" + std::to_string(keep) + "_" + std::to_string(i) + ".json");
       g.values_in_memory = keep;
-      REQUIRE(sweep_to_files<double>(sc, g, engine(1)).complete);
+      REQUIRE(app::sweep_to_files<double>(sc, g, engine(1)).complete);
       shards.push_back(g.summary_path);
     }
     CHECK(sweep_summary_core(sweep_merge(shards)) == want);
