@@ -27,8 +27,6 @@ class filter_counts {
  public:
   explicit filter_counts(const char* name);
   ~filter_counts();
-  filter_counts(const filter_counts&) = delete;
-  filter_counts& operator=(const filter_counts&) = delete;
   void record(const proof_status& s) {
     if (!enabled_) return;
     if (s) decided_.fetch_add(1, std::memory_order_relaxed);

@@ -3,14 +3,13 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 
 namespace gyrores {
 
 filter_counts::filter_counts(const char* name) : name_(name), enabled_(std::getenv("GYRORES_FILTER_STATS") != nullptr) {}
 
 // A reason is a static text (core/status.hpp): its address is its key, taken by the first free
-// slot; equal texts at two addresses are added up when printed.
+// slot.
 void filter_counts::add(const char* reason) {
   for (std::size_t i = 0; i < slots; ++i) {
     const char* have = reason_[i].load(std::memory_order_acquire);
@@ -28,17 +27,8 @@ filter_counts::~filter_counts() {
   if (!enabled_ || decided_.load() + undecided == 0) return;
   std::fprintf(stderr, "%s: %llu pairs, %llu to the exact evaluation\n", name_,
                (unsigned long long)(decided_.load() + undecided), (unsigned long long)undecided);
-  for (std::size_t i = 0; i < slots; ++i) {
-    const char* r = reason_[i].load();
-    bool first = r != nullptr;  // the first slot of its text prints the text's total
-    std::uint64_t n = 0;
-    for (std::size_t j = 0; first && j < slots; ++j)
-      if (reason_[j].load() && std::strcmp(reason_[j].load(), r) == 0) {
-        first = j >= i;
-        n += count_[j].load();
-      }
-    if (first) std::fprintf(stderr, "  %-40s %llu\n", r, (unsigned long long)n);
-  }
+  for (std::size_t i = 0; i < slots && reason_[i].load(); ++i)
+    std::fprintf(stderr, "  %-40s %llu\n", reason_[i].load(), (unsigned long long)count_[i].load());
 }
 
 }  // namespace gyrores
