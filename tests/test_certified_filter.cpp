@@ -1,7 +1,9 @@
-// The certified sweep's filter (sweep/certified_filter.hpp, core/dd_ball.hpp): every ball holds
-// the exact result (MPFR at 400 bits), every bracket the high-precision root, an undecided sign
-// or rounding is never taken as decided, and certified sweeps print the same bytes with the filter
-// as without it. tests/mutants/CMakeLists.txt breaks each step and requires a case here to fail.
+// The certified sweep's filter: the theorem in double-double balls (theorem/minimum_dd_ball.hpp,
+// theorem/paper.hpp, core/dd_ball.hpp) and the rows' roundings of its balls (sweep/testing.hpp):
+// every ball holds the exact result (MPFR at 400 bits), every bracket the high-precision root, an
+// undecided sign or rounding is never taken as decided, and certified sweeps print the same bytes
+// with the filter as without it. tests/mutants/CMakeLists.txt breaks each step and requires a
+// case here to fail.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,16 +12,19 @@
 
 #include <gyrores/core/dd_ball.hpp>
 #include <gyrores/core/real.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_summary.hpp>
-#include <gyrores/sweep/certified_filter.hpp>
 #include <gyrores/sweep/evaluate.hpp>
+#include <gyrores/sweep/testing.hpp>
 #include <gyrores/theorem/lobes.hpp>
+#include <gyrores/theorem/minimum_dd_ball.hpp>
+#include <gyrores/theorem/paper.hpp>
 
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
-using namespace gyrores::detail::filter;
+using namespace gyrores::sweep_testing;
 using gyrores::ddb::exact;
 
 namespace {
@@ -167,13 +172,13 @@ TEST_CASE("filter balls hold u* and u_c - u_a; signs at the roots are undecided"
   const auto pairs = sample_pairs(3000000, 300, 13);
   for (const auto& p : pairs) {
     const std::int64_t a = std::int64_t(p.order()), b = p.delta();
-    constants K;
-    REQUIRE(constants_of(K, p));
+    dd_ball_constants K;
+    REQUIRE(dd_ball_constants_of(K, p));
     const int m_min = theorem_m_min(a);
     if (m_min != 0) {
       ++nondegenerate;
       dd_ball U;
-      if (theorem_root(U, K, m_min)) {
+      if (theorem_root_dd_ball(U, K, m_min)) {
         ++decided;
         const mpfr_real u = theorem_root_hp(a, b, m_min);
         CHECK(holds(U, u));
@@ -182,7 +187,7 @@ TEST_CASE("filter balls hold u* and u_c - u_a; signs at the roots are undecided"
         const double_double un = dd::add(double_double(double(u)), double_double(double(u - mpfr_real(double(u)))));
         dd_ball mu;
         REQUIRE(ddb::div(mu, ddb::scale(K.pi, 0.5 * m_min), exact(K.a)));
-        const dd_ball F = theorem_F(K, mu, trig_at(un), nullptr);
+        const dd_ball F = theorem_F_dd_ball(K, mu, dd_trig_at(un), nullptr);
         CHECK_FALSE(ddb::positive(F));
         CHECK_FALSE(ddb::negative(F));
       }
@@ -195,7 +200,7 @@ TEST_CASE("filter balls hold u* and u_c - u_a; signs at the roots are undecided"
       dd_ball s;
       REQUIRE(ddb::div(s, ddb::mul(K.pi, exact(double(am))), exact(2 * K.b)));
       dd_ball D;
-      if (!asy_difference(D, K, s)) continue;
+      if (!paper_difference_dd_ball(D, K, s)) continue;
       ++asy_decided;
       const mpfr_real S = boost::math::constants::pi<mpfr_real>() * am / (2 * b);
       const mpfr_real ua = paper_root_hp(S), uc = theorem_root_hp(a, b, am);
@@ -217,7 +222,7 @@ TEST_CASE("certified sweeps: the same rows and summary with the filter as withou
     sweep_files files;
     files.rows_path = d / (f ? "filter.csv" : "plain.csv");
     files.summary_path = d / (f ? "filter.json" : "plain.json");
-    REQUIRE(sweep_to_files<double>(certified(400, f == 1), files, e).complete);
+    REQUIRE(app::sweep_to_files<double>(certified(400, f == 1), files, e).complete);
     text[f] = test::read_text(files.rows_path);
     text[f] = text[f].substr(0, text[f].rfind("# end"));  // the end line holds the seconds
     summary[f] = sweep_summary_core(json::parse(test::read_text(files.summary_path))).dump();
@@ -232,8 +237,7 @@ TEST_CASE("certified sweeps: the same rows and summary with the filter as withou
       if (std::gcd(a, sigma) == 1) {
         const auto p = pair_of(a - sigma, sigma);
         sweep_row<double> r;
-        detail::sweep_row_reset(r, p);
-        decided += detail::sweep_certified_filter(r, p, certified(400, true)) ? 1 : 0;
+        decided += certified_filter_row(r, p, certified(400, true)) ? 1 : 0;
         ++total;
       }
   WARN("filter decided " << decided << " of " << total << " pairs to order 400");
@@ -247,8 +251,7 @@ TEST_CASE("filter: what it must leave to the fallback, and the rows agree", "[fi
   // Beyond its range (order >= 2^31): declined, and the fallback's row is not an error.
   for (const auto& p : {pair_of(std::int64_t(1) << 31, (std::int64_t(1) << 31) - 1), pair_of(3000000001, 2)}) {
     sweep_row<double> r;
-    detail::sweep_row_reset(r, p);
-    CHECK_FALSE(detail::sweep_certified_filter(r, p, with));
+    CHECK_FALSE(certified_filter_row(r, p, with));
     const auto row = sweep_evaluate<double>(p, with);
     CHECK_FALSE(row.failed);
     CHECK(row.r_res == sweep_evaluate<double>(p, without).r_res);
@@ -278,13 +281,13 @@ TEST_CASE("filter: sin and cos over a ball from the balls at a nearby point", "[
   std::uniform_real_distribution<double> Upoint(0.001, 1.5), R(0, 1), sign(-1, 1);
   for (int i = 0; i < 2000; ++i) {
     const double u0 = Upoint(rng);
-    const trig_point P = trig_at(double_double(u0));
+    const dd_trig_point P = dd_trig_at(double_double(u0));
     // U's centre 2^-10 to 2^-60 from u0 (the remainder t^2/2 from 2^-21 down to far below the
     // balls' radii), radius up to the offset.
     const double offset = std::ldexp(sign(rng), -10 - i % 51), radius = std::fabs(offset) * R(rng);
     const dd_ball U{dd::add(double_double(u0), double_double(offset)), radius};
     dd_ball s, c;
-    sin_cos_near(P, U, s, c);
+    dd_sin_cos_near(P, U, s, c);
     for (int e = -1; e <= 1; ++e) {
       const mpfr_real v = hp(U.m) + e * mpfr_real(U.r);
       INFO("u0 = " << u0 << ", offset " << offset << ", radius " << radius << ", end " << e);

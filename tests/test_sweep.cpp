@@ -21,14 +21,17 @@
 
 #include <gyrores/io/csv.hpp>
 #include <gyrores/io/files.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 #include <gyrores/io/sweep_values_file.hpp>
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/sweep/engine.hpp>
-#include <gyrores/sweep/fast.hpp>
+#include <gyrores/sweep/testing.hpp>
 #include <gyrores/theorem/minimum.hpp>
+#include <gyrores/theorem/minimum_series.hpp>
+#include <gyrores/theorem/paper.hpp>
 #include <gyrores/theorem/root.hpp>
 
 #include "testing/cli_run.hpp"
@@ -234,14 +237,14 @@ TEST_CASE("sweep: P3's r_res^2 <= R(pi/2) is decided by the enclosure within rou
     const double R = double(N) / (4 * double(a) * double(a));
     const auto r = sweep_evaluate<double>(p, config(a));
     REQUIRE(r.r_res > 0);
-    CHECK(detail::sweep_r_below_quarter_R(p, r.r_res, N));
+    CHECK(sweep_testing::r_below_quarter_R(p, r.r_res, N));
     // An r_res a rounding above sqrt(R(pi/2)): the double comparison says no, but the true
     // r_res (which the enclosure proves) is below: the decision must not follow the rounding.
     const double above = std::sqrt(R) * (1 + 0x1p-44);
     REQUIRE(above * above > R);
-    CHECK(detail::sweep_r_below_quarter_R(p, above, N));
+    CHECK(sweep_testing::r_below_quarter_R(p, above, N));
     // Far above (beyond any rounding): the double comparison decides.
-    CHECK_FALSE(detail::sweep_r_below_quarter_R(p, std::sqrt(R) * (1 + 0x1p-30), N));
+    CHECK_FALSE(sweep_testing::r_below_quarter_R(p, std::sqrt(R) * (1 + 0x1p-30), N));
   }
 }
 
@@ -350,7 +353,7 @@ TEST_CASE("sweep: an MPFR sweep on 2 threads equals the same sweep on 1 thread, 
     const std::string n = std::to_string(threads) + "_" + std::to_string(global);
     f.rows_path = d / ("rows" + n + ".csv");
     f.summary_path = d / ("sum" + n + ".json");
-    const auto rep = sweep_to_files<mpfr_real>(c, f, engine(threads, 16));
+    const auto rep = app::sweep_to_files<mpfr_real>(c, f, engine(threads, 16));
     REQUIRE(rep.complete);
     CHECK(rep.threads == threads);
     rows.push_back(without_last_line(read_text(f.rows_path)));
@@ -416,7 +419,7 @@ TEST_CASE("sweep: rows and summary identical for 1 and 2 threads", "[sweep]") {
     sweep_files f;
     f.rows_path = d / ("rows" + std::to_string(threads) + ".csv");
     f.summary_path = d / ("sum" + std::to_string(threads) + ".json");
-    auto rep = sweep_to_files<double>(c, f, engine(threads, threads == 1 ? 64 : 5));
+    auto rep = app::sweep_to_files<double>(c, f, engine(threads, threads == 1 ? 64 : 5));
     REQUIRE(rep.complete);
     CHECK(rep.threads == threads);
     (threads == 1 ? s1 : s2) = read_json(f.summary_path);
@@ -449,7 +452,7 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
   const std::int64_t M = 90;
   sweep_files single;
   single.summary_path = d / "single.json";
-  auto rep = sweep_to_files<double>(config(M), single, engine(2));
+  auto rep = app::sweep_to_files<double>(config(M), single, engine(2));
   REQUIRE(rep.complete);
   const json want = sweep_summary_core(read_json(single.summary_path));
 
@@ -461,11 +464,11 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
     sweep_files f;
     f.rows_path = d / ("shard" + std::to_string(i) + ".csv");
     f.summary_path = d / ("shard" + std::to_string(i) + ".json");
-    REQUIRE(sweep_to_files<double>(c, f, engine(2)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(2)).complete);
     sweep_files g;
     g.rows_path = d / ("shard" + std::to_string(i) + ".jsonl");
     g.rows_format = sweep_format::jsonl;
-    REQUIRE(sweep_to_files<double>(c, g, engine(1)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, g, engine(1)).complete);
     csv.push_back(f.rows_path);
     jsonl.push_back(g.rows_path);
     summaries.push_back(f.summary_path);
@@ -483,12 +486,12 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
   sweep_config oc = config(M - 1);
   oc.shard_index = 3;
   oc.shard_count = 4;
-  REQUIRE(sweep_to_files<double>(oc, other, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(oc, other, engine(1)).complete);
   CHECK_THROWS_AS(sweep_merge({csv[0], csv[1], csv[2], other.rows_path}), usage_error);
   // A single complete run merges to itself.
   sweep_files whole;
   whole.rows_path = d / "whole.csv";
-  REQUIRE(sweep_to_files<double>(config(M), whole, engine(2)).complete);
+  REQUIRE(app::sweep_to_files<double>(config(M), whole, engine(2)).complete);
   CHECK(sweep_summary_core(sweep_merge({whole.rows_path})) == want);
 }
 
@@ -506,7 +509,7 @@ class resume_fixture {
     sweep_files f;
     f.rows_path = d / "ref.csv";
     f.summary_path = d / "ref.json";
-    REQUIRE(sweep_to_files<double>(c, f, engine(2)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(2)).complete);
     ref_rows = without_last_line(read_text(f.rows_path));
     ref_summary = sweep_summary_core(read_json(f.summary_path));
   }
@@ -516,7 +519,7 @@ class resume_fixture {
     f.resume = true;
     e.max_pairs = 0;
     e.stop = nullptr;
-    const auto rep = sweep_to_files<double>(c, f, e);
+    const auto rep = app::sweep_to_files<double>(c, f, e);
     REQUIRE(rep.complete);
     CHECK_FALSE(path_exists(rep.state_path));
     CHECK(sweep_summary_core(read_json(f.summary_path)) == ref_summary);
@@ -533,7 +536,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after max_pairs limits, twice, g
   f.summary_path = d / "a.json";
   auto e = engine(2);
   e.max_pairs = 100;
-  auto r1 = sweep_to_files<double>(c, f, e);
+  auto r1 = app::sweep_to_files<double>(c, f, e);
   CHECK_FALSE(r1.complete);
   CHECK(r1.done == 100);
   CHECK_FALSE(path_exists(f.rows_path));  // only a.csv.part: never a partial a.csv
@@ -542,7 +545,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after max_pairs limits, twice, g
   CHECK(path_exists(r1.state_path));
   f.resume = true;
   e.max_pairs = 333;
-  auto r2 = sweep_to_files<double>(c, f, e);
+  auto r2 = app::sweep_to_files<double>(c, f, e);
   CHECK_FALSE(r2.complete);
   CHECK(r2.done == 433);
   resume_to_end(f, e);
@@ -554,7 +557,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after the stop flag (as set by S
   std::atomic<bool> stop{false};
   auto e = engine(2, 16);
   e.stop = &stop;
-  auto r1 = sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
+  auto r1 = app::sweep_to_files<double>(c, f, e, [&](const sweep_progress_info& p) {
     if (p.done >= 200) stop = true;
   });
   CHECK_FALSE(r1.complete);
@@ -572,7 +575,7 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after a crash drops the rows wri
   f.checkpoint_seconds = 1e-9;  // a checkpoint after every block
   auto e = engine(1, 10);
   int blocks = 0;
-  CHECK_THROWS_AS(sweep_to_files<double>(c, f, e,
+  CHECK_THROWS_AS(app::sweep_to_files<double>(c, f, e,
                                          [&](const sweep_progress_info&) {
                                            if (++blocks == 25) throw compute_error("simulated crash");
                                          }),
@@ -598,7 +601,7 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   f.summary_path = d / "old.json";
   auto e = engine(1);
   e.max_pairs = 50;
-  REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
   const std::string state = sweep_default_state_path(f);
   json st = read_json(state);
   const json run = st["run"];
@@ -609,7 +612,7 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   f.resume = true;
   auto message = [&](const sweep_config& cfg) {
     try {
-      sweep_to_files<double>(cfg, f, e);
+      app::sweep_to_files<double>(cfg, f, e);
     } catch (const usage_error& err) {
       return std::string(err.what());
     }
@@ -643,7 +646,7 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
   sweep_config same = c;
   same.checks = some;
   e.max_pairs = 0;
-  CHECK(sweep_to_files<double>(same, f, e).complete);
+  CHECK(app::sweep_to_files<double>(same, f, e).complete);
 }
 
 TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[sweep]") {
@@ -653,13 +656,13 @@ TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[swee
   f.summary_path = d / "e.json";
   auto e = engine(1);
   e.max_pairs = 50;
-  REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
   f.resume = true;
-  CHECK_THROWS_AS(sweep_to_files<double>(config(81), f, e), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(config(81), f, e), usage_error);
   sweep_files g;
   g.summary_path = d / "nothing.json";
   g.resume = true;
-  CHECK_THROWS_AS(sweep_to_files<double>(c, g, e), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(c, g, e), usage_error);
 }
 
 TEST_CASE("sweep: files are written atomically", "[sweep]") {
@@ -701,7 +704,7 @@ TEST_CASE("sweep: files are written atomically", "[sweep]") {
   sweep_files f;
   f.rows_path = d / "rows.csv";
   f.summary_path = d / "missing/summary.json";
-  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(config(30), f, engine(1)), usage_error);
   CHECK_FALSE(path_exists(f.summary_path));
   CHECK_FALSE(path_exists(f.summary_path + ".part"));
   CHECK_FALSE(path_exists(d / "missing"));
@@ -799,14 +802,14 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   f.summary_path = d / "s.json";
   auto e = engine(1);
   e.max_pairs = 20;
-  REQUIRE_FALSE(sweep_to_files<double>(config(30), f, e).complete);
+  REQUIRE_FALSE(app::sweep_to_files<double>(config(30), f, e).complete);
   const std::string state = sweep_default_state_path(f);
   json st = read_json(state);
   write_file_atomically(state + ".bak", st.dump());
   st.erase("done");
   write_file_atomically(state, st.dump());
   f.resume = true;
-  CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(config(30), f, engine(1)), usage_error);
   // A count beyond 64 bits (parsed as a double; converting it was undefined behaviour, UBSan).
   st = read_json(state + ".bak");
   REQUIRE(st.contains("summary"));
@@ -817,13 +820,13 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
     else big["done"] = huge;
     write_file_atomically(state, big.dump());
     INFO(where);
-    CHECK_THROWS_AS(sweep_to_files<double>(config(30), f, engine(1)), usage_error);
+    CHECK_THROWS_AS(app::sweep_to_files<double>(config(30), f, engine(1)), usage_error);
   }
   // A rows file naming shard 0 of 0 (merge divided by the shard count), or shard 3 of 2.
   sweep_files r;
   r.rows_path = d / "r.jsonl";
   r.rows_format = sweep_format::jsonl;
-  REQUIRE(sweep_to_files<double>(config(30), r, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(config(30), r, engine(1)).complete);
   const std::string rows = read_text(r.rows_path);
   REQUIRE(rows.find("\"shard\":[0,1]") != std::string::npos);
   for (const std::string shard : {"[0,0]", "[3,2]", "[\"x\",1]"}) {
@@ -837,7 +840,7 @@ TEST_CASE("sweep: a state or shard output with a bad field is a usage error, not
   // "could not compute", for what is a malformed file).
   sweep_files c;
   c.rows_path = d / "r.csv";
-  REQUIRE(sweep_to_files<double>(config(30), c, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(config(30), c, engine(1)).complete);
   std::string csv = read_text(c.rows_path);
   const auto row = csv.find("\n2,1,3,");
   REQUIRE(row != std::string::npos);
@@ -859,7 +862,7 @@ TEST_CASE("sweep: integer fields of shard summaries beyond their type are usage 
     c.shard_count = 2;
     sweep_files f;
     f.summary_path = d / ("s" + std::to_string(i) + ".json");
-    REQUIRE(sweep_to_files<double>(c, f, engine(1)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(1)).complete);
     shards.push_back(f.summary_path);
   }
   REQUIRE_NOTHROW(sweep_merge(shards));
@@ -974,7 +977,7 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
   const sweep_config c = config(120);
   sweep_files mem;
   mem.summary_path = d / "mem.json";
-  REQUIRE(sweep_to_files<double>(c, mem, engine(2)).complete);
+  REQUIRE(app::sweep_to_files<double>(c, mem, engine(2)).complete);
   const json want = sweep_summary_core(read_json(mem.summary_path));
   REQUIRE(want.at("t_first_over_proxy").at("count").get<std::uint64_t>() > 1500);
 
@@ -985,11 +988,11 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
     f.values_in_memory = keep;
     auto e = engine(2, 16);
     e.max_pairs = 700;  // stop, resume, stop, resume: the file is cut back and appended to
-    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
     f.resume = true;
-    REQUIRE_FALSE(sweep_to_files<double>(c, f, e).complete);
+    REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
     e.max_pairs = 0;
-    REQUIRE(sweep_to_files<double>(c, f, e).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, e).complete);
     CHECK(sweep_summary_core(read_json(f.summary_path)) == want);
     CHECK_FALSE(path_exists(sweep_default_state_path(f) + ".values"));
 
@@ -1001,14 +1004,14 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
       sweep_files g;
       g.summary_path = d / ("shard" + std::to_string(keep) + "_" + std::to_string(i) + ".json");
       g.values_in_memory = keep;
-      REQUIRE(sweep_to_files<double>(sc, g, engine(1)).complete);
+      REQUIRE(app::sweep_to_files<double>(sc, g, engine(1)).complete);
       shards.push_back(g.summary_path);
     }
     CHECK(sweep_summary_core(sweep_merge(shards)) == want);
   }
 }
 
-// ---- the fast path without rows (sweep/fast.hpp) ----
+// ---- the fast path without rows (src/lib/sweep/fast.cpp) ----
 
 namespace {
 
@@ -1065,6 +1068,14 @@ TEST_CASE("sweep: without rows the fast path gives the rows' summary", "[sweep]"
   }
 }
 
+namespace {
+// The series form's u* of the pair (a, b) with m_min = m, and its theta_first (theorem/minimum_series.hpp).
+double series_root(std::int64_t a, std::int64_t b, int m) {
+  return theorem_root_series(double(b) / double(a), std::numbers::pi / 4 * double(m) / double(b));
+}
+double series_theta(std::int64_t a, std::int64_t k, double su) { return lobe_theta_double(double(a), 1 / double(a), k, su); }
+}  // namespace
+
 TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_double", "[sweep]") {
   std::mt19937_64 rng(20261127);
   int tested = 0;
@@ -1072,15 +1083,15 @@ TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_dou
   for (std::int64_t a : {131, 1001, 1002, 100003, 100002, 99999998})
     for (std::int64_t b : {64, 65, 66, 67, 68, 69, 72, 76, 80, 1000, 1001})
       for (std::int64_t bb : {b, a - b}) {
-        if ((a - bb) % 2 != 0 || bb >= a || bb < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+        if ((a - bb) % 2 != 0 || bb >= a || bb < series_min_delta || a % 4 == 0) continue;
         const std::int64_t tau = (a + bb) / 2, sigma = (a - bb) / 2;
         if (sigma < 1 || std::gcd(tau, sigma) != 1) continue;
         const minimum_double M = theorem_minimum_double(resonant_pair<std::int64_t>(tau, sigma));
-        const double u = detail::sweep_fast_root(a, bb, M.m_min);
+        const double u = series_root(a, bb, M.m_min);
         INFO(tau << "," << sigma);
         CHECK(ulps(u, M.u_star) <= 8);
         const auto& f = M.lobes[0];
-        CHECK(ulps(detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u), M.theta_first) <= 1);
+        CHECK(ulps(series_theta(a, f.k, f.m < 0 ? -u : u), M.theta_first) <= 1);
         ++tested;
       }
   CHECK(tested >= 40);
@@ -1088,14 +1099,14 @@ TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_dou
     std::uniform_int_distribution<std::int64_t> sig(1, (a - 1) / 2);
     for (int n = 0; n < 400; ++n) {
       const std::int64_t sigma = sig(rng), tau = a - sigma, b = tau - sigma;
-      if (std::gcd(tau, sigma) != 1 || b < detail::sweep_fast_min_delta || a % 4 == 0) continue;
+      if (std::gcd(tau, sigma) != 1 || b < series_min_delta || a % 4 == 0) continue;
       const resonant_pair<std::int64_t> p(tau, sigma);
       const minimum_double M = theorem_minimum_double(p);
-      const double u = detail::sweep_fast_root(a, b, M.m_min);
+      const double u = series_root(a, b, M.m_min);
       INFO(tau << "," << sigma);
       CHECK(ulps(u, M.u_star) <= 8);
       const auto& f = M.lobes[0];
-      const double theta = detail::sweep_fast_theta(a, f.k, f.m < 0 ? -u : u);
+      const double theta = series_theta(a, f.k, f.m < 0 ? -u : u);
       CHECK(ulps(theta, M.theta_first) <= 1);
       ++tested;
     }
@@ -1105,11 +1116,11 @@ TEST_CASE("sweep: the fast path's u* and theta_first against theorem_minimum_dou
 
 TEST_CASE("sweep: the fast path's R(pi/2) in int64 is sweep_quarter_R_scaled", "[sweep]") {
   for (std::int64_t a = 3; a <= 400; ++a)
-    for (std::int64_t b = a - 2; b >= 1; b -= 2) CHECK(detail::sweep_fast_quarter_R_scaled(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
+    for (std::int64_t b = a - 2; b >= 1; b -= 2) CHECK(sweep_quarter_R_scaled<std::int64_t>(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
   const std::int64_t big = (std::int64_t(1) << 28) - 1;
   for (std::int64_t a : {big, big - 1, big - 2, big - 3})
     for (std::int64_t b : {std::int64_t(1), std::int64_t(2), a - 2, a / 2, a / 2 + 1})
-      if ((a - b) % 2 == 0 && b > 0) CHECK(detail::sweep_fast_quarter_R_scaled(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
+      if ((a - b) % 2 == 0 && b > 0) CHECK(sweep_quarter_R_scaled<std::int64_t>(a, b) == std::int64_t(sweep_quarter_R_scaled(a, b)));
 }
 
 TEST_CASE("sweep: the fast path's P3 bound holds, and refuses what it cannot prove", "[sweep]") {
@@ -1124,15 +1135,15 @@ TEST_CASE("sweep: the fast path's P3 bound holds, and refuses what it cannot pro
       const double m4 = std::pow(double(M.m_min), 4), pi4 = std::pow(std::numbers::pi, 4);
       const double bound = double(sigma) / double(tau) * pi4 * m4 / (64 * double(a) * double(a) * double(b) * double(b));
       CHECK(M.r_res * M.r_res <= bound * (1 + 1e-14));
-      CHECK(detail::sweep_fast_r_below_quarter_R(tau, sigma, M.m_min, std::int64_t(sweep_quarter_R_scaled(a, b))));
+      CHECK(sweep_testing::fast_r_below_quarter_R(tau, sigma, M.m_min, std::int64_t(sweep_quarter_R_scaled(a, b))));
     }
   // pi^4 sigma <= 16 b^2 tau N with tau = 2, sigma = 1 (b = 1), m = 1: 97.41 <= 32 N from N = 4 on.
-  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 3));
-  CHECK(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 4));
-  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 1, 0));
+  CHECK_FALSE(sweep_testing::fast_r_below_quarter_R(2, 1, 1, 3));
+  CHECK(sweep_testing::fast_r_below_quarter_R(2, 1, 1, 4));
+  CHECK_FALSE(sweep_testing::fast_r_below_quarter_R(2, 1, 1, 0));
   // m = 2: 16 pi^4 = 1558.5 <= 32 N from N = 49 on.
-  CHECK_FALSE(detail::sweep_fast_r_below_quarter_R(2, 1, 2, 48));
-  CHECK(detail::sweep_fast_r_below_quarter_R(2, 1, 2, 49));
+  CHECK_FALSE(sweep_testing::fast_r_below_quarter_R(2, 1, 2, 48));
+  CHECK(sweep_testing::fast_r_below_quarter_R(2, 1, 2, 49));
 }
 
 TEST_CASE("sweep: the fast path's asy bound is above every computed constant, and the skip keeps a margin", "[sweep]") {
@@ -1143,22 +1154,22 @@ TEST_CASE("sweep: the fast path's asy bound is above every computed constant, an
   std::size_t tested = 0;
   for (std::int64_t a = 5; a <= 700; ++a)
     for (std::int64_t b = (a % 2 ? 1 : 2); 2 * b < a; b += 2) {
-      const std::int64_t am = detail::sweep_asy_offset(a, b);
-      const auto v = detail::sweep_asy_double_of(a, b, am);
-      const double bound = detail::sweep_fast_asy_bound(a, b, am);
+      const std::int64_t am = paper_offset(a, b);
+      const auto v = paper_error_of(a, b, am);
+      const double bound = paper_constant_bound_of(a, b, am);
       INFO(a << " " << b << " " << am);
       CHECK(v.constant <= bound * (1 + 0x1p-47));
       ++tested;
     }
   CHECK(tested > 50000);
   // Where s = pi/2 (b = 1, a tie: |m| = b) and x is small the bound is nearly the constant.
-  const auto v = detail::sweep_asy_double_of(2999, 1, 1);
-  CHECK(detail::sweep_fast_asy_bound(2999, 1, 1) <= v.constant * (1 + 1e-6));
+  const auto v = paper_error_of(2999, 1, 1);
+  CHECK(paper_constant_bound_of(2999, 1, 1) <= v.constant * (1 + 1e-6));
   // The skip: only strictly below a known constant, beyond the 2^-36 margin.
-  CHECK_FALSE(detail::sweep_fast_asy_below(0.1, 0));
-  CHECK_FALSE(detail::sweep_fast_asy_below(0.1, 0.1));
-  CHECK_FALSE(detail::sweep_fast_asy_below(0.1 * (1 - 0x1p-40), 0.1));
-  CHECK(detail::sweep_fast_asy_below(0.1 * (1 - 0x1p-35), 0.1));
+  CHECK_FALSE(sweep_testing::fast_asy_below(0.1, 0));
+  CHECK_FALSE(sweep_testing::fast_asy_below(0.1, 0.1));
+  CHECK_FALSE(sweep_testing::fast_asy_below(0.1 * (1 - 0x1p-40), 0.1));
+  CHECK(sweep_testing::fast_asy_below(0.1 * (1 - 0x1p-35), 0.1));
 }
 
 TEST_CASE("sweep: the fast path's batch inverses give the pass frames' k", "[sweep]") {
@@ -1174,7 +1185,7 @@ TEST_CASE("sweep: the fast path's batch inverses give the pass frames' k", "[swe
   for (std::int64_t sigma : {std::int64_t(1), std::int64_t(3), (big - 5) / 2 - 2})
     if (std::gcd(big - 5, sigma) == 1) pairs.emplace_back(big - 5 - sigma, sigma);  // 2 mod 4
   std::vector<std::int64_t> ks;
-  detail::sweep_fast_pass_ks(pairs, ks);
+  pass_ks_of_block(pairs, ks);
   REQUIRE(ks.size() == pairs.size());
   std::size_t checked = 0;
   for (std::size_t i = 0; i < pairs.size(); ++i) {

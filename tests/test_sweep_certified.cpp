@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numeric>
 
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
@@ -282,7 +283,7 @@ TEST_CASE("certified sweep: shards merge to the single run, and the summary keep
   const std::int64_t M = 50;
   sweep_files single;
   single.summary_path = d / "single.json";
-  REQUIRE(sweep_to_files<double>(certified_config(M), single, engine(2)).complete);
+  REQUIRE(app::sweep_to_files<double>(certified_config(M), single, engine(2)).complete);
   const json want = sweep_summary_core(json::parse(test::read_text(single.summary_path)));
   CHECK(want.at("proved").size() == 3);
   std::vector<std::string> rows;
@@ -292,7 +293,7 @@ TEST_CASE("certified sweep: shards merge to the single run, and the summary keep
     c.shard_count = 3;
     sweep_files f;
     f.rows_path = d / ("shard" + std::to_string(i) + ".csv");
-    REQUIRE(sweep_to_files<double>(c, f, engine(1)).complete);
+    REQUIRE(app::sweep_to_files<double>(c, f, engine(1)).complete);
     rows.push_back(f.rows_path);
   }
   CHECK(sweep_summary_core(sweep_merge(rows)) == want);
@@ -303,6 +304,6 @@ TEST_CASE("certified sweep: shards merge to the single run, and the summary keep
   c.shard_count = 3;
   sweep_files f;
   f.rows_path = d / "plain2.csv";
-  REQUIRE(sweep_to_files<double>(c, f, engine(1)).complete);
+  REQUIRE(app::sweep_to_files<double>(c, f, engine(1)).complete);
   CHECK_THROWS_AS(sweep_merge({rows[0], rows[1], f.rows_path}), usage_error);
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 #include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
@@ -35,7 +36,7 @@ json run_v2(const temp_dir& d, const std::string& name, std::int64_t index = 0, 
   f.summary_path = d / (name + ".json");
   sweep_engine_options e;
   e.threads = 1;
-  const auto rep = sweep_to_files<double>(c, f, e);
+  const auto rep = app::sweep_to_files<double>(c, f, e);
   REQUIRE(rep.complete);
   return rep.summary;
 }

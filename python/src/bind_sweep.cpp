@@ -1,18 +1,14 @@
-// gyrores.enumerate_pairs (model/enumerate.hpp, lazily) and gyrores.sweep (sweep/engine.hpp in
-// double, the GIL released while the workers run): the rows as NumPy columns, which
+// gyrores.enumerate_pairs (model/enumerate.hpp, lazily) and gyrores.sweep (app/sweep.hpp, a sweep
+// in double in memory, the GIL released while the workers run): the rows as NumPy columns, which
 // gyrores/__init__.py assembles into a structured array, and the summary of `gyrores sweep
-// --json` (io/sweep_summary.hpp).
+// --json`.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <chrono>
-#include <map>
 #include <vector>
 
-#include <gyrores/io/sweep_run.hpp>
-#include <gyrores/io/sweep_summary.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/model/enumerate.hpp>
-#include <gyrores/sweep/sweep.hpp>
 
 #include "common.hpp"
 #include "row_columns.hpp"
@@ -41,13 +37,6 @@ class pair_iterator {
   coprime_pairs::iterator it_;
 };
 
-// The engine's blocks are evaluated on workers in any order; their rows wait here, by first
-// index, until on_block takes them in enumeration order.
-struct pending_rows {
-  std::mutex mtx;
-  std::map<std::uint64_t, std::vector<sweep_row<double>>> blocks;
-};
-
 // Called on the calling thread between blocks, GIL released: the progress callback (with the
 // GIL) and Ctrl-C. A Python exception stops the run (the engine rethrows it after the workers).
 void report_progress(const py::object& progress, std::uint64_t done, std::uint64_t total) {
@@ -56,55 +45,22 @@ void report_progress(const py::object& progress, std::uint64_t done, std::uint64
   if (!progress.is_none()) progress(done, total);
 }
 
-sweep_config config_of(std::int64_t max_order, std::int64_t min_order, const std::string& checks,
-                       std::int64_t examples) {
-  sweep_config cfg;
-  cfg.max_order = max_order;
-  cfg.min_order = min_order;
-  cfg.checks = sweep_parse_checks(checks);
-  if (examples < 0) throw usage_error("examples must be >= 0");
-  cfg.max_examples = std::size_t(examples);
-  sweep_validate(cfg);
-  return cfg;
-}
-
 py::tuple run_sweep(std::int64_t max_order, std::int64_t min_order, bool rows, const py::object& progress,
                     const std::string& checks, unsigned threads, std::int64_t examples) {
-  const sweep_config cfg = config_of(max_order, min_order, checks, examples);
-  const std::uint64_t total = sweep_total_pairs(cfg.min_order, cfg.max_order);
-  sweep_accumulator acc;
-  acc.max_examples = cfg.max_examples;
+  app::sweep_in_memory_request r;
+  r.config.max_order = max_order;
+  r.config.min_order = min_order;
+  r.config.checks = sweep_parse_checks(checks);
+  if (examples < 0) throw usage_error("examples must be >= 0");
+  r.config.max_examples = std::size_t(examples);
+  r.threads = threads;
+  r.keep_rows = rows;
   row_columns cols;
-  pending_rows pending;
-  sweep_engine_options eo;
-  eo.threads = threads;
-  auto evaluate = [&](const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk) {
-    std::vector<sweep_row<double>> out;
-    for (const auto& p : pairs) {
-      auto row = sweep_evaluate<double>(p, cfg);
-      blk.summary.add(sweep_record_of(row, cfg.digits));
-      if (rows) out.push_back(std::move(row));
-    }
-    std::lock_guard<std::mutex> lk(pending.mtx);
-    pending.blocks[blk.first] = std::move(out);
+  r.on_block = [&](std::vector<sweep_row<double>>& block, std::uint64_t done, std::uint64_t total) {
+    for (const auto& row : block) cols.add(row);
+    report_progress(progress, done, total);
   };
-  auto on_block = [&](sweep_block& blk) {
-    acc.merge(blk.summary);
-    std::vector<sweep_row<double>> done;
-    {
-      std::lock_guard<std::mutex> lk(pending.mtx);
-      done = std::move(pending.blocks.at(blk.first));
-      pending.blocks.erase(blk.first);
-    }
-    for (const auto& r : done) cols.add(r);
-    report_progress(progress, blk.first + blk.count, total);
-  };
-  const auto t0 = std::chrono::steady_clock::now();
-  json summary = call_library([&] {
-    sweep_run_blocks(cfg, eo, evaluate, on_block);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return sweep_summary_json(acc, sweep_run_json<double>(cfg), seconds);
-  });
+  json summary = call_library([&] { return app::run_sweep_in_memory(r); });
   return py::make_tuple(rows ? py::object(columns_dict(cols)) : py::none(), to_python(summary));
 }
 

@@ -1,8 +1,9 @@
 // gyrores sweep --max-order M [--min-order m] [--check LIST] [--certified] [--out FILE] [--format csv|jsonl]
 //               [--summary FILE] [--threads N] [--shard I/N] [--resume] [--digits D] [--json] ...
 // Visits every coprime pair with m <= tau + sigma <= M, checks the paper's claims per pair and
-// prints a summary. The engine is include/gyrores/sweep/, the files io/sweep_files.hpp; what
-// the rows, summary, resume state and merge hold is in docs/formats.md.
+// prints a summary. The sweep request (working type, size caps, files and resume) is the
+// application layer's, app/sweep.hpp; what the rows, summary, resume state and merge hold is in
+// docs/formats.md.
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 #include <cstdio>
 #include <memory>
 
-#include <gyrores/io/sweep_files.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 
 #include "cli_output.hpp"
@@ -115,46 +116,6 @@ void parse_shard(const std::string& s, sweep_config& c) {
   if (c.shard_count < 1 || c.shard_index < 0 || c.shard_index >= c.shard_count) throw bad();
 }
 
-template <class T> sweep_report run_typed(const sweep_config& cfg, const sweep_files& files, const sweep_engine_options& eo, bool quiet) {
-  progress_printer pp(quiet);
-  sweep_progress_info last;
-  auto rep = sweep_to_files<T>(cfg, files, eo, [&](const sweep_progress_info& p) {
-    last = p;
-    pp(p);
-  });
-  pp.finish(last);
-  return rep;
-}
-
-// Refused without --allow-large (docs/formats.md, "Size caps"): more pairs than this, or more
-// scratch bytes (the values file, 8 bytes a pair, plus the rows).
-constexpr double large_sweep_pairs = 1e10;
-constexpr double large_sweep_bytes = 100e9;
-// Bytes of one row as written (measured at order 2000: ~190 in csv, ~390 in jsonl, at 17 digits).
-constexpr double row_bytes_csv = 200, row_bytes_jsonl = 400;
-
-std::string gigabytes(double b) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g GB", b / 1e9);
-  return buf;
-}
-
-// The sweep's cost before it starts: pairs (counted, or 3 M^2 / (2 pi^2) coprime pairs beyond the
-// counting limit) and scratch bytes; refused beyond the limits unless allowed.
-void check_sweep_size(const sweep_args& a, const sweep_config& cfg, const sweep_files& files) {
-  const double m = double(cfg.max_order), lo = double(std::max<std::int64_t>(cfg.min_order, 3));
-  const double all = cfg.max_order <= sweep_count_limit ? double(sweep_total_pairs(std::max<std::int64_t>(cfg.min_order, 3), cfg.max_order))
-                                                       : 3.0 / (2 * 9.869604401089358) * (m * m - lo * lo);
-  const double pairs = all / double(cfg.shard_count);
-  const double per_row = files.rows_path.empty() ? 0 : files.rows_format == sweep_format::jsonl ? row_bytes_jsonl : row_bytes_csv;
-  const double bytes = pairs * (8 + per_row * std::max(1.0, double(cfg.digits) / 17));
-  if (a.allow_large || (pairs <= large_sweep_pairs && bytes <= large_sweep_bytes)) return;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3g", pairs);
-  throw usage_error("this sweep has about " + std::string(buf) + " pairs and needs about " + gigabytes(bytes) +
-                    " of scratch and output (limits: 1e10 pairs, 100 GB): add --allow-large to run it anyway, or shard it");
-}
-
 sweep_config config_of(const sweep_args& a) {
   if (a.max_order < 3) throw usage_error("--max-order must be >= 3 (the smallest pair (2, 1) has order 3), got " + std::to_string(a.max_order));
   if (a.max_order > (std::int64_t(1) << 40)) throw usage_error("--max-order must be <= 2^40 = 1099511627776");
@@ -199,26 +160,23 @@ sweep_files files_of(const sweep_args& a) {
   return files;
 }
 
-// The working type follows --digits: double up to 15, float128 up to 30, MPFR beyond.
-sweep_report run_at_precision(const sweep_args& a, const sweep_config& cfg, const sweep_files& files) {
-  sweep_engine_options eo;
-  eo.threads = a.threads;
-  // Without rows a pair costs ~0.2 us (the fast path, sweep/fast.hpp): blocks of 1024 would be
-  // handed out ~10^4 times a second, and the hand-over shows; 8192 keep it below 1%.
-  if (a.out.empty()) eo.block_size = 8192;
-  eo.max_pairs = std::uint64_t(a.max_pairs);
-  eo.stop = &stop_flag();  // set by the signal_scope of run_sweep
-  if (a.digits <= 15) return run_typed<double>(cfg, files, eo, a.quiet);
-  if (a.digits <= 30) return run_typed<float128>(cfg, files, eo, a.quiet);
-  return run_typed<mpfr_real>(cfg, files, eo, a.quiet);
-}
-
 std::string run_sweep(const sweep_args& a) {
-  const sweep_config cfg = config_of(a);
-  const sweep_files files = files_of(a);
-  check_sweep_size(a, cfg, files);
+  app::sweep_request r;
+  r.config = config_of(a);
+  r.files = files_of(a);
+  r.engine.threads = a.threads;
+  r.engine.max_pairs = std::uint64_t(a.max_pairs);
+  r.engine.stop = &stop_flag();  // set by the signal_scope below
+  r.allow_large = a.allow_large;
+  progress_printer pp(a.quiet);
+  sweep_progress_info last;
+  r.progress = [&](const sweep_progress_info& p) {
+    last = p;
+    pp(p);
+  };
   signal_scope signals;
-  const sweep_report rep = run_at_precision(a, cfg, files);
+  const sweep_report rep = app::run_sweep(r);
+  pp.finish(last);
   if (!rep.complete) {
     // Not "could not compute": a stop the user asked for, with its own status (cli_output.hpp).
     const bool interrupted = stop_flag().load();

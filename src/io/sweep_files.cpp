@@ -9,8 +9,6 @@
 
 namespace gyrores {
 
-GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_FILES_INSTANCES, )
-
 std::string sweep_default_state_path(const sweep_files& f) {
   if (!f.state_path.empty()) return f.state_path;
   if (!f.rows_path.empty()) return f.rows_path + ".resume";
@@ -18,7 +16,6 @@ std::string sweep_default_state_path(const sweep_files& f) {
   return "gyrores-sweep.resume";
 }
 
-namespace detail {
 namespace {
 
 const char* const state_format = "gyrores-sweep-state";
@@ -300,5 +297,4 @@ void sweep_file_session::finish_complete(unsigned threads, sweep_report& rep) {
   rep.summary = summary;
 }
 
-}  // namespace detail
 }  // namespace gyrores

@@ -4,6 +4,7 @@
 // runs on them in-process (double, one thread). A state that does not fit must give
 // usage_error; one that fits continues the 22-pair sweep to the end.
 #include <gyrores/core/error.hpp>
+#include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
 
 #include "fuzz_support.hpp"
@@ -24,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   gyrores::sweep_engine_options eo;
   eo.threads = 1;
   try {
-    const auto rep = gyrores::sweep_to_files<double>(cfg, files, eo);
+    const auto rep = gyrores::app::sweep_to_files<double>(cfg, files, eo);
     if (!rep.complete) std::abort();
   } catch (const gyrores::usage_error&) {
   } catch (const gyrores::compute_error&) {

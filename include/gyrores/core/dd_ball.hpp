@@ -2,8 +2,8 @@
 // Each operation takes the double-double operation of core/double_double.hpp on the midpoints
 // and adds to the propagated radius that operation's proved relative error bound, so a ball
 // always holds the exact result of the exact operation on any values in its operands' balls.
-// The certified sweep's filter (sweep/certified_filter.hpp) proves its brackets and values in
-// them.
+// The theorem in these balls (theorem/minimum_dd_ball.hpp), the certified sweep's filter, proves
+// its brackets and values in them.
 //
 // Bounds used (u = 2^-53; core/double_double.hpp, Joldes, Muller and Popescu 2017), each taken
 // relative to |m.hi| with slack for |exact| <= |m.hi| (1 + 2^-52):

@@ -1,7 +1,8 @@
-// A sweep with its files: the rows file (written as FILE.part, renamed when complete), the
-// summary (and the values file of a shard run), and the resume state written at checkpoints
-// and restored by `resume`. What each file holds and when it is written: docs/formats.md
-// (sweep rows, sweep summary, values file, resume state, atomicity).
+// The files of a sweep: the rows file (written as FILE.part, renamed when complete), the summary
+// (and the values file of a shard run), and the resume state written at checkpoints and
+// restored by `resume`. What each file holds and when it is written: docs/formats.md (sweep
+// rows, sweep summary, values file, resume state, atomicity). The run that feeds them is
+// app/sweep.hpp's.
 #pragma once
 #include <chrono>
 #include <cstddef>
@@ -58,10 +59,11 @@ struct sweep_report {
 // gyrores-sweep.resume.
 std::string sweep_default_state_path(const sweep_files& f);
 
-namespace detail {
-
-// The files of one sweep_to_files call, from opening (fresh, or restored from the resume state)
-// through the blocks and checkpoints to the end. `cfg` is validated, min_order >= 3.
+// The files of one sweep run, from opening (fresh, or restored from the resume state) through the
+// blocks and checkpoints to the end: the run itself (the engine in its working type) is the
+// application layer's (app/sweep.hpp). `cfg` is validated, min_order >= 3; `run` is its run
+// description (sweep_run_json). usage_error for a file that cannot be written or read, or a
+// resume state that is missing, for another sweep or inconsistent (docs/formats.md).
 class sweep_file_session {
  public:
   sweep_file_session(const sweep_config& cfg, const sweep_files& files, const json& run, const sweep_progress& progress);
@@ -101,47 +103,5 @@ class sweep_file_session {
   sweep_pair_id last_{0, 0};
   std::chrono::steady_clock::time_point t0_;
 };
-
-}  // namespace detail
-
-// Runs the sweep cfg with T as working type (MPFR: cfg.digits + 8 digits, sweep_bits; the
-// process-wide MPFR precision is neither read nor set), writing the files
-// named in `files`; progress, if set, is called after every block (on the calling thread).
-// Returns complete = false when eo.max_pairs or *eo.stop ended the run early (a checkpoint was
-// written: run again with files.resume to continue). usage_error for an invalid cfg, a file
-// that cannot be written or read, or a resume state that is missing or for another sweep; an
-// exception from the engine or from `progress` is rethrown after a checkpoint of the pairs done.
-template <class T>
-sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files, const sweep_engine_options& eo_in,
-                            const sweep_progress& progress = {}) {
-  sweep_config cfg = cfg_in;
-  if (cfg.min_order < 3) cfg.min_order = 3;
-  sweep_validate(cfg);
-  detail::sweep_file_session session(cfg, files, sweep_run_json<T>(cfg), progress);
-  sweep_row_formatter<T> format_row;
-  if (!files.rows_path.empty())
-    format_row = [f = files.rows_format, digits = cfg.digits](std::string& out, const sweep_row<T>& r) {
-      sweep_format_row(out, r, f, digits);
-    };
-  sweep_engine_options eo = eo_in;
-  eo.start = session.start();
-  sweep_outcome out;
-  try {
-    out = sweep_run<T>(cfg, eo, [&](sweep_block& b) { session.on_block(b); }, format_row);
-  } catch (...) {
-    try {
-      session.checkpoint();  // keep what is finished: the prefix delivered so far
-    } catch (...) {
-    }
-    throw;
-  }
-  return session.finish(out);
-}
-
-// Compiled once in src/io/sweep_files.cpp for the compiled reals (core/real.hpp).
-#define GYRORES_SWEEP_FILES_INSTANCES(PREFIX, T)                                                              \
-  PREFIX template sweep_report sweep_to_files<T>(const sweep_config&, const sweep_files&, const sweep_engine_options&, \
-                                                 const sweep_progress&);
-GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_FILES_INSTANCES, extern)
 
 }  // namespace gyrores

@@ -8,17 +8,11 @@
 //    (P3 in docs/mathematics.md);
 //  - the minimisers' lobes (theorem/lobes.hpp, exact integers; the theorem's items 4 and 5) and
 //    m_min, which sweep_lobes_hold checks against the pair independently;
-//  - enclosures of r_res, theta_first, t_first, t_min_paper = pi/|n| and their ratio: u* by
-//    prove_theorem_root, r_res = sqrt(G) over tan(U) (theorem_radius), theta_first =
-//    2 (k pi + sign(m) u*)/a of the first lobe (minimiser_theta, theorem/minimum.hpp); and
+//  - enclosures of r_res and theta_first (the theorem's prove_minimum, theorem/minimum.hpp),
+//    t_first = sqrt(tau sigma) theta_first, t_min_paper = pi/|n| and their ratio; and
 //    r_res^2 <= R(pi/2) decided against the exact integer;
-//  - for x < 1/2 and opt.asy, the paper's error |theta_c - theta_asy| = 2 (u_c - u_a)/a in its
-//    lobe k = round(a/(2b)) (the smaller k on a tie), m = a - 2 k b: u_c = H^{-1}(pi |m|/(2a))
-//    by prove_theorem_root, u_a + tan u_a = pi |m|/(2b) by prove_paper_root (both brackets
-//    proved; the signs of u_c, u_a follow m's, so |u_c - u_a| is the same), their difference at
-//    2 log2(a) + 8 more bits, which covers the cancellation (u_c - u_a > u_a/(17 a^2), shown
-//    in src/lib/sweep/certified.cpp); the bound pi^3 x^2/a, the ratio and
-//    the constant error a/x^2.
+//  - for x < 1/2 and opt.asy, the paper's error in its lobe, its bound, ratio and constant
+//    (prove_paper_error, theorem/paper.hpp).
 // Precision: the enclosures start at opt.bits + 32 bits (opt.bits: the row's working precision;
 // with the asy error, 2 log2(a) + 8 more for all of them, whose difference d must be narrower
 // than 2^-(opt.bits + 8) relative). Every printed value's enclosure must round to one value at
@@ -39,11 +33,25 @@
 #include <gyrores/core/integer.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
+#include <gyrores/theorem/paper.hpp>
 
 namespace gyrores {
 
-// 4 a^2 R(pi/2) (v = 1) for a pair with order a and delta b (a > b >= 1, a = b mod 2): exact.
-int128 sweep_quarter_R_scaled(std::int64_t a, std::int64_t b);
+// 4 a^2 R(pi/2) (v = 1) for a pair with order a and delta b (a > b >= 1, a = b mod 2), exactly
+// in I: int128 for every sweep order, int64 for orders below 2^28 (it is below 2^62 there). With
+// alpha = a pi/4, beta = b pi/4 (theta = pi/2): q = sqrt(1-x^2) sin alpha cos beta, q' = cos alpha
+// cos beta - x sin alpha sin beta (docs/mathematics.md §1), so 4 a^2 R = 4 (a^2 - b^2) (sA cB)^2 +
+// 4 (a cA cB - b sA sB)^2. For odd a (b odd too) every sine and cosine is +-1/sqrt(2), each
+// product is (+-1)/2; for even a they are 0 or +-1: sqrt(2) sin(k pi/4), sqrt(2) cos(k pi/4) for
+// odd k, sin, cos for even k, from k mod 8.
+template <class I = int128> I sweep_quarter_R_scaled(std::int64_t a, std::int64_t b) {
+  static constexpr int sin_q[8] = {0, 1, 1, 1, 0, -1, -1, -1}, cos_q[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+  const int sa = sin_q[a & 7], ca = cos_q[a & 7], sb = sin_q[b & 7], cb = cos_q[b & 7];
+  const I A = a, B = b, diff = A * A - B * B, q = A * (ca * cb) - B * (sa * sb);
+  if (a % 2 != 0) return diff + q * q;
+  const I f = sa * cb;
+  return 4 * diff * (f * f) + 4 * q * q;
+}
 
 // The theorem's integer claims about the minimisers of p, checked (docs/mathematics.md §3):
 // m_min = p.strand_offset_min() = min over N of |a - 4N|; 2 lobes (delta odd or = 2 mod 4) or 4
@@ -85,13 +93,6 @@ struct sweep_minimum_enclosure {
   fixed_mpfi t_ratio;                       // t_first/t_min_paper = theta_first b/pi
 };
 
-// The paper's error in its lobe, at `prec` bits.
-struct sweep_asy_enclosure {
-  explicit sweep_asy_enclosure(mpfr_prec_t p) : prec(p), error(p), bound(p), ratio(p), constant(p) {}
-  mpfr_prec_t prec;
-  fixed_mpfi error, bound, ratio, constant;  // |theta_c - theta_asy|, pi^3 x^2/a, error/bound, error a/x^2
-};
-
 struct sweep_proof {
   int128 quarter_R_scaled = 0;            // 4 a^2 R(pi/2), exact
   int m_min = 0;                          // theorem_m_min(a)
@@ -99,7 +100,7 @@ struct sweep_proof {
   std::unique_ptr<sweep_minimum_enclosure> minimum;  // null: not proved within the precision limit
   bool r_below_R_half_pi = false;         // r_res^2 <= R(pi/2), proved (non-degenerate pairs)
   bool has_asy = false;                   // asked for and x < 1/2
-  std::unique_ptr<sweep_asy_enclosure> asy;  // null unless has_asy and proved
+  std::unique_ptr<paper_error_enclosure> asy;  // null unless has_asy and proved
   std::string note;                       // what could not be proved (a resource limit)
 };
 

@@ -44,8 +44,9 @@ struct sweep_config {
   unsigned digits = 17;          // significant digits of reals in rows when T is wider than double
                                  // (mpfr_real: also the working precision, digits + 8, sweep_bits)
   bool certified = false;        // decide the checks by exact integers and intervals (sweep/certified.hpp)
-  bool certified_filter = true;  // certified double rows: try sweep/certified_filter.hpp first (the
-                                 // rows are the same either way; false only to test that)
+  bool certified_filter = true;  // certified double rows: try the double-double balls first
+                                 // (sweep/filtered.hpp; the rows are the same either way; false
+                                 // only to test that)
   bool operator==(const sweep_config&) const = default;
 };
 

@@ -14,14 +14,12 @@
 #include <cstdint>
 #include <functional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/sweep/checks.hpp>
 #include <gyrores/sweep/evaluate.hpp>
-#include <gyrores/sweep/fast.hpp>
 #include <gyrores/sweep/summary.hpp>
 
 namespace gyrores {
@@ -67,63 +65,15 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
 
 // sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (computation failures become
 // error rows, they do not stop the run); format_row, if set, appends a row's text to the
-// block's `rows` (it runs on the workers).
-namespace detail {
-
-// The pairs of a block of a double sweep without rows: the fast path of sweep/fast.hpp where it
-// decides a pair, else the row's way into `row` and `rec` (the same contribution); `known` is
-// the largest asy constant computed so far (updated).
-inline void sweep_fast_block(const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk,
-                             const sweep_config& cfg, sweep_row<double>& row, sweep_record& rec, double& known) {
-  std::vector<std::int64_t> pass_ks;
-  sweep_fast_pass_ks(pairs, pass_ks);
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (sweep_fast_add(blk.summary, pairs[i], cfg, known, pass_ks[i])) continue;
-    sweep_evaluate_to(row, pairs[i], cfg);
-    sweep_record_fill(rec, row, cfg.digits);
-    blk.summary.add(rec);
-    // A row's computed constant (sweep_asy_double_of, or an enclosure's midpoint) is a valid
-    // known value: a pair of this run with it is in the summary (fast.cpp, sweep_fast_asy_below).
-    if (rec.has_asy && !rec.failed && rec.asy_constant > known) known = rec.asy_constant;
-  }
-}
-
-}  // namespace detail
-
-// Without rows (no format_row), double sweeps take the fast path of sweep/fast.hpp for the pairs
-// it decides: the same summary, at a fraction of a row's cost.
+// block's `rows` (it runs on the workers). Without rows (no format_row) a double sweep that is
+// not certified takes each pair's summary from the theorem's series form where that decides it
+// (src/lib/sweep/fast.cpp): the same summary, at a fraction of a row's cost.
 template <class T>
 sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
                         const std::function<void(sweep_block&)>& on_block,
-                        const sweep_row_formatter<T>& format_row = {}) {
-  const bool fast = std::is_same_v<T, double> && !format_row && detail::sweep_fast_config(cfg);
-  std::atomic<double> asy_known{0};  // the largest asy constant computed so far in this run
-  auto evaluate = [&cfg, &format_row, fast, &asy_known](const std::vector<resonant_pair<std::int64_t>>& pairs,
-                                                        sweep_block& blk) {
-    // One row and one record for the whole block, overwritten pair by pair: no allocation per
-    // pair (they are the same values as sweep_evaluate's and sweep_record_of's).
-    sweep_row<T> row;
-    sweep_record rec;
-    blk.summary.t_ratios.reserve(pairs.size());
-    if constexpr (std::is_same_v<T, double>) {
-      if (fast) {
-        double known = asy_known.load(std::memory_order_relaxed);
-        detail::sweep_fast_block(pairs, blk, cfg, row, rec, known);
-        detail::sweep_fast_publish(asy_known, known);
-        return;
-      }
-    }
-    for (const auto& p : pairs) {
-      sweep_evaluate_to(row, p, cfg);
-      sweep_record_fill(rec, row, cfg.digits);
-      blk.summary.add(rec);
-      if (format_row) format_row(blk.rows, row);
-    }
-  };
-  return sweep_run_blocks(cfg, opt, evaluate, on_block);
-}
+                        const sweep_row_formatter<T>& format_row = {});
 
-// Compiled once in src/lib/sweep/instances.cpp for the compiled reals (core/real.hpp).
+// Compiled once in src/lib/sweep/engine.cpp for the compiled reals (core/real.hpp).
 #define GYRORES_SWEEP_ENGINE_INSTANCES(PREFIX, T)                                                        \
   PREFIX template sweep_outcome sweep_run<T>(const sweep_config&, const sweep_engine_options&,          \
                                              const std::function<void(sweep_block&)>&,                 \

@@ -25,7 +25,7 @@ template <class T> std::string sweep_real_text(const T& v, unsigned digits) {
 // Text to double, correctly rounded; compute_error on text that is not a whole real number.
 double sweep_text_double(const std::string& s);
 
-// Compiled once in src/lib/sweep/instances.cpp for the compiled reals (core/real.hpp).
+// Compiled once in src/lib/sweep/real_text.cpp for the compiled reals (core/real.hpp).
 #define GYRORES_SWEEP_REAL_TEXT_INSTANCES(PREFIX, T) PREFIX template std::string sweep_real_text<T>(const T&, unsigned);
 GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_REAL_TEXT_INSTANCES, extern)
 

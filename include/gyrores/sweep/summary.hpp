@@ -19,7 +19,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -44,36 +43,10 @@ struct sweep_record {
   std::string asy_ratio_text, asy_constant_text;  // empty for T = double (text = shortest form)
 };
 
-namespace detail {
-// v as a double the way a merge of rows reads it back; for T wider than double also its text.
-template <class T> double sweep_record_value(const T& v, unsigned digits, std::string* text) {
-  if constexpr (std::is_same_v<T, double>) {
-    return v;
-  } else {
-    std::string t = sweep_real_text(v, digits);
-    if (text) *text = t;
-    return sweep_text_double(t);
-  }
-}
-}  // namespace detail
-
 // What the summary keeps of row r, into s (all of it overwritten; s's strings keep their buffers,
-// so that a worker reusing one record allocates nothing per pair).
-template <class T> void sweep_record_fill(sweep_record& s, const sweep_row<T>& r, unsigned digits) {
-  s.tau = r.tau;
-  s.sigma = r.sigma;
-  s.delta_mod4 = r.delta_mod4;
-  s.failed = r.failed;
-  s.status = r.status;
-  s.first_at_paper_node = r.first_at_paper_node;
-  s.has_ratio = r.has_ratio;
-  s.t_ratio = r.has_ratio ? detail::sweep_record_value(r.t_ratio, digits, nullptr) : 0;
-  s.has_asy = r.has_asy;
-  s.asy_ratio_text.clear();
-  s.asy_constant_text.clear();
-  s.asy_ratio = r.has_asy ? detail::sweep_record_value(r.asy_ratio, digits, &s.asy_ratio_text) : 0;
-  s.asy_constant = r.has_asy ? detail::sweep_record_value(r.asy_constant, digits, &s.asy_constant_text) : 0;
-}
+// so that a worker reusing one record allocates nothing per pair). Reals wider than double are
+// read back from their text (sweep_real_text at `digits`), as a merge of rows reads them.
+template <class T> void sweep_record_fill(sweep_record& s, const sweep_row<T>& r, unsigned digits);
 
 template <class T> sweep_record sweep_record_of(const sweep_row<T>& r, unsigned digits) {
   sweep_record s;
@@ -81,7 +54,7 @@ template <class T> sweep_record sweep_record_of(const sweep_row<T>& r, unsigned 
   return s;
 }
 
-// Compiled once in src/lib/sweep/instances.cpp for the compiled reals (core/real.hpp).
+// Compiled once in src/lib/sweep/summary.cpp for the compiled reals (core/real.hpp).
 #define GYRORES_SWEEP_RECORD_INSTANCES(PREFIX, T)                                      \
   PREFIX template void sweep_record_fill<T>(sweep_record&, const sweep_row<T>&, unsigned); \
   PREFIX template sweep_record sweep_record_of<T>(const sweep_row<T>&, unsigned);

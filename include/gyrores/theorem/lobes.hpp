@@ -99,6 +99,30 @@ template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
   return out;
 }
 
+// The minimisers' lobes of a machine-integer pair from its pass frame (pass.m = m_min = 1 or 2,
+// 0 < pass.k < ah, ah = a or a/2), as minimiser_lobes_euclid_into below describes them, into
+// `out`; their count returned. Also for the pass frames of theorem/minimum_series.hpp.
+template <class L>
+[[gnu::always_inline]] inline std::size_t minimiser_lobes_of_pass(const L& a, const L& b, const lobe_frame<L>& pass,
+                                                                  std::array<lobe_frame<L>, 4>& out) {
+  const int m = int(pass.m);
+  const L ah = m == 1 ? a : L(a / 2);
+  const lobe_frame<L> mirror{L(a - pass.k), L(b - 1 - pass.j), L(-m)};
+  const bool pass_first = 2 * pass.k < ah;
+  if (m == 1) {
+    out[0] = pass_first ? pass : mirror;
+    out[1] = pass_first ? mirror : pass;
+    return 2;
+  }
+  const lobe_frame<L> shift{L(pass.k + a / 2), L(pass.j + b / 2), L(m)};
+  const lobe_frame<L> shift_mirror{L(a / 2 - pass.k), L(b / 2 - 1 - pass.j), L(-m)};
+  out[0] = pass_first ? pass : shift_mirror;
+  out[1] = pass_first ? shift_mirror : pass;
+  out[2] = pass_first ? shift : mirror;
+  out[3] = pass_first ? mirror : shift;
+  return 4;
+}
+
 // The same list for machine integers (int64 with a < 2^62, int128 with a < 2^126), by one
 // extended Euclid and no sort: the double path's (theorem/minimum.hpp). With ah = a, d = 2b
 // (m_min = 1) or ah = a/2, d = b (m_min = 2), Euclid gives s ah + t d = 1 with |s| < d, |t| < ah
@@ -135,21 +159,7 @@ template <class L>
   }
   if (r0 != 1) throw usage_error("minimiser lobes: tau and sigma are not coprime");
   if (s0 < 0) s0 += d, t0 -= ah;
-  const lobe_frame<L> pass{L(-t0), L((s0 - 1) >> 1), L(m)};  // s0 - 1 >= 0 and even
-  const lobe_frame<L> mirror{L(a - pass.k), L(b - 1 - pass.j), L(-m)};
-  const bool pass_first = 2 * pass.k < ah;
-  if (m == 1) {
-    out[0] = pass_first ? pass : mirror;
-    out[1] = pass_first ? mirror : pass;
-    return 2;
-  }
-  const lobe_frame<L> shift{L(pass.k + a / 2), L(pass.j + b / 2), L(m)};
-  const lobe_frame<L> shift_mirror{L(a / 2 - pass.k), L(b / 2 - 1 - pass.j), L(-m)};
-  out[0] = pass_first ? pass : shift_mirror;
-  out[1] = pass_first ? shift_mirror : pass;
-  out[2] = pass_first ? shift : mirror;
-  out[3] = pass_first ? mirror : shift;
-  return 4;
+  return minimiser_lobes_of_pass(a, b, {L(-t0), L((s0 - 1) >> 1), L(m)}, out);  // s0 - 1 >= 0 and even
 }
 template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
   std::array<lobe_frame<L>, 4> frames{};
@@ -178,10 +188,12 @@ template <class L> struct paper_node {
   L k;
   bool tie;
 };
+// By one division: q = floor((a + b)/(2b)); a tie (a = b mod 2b) is a + b = 0 mod 2b, and then
+// k = q - 1 = (a - b)/(2b).
 template <class L> paper_node<L> paper_fast_node(const L& a, const L& b) {
-  const L twob = 2 * b;
-  if (int_mod(a, twob) == b) return {L((a - b) / twob), true};
-  return {int_floor_div(L(a + b), twob), false};
+  const L twob = 2 * b, q = L((a + b) / twob);
+  const bool tie = q * twob == a + b;
+  return {tie ? L(q - 1) : q, tie};
 }
 
 }  // namespace gyrores

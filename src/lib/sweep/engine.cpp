@@ -9,9 +9,12 @@
 #include <map>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 
 #include <gyrores/core/thread_caches.hpp>
 #include <gyrores/model/enumerate.hpp>
+
+#include "row_parts.hpp"
 
 namespace gyrores {
 namespace {
@@ -267,5 +270,41 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
   block_pipeline pipeline(cfg, opt, evaluate);
   return pipeline.run(on_block);
 }
+
+template <class T>
+sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
+                        const std::function<void(sweep_block&)>& on_block, const sweep_row_formatter<T>& format_row) {
+  const bool fast = std::is_same_v<T, double> && !format_row && !cfg.certified;
+  // The largest asy constant computed so far in this run, shared by the workers as a hint: any
+  // value a pair of the run has given is a valid one (src/lib/sweep/fast.cpp), so relaxed order
+  // suffices.
+  std::atomic<double> asy_known{0};
+  auto evaluate = [&cfg, &format_row, fast, &asy_known](const std::vector<pair64>& pairs, sweep_block& blk) {
+    blk.summary.t_ratios.reserve(pairs.size());
+    if constexpr (std::is_same_v<T, double>) {
+      if (fast) {
+        double known = asy_known.load(std::memory_order_relaxed);
+        sweep_rows::fast_block(pairs, blk, cfg, known);
+        double seen = asy_known.load(std::memory_order_relaxed);
+        while (known > seen && !asy_known.compare_exchange_weak(seen, known, std::memory_order_relaxed)) {
+        }
+        return;
+      }
+    }
+    // One row and one record for the whole block, overwritten pair by pair: no allocation per
+    // pair (they are the same values as sweep_evaluate's and sweep_record_of's).
+    sweep_row<T> row;
+    sweep_record rec;
+    for (const auto& p : pairs) {
+      sweep_evaluate_to(row, p, cfg);
+      sweep_record_fill(rec, row, cfg.digits);
+      blk.summary.add(rec);
+      if (format_row) format_row(blk.rows, row);
+    }
+  };
+  return sweep_run_blocks(cfg, opt, evaluate, on_block);
+}
+
+GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_ENGINE_INSTANCES, )
 
 }  // namespace gyrores

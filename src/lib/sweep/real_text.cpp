@@ -8,6 +8,8 @@
 
 namespace gyrores {
 
+GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_REAL_TEXT_INSTANCES, )
+
 std::string sweep_double_text(double v) {
   char buf[64];
   auto r = std::to_chars(buf, buf + sizeof buf, v);

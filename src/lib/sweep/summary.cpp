@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace gyrores {
 namespace {
@@ -35,7 +36,30 @@ std::uint64_t quantile_rank(std::uint64_t n, std::uint64_t num, std::uint64_t de
   return std::uint64_t((unsigned __int128)(n - 1) * num / den);
 }
 
+// v as a double the way a merge of rows reads it back; for T wider than double also its text.
+template <class T> double record_value(const T& v, unsigned digits, std::string* text) {
+  if constexpr (std::is_same_v<T, double>) {
+    return v;
+  } else {
+    std::string t = sweep_real_text(v, digits);
+    if (text) *text = t;
+    return sweep_text_double(t);
+  }
+}
+
 }  // namespace
+
+template <class T> void sweep_record_fill(sweep_record& s, const sweep_row<T>& r, unsigned digits) {
+  s.tau = r.tau, s.sigma = r.sigma, s.delta_mod4 = r.delta_mod4, s.failed = r.failed, s.status = r.status;
+  s.first_at_paper_node = r.first_at_paper_node, s.has_ratio = r.has_ratio, s.has_asy = r.has_asy;
+  s.t_ratio = r.has_ratio ? record_value(r.t_ratio, digits, nullptr) : 0;
+  s.asy_ratio_text.clear();
+  s.asy_constant_text.clear();
+  s.asy_ratio = r.has_asy ? record_value(r.asy_ratio, digits, &s.asy_ratio_text) : 0;
+  s.asy_constant = r.has_asy ? record_value(r.asy_constant, digits, &s.asy_constant_text) : 0;
+}
+
+GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_RECORD_INSTANCES, )
 
 bool sweep_pair_before(const sweep_pair_id& x, const sweep_pair_id& y) {
   std::int64_t ax = x.first + x.second, ay = y.first + y.second;
