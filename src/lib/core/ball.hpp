@@ -90,22 +90,17 @@ inline big_rational arf_rational(const arf_t v) {
 }
 
 // A rational lower (upper) bound of every value of v (its ends rounded outward to prec bits).
-inline big_rational lower_rational(const arb_t v, slong prec) {
+inline big_rational end_rational(const arb_t v, slong prec, bool upper) {
   arf_t b;
   arf_init(b);
-  arb_get_lbound_arf(b, v, prec);
+  if (upper) arb_get_ubound_arf(b, v, prec);
+  else arb_get_lbound_arf(b, v, prec);
   const big_rational r = arf_rational(b);
   arf_clear(b);
   return r;
 }
-inline big_rational upper_rational(const arb_t v, slong prec) {
-  arf_t b;
-  arf_init(b);
-  arb_get_ubound_arf(b, v, prec);
-  const big_rational r = arf_rational(b);
-  arf_clear(b);
-  return r;
-}
+inline big_rational lower_rational(const arb_t v, slong prec) { return end_rational(v, prec, false); }
+inline big_rational upper_rational(const arb_t v, slong prec) { return end_rational(v, prec, true); }
 
 // The ball holding [lo, hi] (lo <= hi, exact rationals).
 inline void set_interval(arb_t out, const big_rational& lo, const big_rational& hi, slong prec) {

@@ -179,8 +179,8 @@ interval search::absorption_bound(const band_coupling& a, const band_coupling& b
       const quadratic_number na = distance_to_half(a.x, k), nb = distance_to_half(b.x, k);
       J.how.k = k;
       if (!less_than(na, nb)) lobes = arith_.V_upper(a, fa), J.how.kind = band_bound_kind::line_falling;
-      else if (arith_.rising_increases(k, a, b, na, nb)) lobes = arith_.V_upper(b, fb), J.how.kind = band_bound_kind::line_rising;
-      else if (arith_.rising_decreases(k, a, b, na, nb)) lobes = arith_.V_upper(a, na), J.how.kind = band_bound_kind::line_turning;
+      else if (arith_.rising_increases(k, a, b, nb)) lobes = arith_.V_upper(b, fb), J.how.kind = band_bound_kind::line_rising;
+      else if (arith_.rising_decreases(k, a, b, na)) lobes = arith_.V_upper(a, na), J.how.kind = band_bound_kind::line_turning;
       else lobes = arith_.V_upper(a, fb), J.how.kind = band_bound_kind::line_unproved;
     } else {
       quadratic_number top = larger(fa, fb);

@@ -37,13 +37,23 @@ void H(arb_t out, const arb_t x, const arb_t u, slong p) {
   arb_add(out, out, t, p);
 }
 
+namespace {
+
+// E(u) = cos^2 u + x^2 sin^2 u and x^2 sin^2 u from sin u and cos u (squares from their ends).
+void E_of(arb_t e, arb_t xs2, const arb_t x, const arb_t sn, const arb_t cs, slong p) {
+  ball c2;
+  arb_mul(xs2, x, sn, p);
+  square(xs2, xs2, p);
+  square(c2, cs, p);
+  arb_add(e, c2, xs2, p);
+}
+
+}  // namespace
+
 void dH(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, e;
+  ball sn, cs, e, xs2;
   arb_sin_cos(sn, cs, u, p);
-  arb_mul(sn, sn, x, p);
-  arb_mul(sn, sn, sn, p);
-  arb_mul(cs, cs, cs, p);
-  arb_add(e, sn, cs, p);
+  E_of(e, xs2, x, sn, cs, p);
   arb_div(out, x, e, p);
   arb_add(out, out, x, p);
 }
@@ -51,15 +61,12 @@ void dH(arb_t out, const arb_t x, const arb_t u, slong p) {
 void G(arb_t out, const arb_t x, const arb_t u, slong p) {
   ball sn, cs, xs, e, t, w;
   arb_sin_cos(sn, cs, u, p);
-  arb_mul(xs, x, sn, p);
-  square(xs, xs, p);       // x^2 sin^2
-  square(cs, cs, p);
-  arb_add(e, cs, xs, p);
+  E_of(e, xs, x, sn, cs, p);  // xs = x^2 sin^2
   square(t, sn, p);
-  arb_mul(t, t, xs, p);    // x^2 sin^4
+  arb_mul(t, t, xs, p);       // x^2 sin^4
   square(w, x, p);
   arb_sub_si(w, w, 1, p);
-  arb_neg(w, w);           // 1 - x^2
+  arb_neg(w, w);              // 1 - x^2
   arb_mul(out, w, t, p);
   arb_div(out, out, e, p);
 }
