@@ -247,6 +247,17 @@ TEST_CASE("band: the band-wide first time below a level encloses every sampled c
     CHECK(latest <= hi * (1 + 1e-7));
     // The coupling where it is attained: its own first time is the lower end.
     CHECK(std::fabs(reference::band_first_below(n_of(r.at), to_double(E), hi * 1.01) - lo) <= 1e-6 * lo);
+    // What a bisection on the horizon finds: the absorption guarantee W(T) is above E just before
+    // the time and at most E just after it (band-theorem.md: the least T with W(T) <= E).
+    const big_rational n1 = parse_rational(std::to_string(c.n1), "n1"), n2 = parse_rational(std::to_string(c.n2), "n2");
+    band_options versus;
+    versus.versus = E;
+    const band_extreme before = prove_band_absorption(n1, n2, horizon_time(r.time.lo_rational() * (1 - big_rational(1, 1000000))), versus);
+    const band_extreme after = prove_band_absorption(n1, n2, horizon_time(r.time.hi_rational() * (1 + big_rational(1, 1000000))), versus);
+    REQUIRE(before.decided);
+    REQUIRE(after.decided);
+    CHECK(before.value.lo_rational() > E);
+    CHECK(after.value.hi_rational() <= E);
   }
   // A pair of the band that never drains: (6, 1) at x = 5/7 keeps H_q >= 7.5e-5.
   const band_first_below never = prove_band_first_below(big_rational(19, 10), big_rational(21, 10), big_rational(1, 1000000));
