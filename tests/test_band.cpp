@@ -5,6 +5,7 @@
 // reference of src/testing (no lobe frames, no theorem).
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -224,6 +225,33 @@ TEST_CASE("design with tolerance: each verdict agrees with a dense sample of the
       }
     }
   }
+}
+
+TEST_CASE("design with tolerance: a stop returns the checks so far and the bracket reached", "[band][design]") {
+  design_options o;
+  o.problem = design_problem::absorb;
+  o.tmax = big_rational(20);
+  const auto res = design_solve(design_catalogue(60), o);
+  std::atomic<bool> stopped{false};  // set as soon as the first band proof reports progress
+  tolerance_options t;
+  t.fraction = big_rational(1, 100);
+  t.horizon = horizon_time(big_rational(20));
+  // A level at the first pair's own guarantee (its proved lower end): far from decided at once.
+  const auto [n1, n2] = tolerance_band(res.ranked[0], t.fraction);
+  band_options twelve;
+  twelve.digits = 12;
+  t.level = prove_band_absorption(n1, n2, t.horizon, twelve).value.lo_rational();
+  t.band.stop = stop_token(&stopped);
+  t.band.progress = [&stopped](const band_progress&) { stopped = true; };
+  const tolerance_result r = design_with_tolerance(res.ranked, design_problem::absorb, t);
+  CHECK(r.interrupted);
+  CHECK_FALSE(r.chosen);
+  REQUIRE(r.checked.size() == 1);
+  CHECK(r.checked[0].guarantee.interrupted);
+  CHECK(r.checked[0].verdict == tolerance_verdict::undecided);
+  // The bracket is proved even so: the nominal pair's own minimum lies in it.
+  const double m = reference::band_minimum(to_double(r.checked[0].n1), 20.0);
+  CHECK(to_double(r.checked[0].guarantee.value.hi_rational()) >= m * (1 - 1e-9));
 }
 
 TEST_CASE("band: the band-wide first time below a level encloses every sampled coupling's", "[band]") {

@@ -50,7 +50,7 @@ json band_result_json(const band_request& request, const band_result& r) {
   const auto at = [](const band_attained& a) {
     json j = band_coupling_json(a.coupling, a.pair);
     if (a.minimum) j.update(horizon_place_json(*a.minimum));
-    if (a.first_below) j["t_below"] = a.first_below->t_below.value;
+    if (a.first_below) j["t_below"] = a.first_below->never ? json(nullptr) : json(a.first_below->t_below.value);
     return j;
   };
   json j{{"format", band_format},

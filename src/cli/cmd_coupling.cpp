@@ -238,7 +238,10 @@ std::string band_output(const coupling_args& a, app::band_request& q, const std:
     (*whole)["band"] = app::band_result_json(q, b);
     out = json_dump(*whole) + "\n";
   } else out = json_dump(json{{"horizon", a.horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(q, b)}}) + "\n";
-  if (b.interrupted) throw interrupted_with_output{out};
+  if (b.interrupted) throw partial_answer{out, ""};
+  for (const std::string* why : {&b.absorption.unsettled_reason, b.containment ? &b.containment->unsettled_reason : nullptr,
+                                 b.below ? &b.below->unsettled_reason : nullptr})
+    if (why && !why->empty()) throw partial_answer{out, *why};
   return out;
 }
 

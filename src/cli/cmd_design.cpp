@@ -115,9 +115,10 @@ std::string tolerance_text(const design_args& a, design_problem problem, const t
     os << "  " << rank_cell(i) << padded(c.point.pair().str(), 14) << "[" << format_rational_scientific(c.n1, 8) << ", "
        << format_rational_scientific(c.n2, 8) << "]  "
        << padded(c.guarantee.value.hi_rational() == 0 ? "0 (exactly)" : "[" + lo + ", " + hi + "]", 32)
-       << tolerance_verdict_name(c.verdict) << "\n";
+       << (c.guarantee.interrupted ? "interrupted" : tolerance_verdict_name(c.verdict)) << "\n";
   }
   if (r.chosen) os << "chosen with tolerance: " << r.checked[*r.chosen].point.pair().str() << "\n";
+  else if (r.interrupted) os << "interrupted: the pairs above were checked, the last one's bracket as far as it got\n";
   else
     os << "no pair among the " << r.checked.size() << " best ranked meets the guarantee with this tolerance"
        << " (a wider --tmax, a smaller tolerance or another --level may)\n";
@@ -126,13 +127,18 @@ std::string tolerance_text(const design_args& a, design_problem problem, const t
 
 std::string run_design(const design_args& a) {
   app::design_request r = request_of(a);
-  std::optional<signal_scope> signals;  // the band proofs stop on Ctrl-C (exit 130)
+  std::optional<signal_scope> signals;  // the band proofs stop on Ctrl-C: the brackets so far, exit 130
   if (r.tolerance) r.stop = signals.emplace().token();
   const app::design_outcome out = app::run_design(r);
-  if (!a.json) return design_text(a, r, out) + (out.tolerance ? tolerance_text(a, r.options.problem, *out.tolerance) : "");
-  json j = design_json(r.options, r.tmax_text, r.beat_text, out.result, out.values, out.chosen_exceeds_tmax, r.digits);
-  if (out.tolerance) j["tolerance"] = tolerance_json(r.options.problem, *out.tolerance, a.tolerance, a.level);
-  return json_dump(j) + "\n";
+  std::string text;
+  if (!a.json) text = design_text(a, r, out) + (out.tolerance ? tolerance_text(a, r.options.problem, *out.tolerance) : "");
+  else {
+    json j = design_json(r.options, r.tmax_text, r.beat_text, out.result, out.values, out.chosen_exceeds_tmax, r.digits);
+    if (out.tolerance) j["tolerance"] = tolerance_json(r.options.problem, *out.tolerance, a.tolerance, a.level);
+    text = json_dump(j) + "\n";
+  }
+  if (out.tolerance && out.tolerance->interrupted) throw partial_answer{text, ""};
+  return text;
 }
 
 command_runner install_design(CLI::App& app) {

@@ -21,10 +21,12 @@ struct command_exit {
   int status;
   std::string message;
 };
-// Thrown by a command stopped by Ctrl-C that still has a proved partial answer (a band's bracket
-// so far): main prints `out` on stdout, then exits 130.
-struct interrupted_with_output {
+// Thrown by a command that has a proved partial answer but not the answer (a band's bracket): main
+// prints `out` on stdout, then exits 130 when it was stopped by Ctrl-C (`unsettled` empty), or 3
+// with `unsettled`, the documented cap that stopped it before the answer settled.
+struct partial_answer {
   std::string out;
+  std::string unsettled;
 };
 using command_installer = std::function<command_runner(CLI::App&)>;
 

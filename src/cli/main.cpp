@@ -154,8 +154,12 @@ int run(int argc, char** argv, bool execute) {
   } catch (const command_exit& e) {
     std::cerr << e.message << "\n";
     return e.status;
-  } catch (const interrupted_with_output& e) {
+  } catch (const partial_answer& e) {
     if (!print_stdout(e.out)) return cannot_write_stdout(errno);
+    if (!e.unsettled.empty()) {
+      std::cerr << "gyrores: error: not settled: " << e.unsettled << " (the proved bracket is printed)\n";
+      return exit_compute;
+    }
     std::cerr << "gyrores: interrupted (the proved bracket reached so far is printed)\n";
     return exit_interrupted;
   } catch (const gyrores::interrupted&) {

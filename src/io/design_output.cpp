@@ -47,11 +47,12 @@ json tolerance_json(design_problem problem, const tolerance_result& r, const std
                        {"band", {rational_str(c.n1), rational_str(c.n2)}},
                        {problem == design_problem::absorb ? "absorption" : "containment", {lo, hi}},
                        {"at_n2", rational_str(c.guarantee.at.spec.n2)},
-                       {"verdict", tolerance_verdict_name(c.verdict)}});
+                       {"verdict", c.guarantee.interrupted ? "interrupted" : tolerance_verdict_name(c.verdict)}});
   }
   json j{{"checked", checked}, {"theorem", band_theorem_id}};
   j["chosen"] = r.chosen ? json{{"tau", r.checked[*r.chosen].point.tau}, {"sigma", r.checked[*r.chosen].point.sigma}}
                          : json(nullptr);
+  j["interrupted"] = r.interrupted;
   j["percent"] = percent;
   j["level"] = level;
   return j;

@@ -1,10 +1,10 @@
 // Design with a tolerance on the coupling: a pair's coupling n0 = (tau - sigma)/sqrt(tau sigma)
 // is realised only within n0 (1 -+ p). The guarantee must then hold for every n of that band
 // (theorem/band.hpp), over a horizon, since away from n0 the motion is not periodic:
-//   absorb:  H_q <= E at some t <= T_max for every n in the band, i.e. the band's worst
-//            (largest) minimum of H_q over [0, T_max] is <= E;
-//   contain: H_q >= E on [0, H] for every n in the band, i.e. the band's best (smallest)
-//            minimum over [0, H] is >= E (0 as soon as a degenerate pair's zero lies in it).
+//   absorb:  H_q <= E at some t <= T_max for every n in the band, i.e. the band's absorption
+//            guarantee (its highest minimum of H_q over [0, T_max]) is <= E;
+//   contain: H_q >= E on [0, H] for every n in the band, i.e. the band's containment guarantee
+//            (its lowest minimum over [0, H]) is >= E (0 once a degenerate pair's zero lies in it).
 // Each decision is proved from the band's enclosure; a pair whose enclosure straddles E is
 // "undecided" (never counted as meeting it). The band is widened outward to rational ends.
 #pragma once
@@ -38,6 +38,7 @@ struct tolerance_check {
 struct tolerance_result {
   std::vector<tolerance_check> checked;  // in rank order, up to the first that meets the guarantee
   std::optional<std::size_t> chosen;     // index into checked of the first pair that meets it
+  bool interrupted = false;              // stopped by the stop token: the last check holds the bracket reached
 };
 
 // The band [n0 (1 - p), n0 (1 + p)] widened outward to rationals (12 digits).

@@ -4,7 +4,6 @@
 #include <boost/multiprecision/integer.hpp>
 
 #include <gyrores/core/error.hpp>
-#include <gyrores/core/stop.hpp>
 
 namespace gyrores {
 
@@ -37,7 +36,11 @@ tolerance_result design_with_tolerance(const std::vector<design_point>& ranked, 
     tolerance_check c{ranked[i], n1, n2,
                       absorb ? prove_band_absorption(n1, n2, opt.horizon, bo) : prove_band_containment(n1, n2, opt.horizon, bo),
                       tolerance_verdict::undecided};
-    if (c.guarantee.interrupted) throw interrupted();
+    if (c.guarantee.interrupted) {  // the bracket reached is still proved: returned with the rest
+      out.checked.push_back(std::move(c));
+      out.interrupted = true;
+      break;
+    }
     const big_rational lo = c.guarantee.value.lo_rational(), hi = c.guarantee.value.hi_rational();
     // absorb: every coupling of the band drains to E (W <= E); contain: every one stays above (B >= E).
     if (absorb ? hi <= opt.level : lo >= opt.level) c.verdict = tolerance_verdict::meets;
