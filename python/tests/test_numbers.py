@@ -54,7 +54,7 @@ CALLS = {
     "pareto": lambda **kw: gyrores.pareto(60, **kw),
     "coupling": lambda **kw: gyrores.coupling(n2="1/12", convergents=3, **kw),
     "coupling band": lambda **kw: gyrores.coupling(0.5, horizon=5, convergents=0, tolerance="10%", band_digits=2, **kw),
-    "band alone": lambda **kw: gyrores.coupling(band=("0.200", "0.202"), horizon=16, band_evaluations=50, **kw),
+    "band alone": lambda **kw: gyrores.coupling(band=("0.200", "0.202"), horizon=16, below="1%", band_digits=3, **kw),
 }
 DEFAULT_TYPE = {"pair": mpmath.mpf, "pair big": mpmath.mpf, "asymptotics": mpmath.mpf, "design": float,
                 "pareto": float, "coupling": float, "coupling band": float, "band alone": float}
