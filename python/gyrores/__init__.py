@@ -423,25 +423,67 @@ def _library_digits(d):
 
 
 def design(problem, tmax, beat=None, max_order=200, exclude_low=0, delta=None, proxy=False, candidates=5,
-           digits=10):
+           digits=10, tolerance=None, level=None, horizon=None):
     """Choose a resonant pair: "absorb" (min r_res) or "contain" (max r_res) with time <= tmax.
 
     tmax, beat: rationals; beat: (tau+sigma)/(tau-sigma) >= beat; max_order 3..5000;
     exclude_low: drop tau + sigma <= exclude_low; delta: only tau - sigma = delta; proxy: use the
     paper's proxy pi/|n| instead of the exact first-hit time; digits 1..1000.
+    tolerance: the coupling is realised only within n (1 -+ P%) (text "P%", or a number, the
+    fraction: 0.01 is 1%); level (needed with it): E, an energy or a percentage of H_q(0) = 1/2
+    ("1%"); horizon (contain only, default tmax). Then the ranked pairs are walked, best first,
+    and each one's band is proved (band-theorem/1): absorb needs H_q <= E before tmax for every n
+    of the band (its absorption guarantee <= E), contain H_q >= E on [0, horizon] (its
+    containment guarantee >= E). ``tolerance`` is then the CLI's object: ``checked`` (tau, sigma,
+    band (n1, n2) Fractions, the guarantee's enclosure ``absorption`` or ``containment`` an
+    Interval, at_n2 a Fraction, verdict "meets", "fails" or "undecided"), ``chosen`` (the first
+    pair that meets it, {tau, sigma}, or None: no pair walked meets it), theorem, ``percent`` (as
+    given) and ``level`` (the energy E, a Fraction). Needs the exact time (not proxy).
     Returns the Result of ``gyrores design --json``; ComputeError when no pair is feasible.
     """
     f = "design"
     d = _args.bounded(digits, f, "digits", 1, 1000)
-    raw = _gyrores._design(_args.choice(problem, f, "problem", ("absorb", "contain")), _args.rational(tmax, f, "tmax"),
-                           None if beat is None else _args.rational(beat, f, "beat"),
-                           _args.bounded(max_order, f, "max_order", 3, 5000),
-                           _args.bounded(exclude_low, f, "exclude_low", 0, 2**62),
-                           None if delta is None else _args.bounded(delta, f, "delta", 1, 2**62),
-                           _args.flag(proxy, f, "proxy"), _args.bounded(candidates, f, "candidates", 0, 1000),
-                           _library_digits(d))
+    raw = _prefixed(f, _gyrores._design, _args.choice(problem, f, "problem", ("absorb", "contain")),
+                    _args.rational(tmax, f, "tmax"), None if beat is None else _args.rational(beat, f, "beat"),
+                    _args.bounded(max_order, f, "max_order", 3, 5000),
+                    _args.bounded(exclude_low, f, "exclude_low", 0, 2**62),
+                    None if delta is None else _args.bounded(delta, f, "delta", 1, 2**62),
+                    _args.flag(proxy, f, "proxy"), _args.bounded(candidates, f, "candidates", 0, 1000),
+                    _library_digits(d), _tolerance_text(tolerance, f), _level(level, f, "level"),
+                    None if horizon is None else _args.rational(horizon, f, "horizon"))
     raw["digits"] = d
-    return _convert(raw, _real(d))
+    tolerance_raw = raw.pop("tolerance", None)
+    out = _convert(raw, _real(d))
+    if tolerance_raw is not None:
+        out["tolerance"] = _design_tolerance(tolerance_raw, d)
+    return out
+
+
+def _energy(text):
+    """A level as the library reads it, an energy ("1/200", "1e-6") or a percentage of
+    H_q(0) = 1/2 ("1%"), as the exact energy (a Fraction)."""
+    if text.endswith("%"):
+        return _fractions.Fraction(text[:-1].strip()) / 200
+    return _fractions.Fraction(text)
+
+
+def _design_tolerance(raw, digits):
+    """design()'s "tolerance" object converted: bands and at_n2 Fractions, each guarantee's
+    enclosure an Interval of the call's type, the level the energy E; keys in the CLI's order."""
+    def checked(c):
+        out = Result(c)
+        out["band"] = tuple(_fractions.Fraction(t) for t in c["band"])
+        out["at_n2"] = _fractions.Fraction(c["at_n2"])
+        for key in ("absorption", "containment"):
+            if key in c:
+                out[key] = _intervals(c[key], digits)
+        return out
+
+    out = Result(raw)
+    out["checked"] = tuple(checked(c) for c in raw["checked"])
+    out["chosen"] = None if raw["chosen"] is None else Result(raw["chosen"])
+    out["level"] = _energy(raw["level"])
+    return out
 
 
 def pareto(max_order, orientation="absorb", proxy=False, exclude_degenerate=False, beat=None, exclude_low=0,
@@ -471,13 +513,13 @@ def _prefixed(function, call, *args):
         raise UsageError(f"{function}(): {e}") from None
 
 
-def _level(below, function):
+def _level(below, function, name="below"):
     """The level E as text: an energy (a rational) or a percentage of H_q(0) = 1/2 ("1%")."""
     if below is None:
         return None
     if isinstance(below, str):
         return below.strip()
-    return _args.rational(below, function, "below")
+    return _args.rational(below, function, name)
 
 
 def _band_text(band, function):
