@@ -562,6 +562,9 @@ def _band_part(raw, precision, value_key):
     if raw is None:
         return None
     out = _convert({k: v for k, v in raw.items() if k != "enclosure"}, _real(precision))
+    at = out.get("at")
+    if at is not None and at.get("t_below") == "":  # the JSON's "" for a coupling that never gets below E
+        at["t_below"] = None
     enclosure = raw["enclosure"]
     out["enclosure"] = None if enclosure is None else _band_interval(enclosure, out[value_key], precision)
     return Result((k, out[k]) for k in raw)

@@ -248,6 +248,15 @@ def test_band_first_below_is_the_latest_first_time():
     assert fb.enclosure.lo <= own.hi and own.lo <= fb.enclosure.hi
 
 
+def test_band_first_below_never_when_a_coupling_keeps_above_the_level():
+    # [0.28, 0.29] holds (4, 3) (n^2 = 1/12), whose H_q stays above ~0.0031 for all time.
+    own = gyrores.coupling(n2="1/12", below="1e-6")
+    assert own.below.never
+    fb = gyrores.coupling(band=("0.28", "0.29"), below="1e-6").band.first_below
+    assert fb.never and fb.settled and fb.t_below is None and fb.enclosure is None and fb.reason
+    assert fb.at.n2 == Fraction(1, 12) and (fb.at.pair.tau, fb.at.pair.sigma) == (4, 3) and fb.at.t_below is None
+
+
 @pytest.mark.parametrize("call, message", [
     (lambda: gyrores.coupling(band=(0.3, 0.2)), "coupling(): band needs 0 < n1 < n2, got 3/10:1/5"),
     (lambda: gyrores.coupling(band=(0.2, 0.2)), "coupling(): band needs 0 < n1 < n2"),
