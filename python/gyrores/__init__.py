@@ -423,25 +423,67 @@ def _library_digits(d):
 
 
 def design(problem, tmax, beat=None, max_order=200, exclude_low=0, delta=None, proxy=False, candidates=5,
-           digits=10):
+           digits=10, tolerance=None, level=None, horizon=None):
     """Choose a resonant pair: "absorb" (min r_res) or "contain" (max r_res) with time <= tmax.
 
     tmax, beat: rationals; beat: (tau+sigma)/(tau-sigma) >= beat; max_order 3..5000;
     exclude_low: drop tau + sigma <= exclude_low; delta: only tau - sigma = delta; proxy: use the
     paper's proxy pi/|n| instead of the exact first-hit time; digits 1..1000.
+    tolerance: the coupling is realised only within n (1 -+ P%) (text "P%", or a number, the
+    fraction: 0.01 is 1%); level (needed with it): E, an energy or a percentage of H_q(0) = 1/2
+    ("1%"); horizon (contain only, default tmax). Then the ranked pairs are walked, best first,
+    and each one's band is proved (band-theorem/1): absorb needs H_q <= E before tmax for every n
+    of the band (its absorption guarantee <= E), contain H_q >= E on [0, horizon] (its
+    containment guarantee >= E). ``tolerance`` is then the CLI's object: ``checked`` (tau, sigma,
+    band (n1, n2) Fractions, the guarantee's enclosure ``absorption`` or ``containment`` an
+    Interval, at_n2 a Fraction, verdict "meets", "fails" or "undecided"), ``chosen`` (the first
+    pair that meets it, {tau, sigma}, or None: no pair walked meets it), theorem, ``percent`` (as
+    given) and ``level`` (the energy E, a Fraction). Needs the exact time (not proxy).
     Returns the Result of ``gyrores design --json``; ComputeError when no pair is feasible.
     """
     f = "design"
     d = _args.bounded(digits, f, "digits", 1, 1000)
-    raw = _gyrores._design(_args.choice(problem, f, "problem", ("absorb", "contain")), _args.rational(tmax, f, "tmax"),
-                           None if beat is None else _args.rational(beat, f, "beat"),
-                           _args.bounded(max_order, f, "max_order", 3, 5000),
-                           _args.bounded(exclude_low, f, "exclude_low", 0, 2**62),
-                           None if delta is None else _args.bounded(delta, f, "delta", 1, 2**62),
-                           _args.flag(proxy, f, "proxy"), _args.bounded(candidates, f, "candidates", 0, 1000),
-                           _library_digits(d))
+    raw = _prefixed(f, _gyrores._design, _args.choice(problem, f, "problem", ("absorb", "contain")),
+                    _args.rational(tmax, f, "tmax"), None if beat is None else _args.rational(beat, f, "beat"),
+                    _args.bounded(max_order, f, "max_order", 3, 5000),
+                    _args.bounded(exclude_low, f, "exclude_low", 0, 2**62),
+                    None if delta is None else _args.bounded(delta, f, "delta", 1, 2**62),
+                    _args.flag(proxy, f, "proxy"), _args.bounded(candidates, f, "candidates", 0, 1000),
+                    _library_digits(d), _tolerance_text(tolerance, f), _level(level, f, "level"),
+                    None if horizon is None else _args.rational(horizon, f, "horizon"))
     raw["digits"] = d
-    return _convert(raw, _real(d))
+    tolerance_raw = raw.pop("tolerance", None)
+    out = _convert(raw, _real(d))
+    if tolerance_raw is not None:
+        out["tolerance"] = _design_tolerance(tolerance_raw, d)
+    return out
+
+
+def _energy(text):
+    """A level as the library reads it, an energy ("1/200", "1e-6") or a percentage of
+    H_q(0) = 1/2 ("1%"), as the exact energy (a Fraction)."""
+    if text.endswith("%"):
+        return _fractions.Fraction(text[:-1].strip()) / 200
+    return _fractions.Fraction(text)
+
+
+def _design_tolerance(raw, digits):
+    """design()'s "tolerance" object converted: bands and at_n2 Fractions, each guarantee's
+    enclosure an Interval of the call's type, the level the energy E; keys in the CLI's order."""
+    def checked(c):
+        out = Result(c)
+        out["band"] = tuple(_fractions.Fraction(t) for t in c["band"])
+        out["at_n2"] = _fractions.Fraction(c["at_n2"])
+        for key in ("absorption", "containment"):
+            if key in c:
+                out[key] = _intervals(c[key], digits)
+        return out
+
+    out = Result(raw)
+    out["checked"] = tuple(checked(c) for c in raw["checked"])
+    out["chosen"] = None if raw["chosen"] is None else Result(raw["chosen"])
+    out["level"] = _energy(raw["level"])
+    return out
 
 
 def pareto(max_order, orientation="absorb", proxy=False, exclude_degenerate=False, beat=None, exclude_low=0,
@@ -471,13 +513,13 @@ def _prefixed(function, call, *args):
         raise UsageError(f"{function}(): {e}") from None
 
 
-def _level(below, function):
+def _level(below, function, name="below"):
     """The level E as text: an energy (a rational) or a percentage of H_q(0) = 1/2 ("1%")."""
     if below is None:
         return None
     if isinstance(below, str):
         return below.strip()
-    return _args.rational(below, function, "below")
+    return _args.rational(below, function, name)
 
 
 def _band_text(band, function):
@@ -502,39 +544,46 @@ def _tolerance_text(tolerance, function):
     return f"{p}%"
 
 
-def _band(raw, digits):
-    """The "band" object of the CLI's JSON converted: rationals as Fractions, reals of the call's
-    type, each extreme's enclosure an Interval (rounded outward from its exact rational ends and
-    widened to hold the returned value)."""
-    real = _real(digits)
-    if digits <= _DOUBLE_DIGITS:
-        def outward(lo, hi):
-            return Interval(_numbers.float_of_fraction(lo, "f"), _numbers.float_of_fraction(hi, "c"))
-    else:
-        bits = _numbers.bits_of_digits(digits + 3)
+def _band_interval(texts, value, digits):
+    """An enclosure [lo, hi] of the band's JSON (decimal texts rounded outward) as an Interval of
+    the call's type, widened to hold the returned value (a correct rounding may lie just outside)."""
+    iv = _intervals(texts, digits)
+    if value is not None and not iv.contains(value):
+        iv = Interval(min(iv.lo, value), max(iv.hi, value))
+    return iv
 
-        def outward(lo, hi):
-            return Interval(_numbers.mpf_of_fraction(lo, bits, "f"), _numbers.mpf_of_fraction(hi, bits, "c"))
 
-    degenerate = raw["degenerate"]
+def _band_part(raw, precision, value_key):
+    """One part of the band (a guarantee, or the first time below) converted: its reals of the
+    call's type (mpf of `precision` digits beyond 15: see _band), its enclosure an Interval
+    holding the exact value and the value at `value_key`, the coupling where it is attained
+    ("at": n2 a Fraction, x exact text, pair ints), in the CLI's key order. None stays None (a
+    part not proved: interrupted before it started, or no level asked)."""
+    if raw is None:
+        return None
+    out = _convert({k: v for k, v in raw.items() if k != "enclosure"}, _real(precision))
+    at = out.get("at")
+    if at is not None and at.get("t_below") == "":  # the JSON's "" for a coupling that never gets below E
+        at["t_below"] = None
+    enclosure = raw["enclosure"]
+    out["enclosure"] = None if enclosure is None else _band_interval(enclosure, out[value_key], precision)
+    return Result((k, out[k]) for k in raw)
 
-    def extreme(e, zero):
-        value = None if e["value"] is None else real(e["value"])
-        iv = outward(*(_fractions.Fraction(t) for t in e["enclosure"]))
-        if value is not None and not iv.contains(value):
-            iv = Interval(min(iv.lo, value), max(iv.hi, value))
-        return Result(value=value, enclosure=iv,
-                      n_at=None if zero else _fractions.Fraction(e["n_at"]),
-                      n_box=None if zero else tuple(_fractions.Fraction(t) for t in e["n_box"]),
-                      converged=bool(e["converged"]))
 
-    return Result(
-        n1=_fractions.Fraction(raw["n1"]), n2=_fractions.Fraction(raw["n2"]), digits=raw["digits"],
-        lipschitz=real(raw["lipschitz"]), evaluations=raw["evaluations"],
-        worst_h_min=extreme(raw["worst_h_min"], False), best_h_min=extreme(raw["best_h_min"], degenerate is not None),
-        degenerate=None if degenerate is None else Result(
-            n2=_fractions.Fraction(degenerate["n2"]), tau=degenerate["tau"], sigma=degenerate["sigma"],
-            t_zero=real(degenerate["t_zero"])))
+def _band(raw, digits, band_digits):
+    """The "band" object of the CLI's JSON (format gyrores-band/2) converted, with the CLI's keys:
+    n1, n2 (the band's couplings) Fractions, horizon as coupling() gives it back, absorption and
+    containment (the highest and the lowest minimum of H_q over [0, T] across the band) and
+    first_below (the latest first time H_q <= E) by _band_part. Reals are of the call's type
+    (`digits`), holding all of the `band_digits` digits the library rounded them to when mpf."""
+    precision = digits if digits <= _DOUBLE_DIGITS else max(digits, band_digits)
+    out = Result(format=raw["format"], theorem=raw["theorem"], n1=_fractions.Fraction(raw["n1"]),
+                 n2=_fractions.Fraction(raw["n2"]), horizon=_horizon_value(raw["horizon"]), digits=band_digits,
+                 interrupted=raw["interrupted"])
+    out["absorption"] = _band_part(raw["absorption"], precision, "h_min")
+    out["containment"] = _band_part(raw["containment"], precision, "h_min")
+    out["first_below"] = _band_part(raw["first_below"], precision, "t_below")
+    return out
 
 
 def _horizon_value(text):
@@ -549,7 +598,7 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
              band_digits=None):
     """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q over [0, T],
     the first time H_q <= E, the infimum over all time, convergents (``gyrores coupling --json``);
-    and the worst and best of that minimum over a band of couplings (``--band``, ``--tolerance``).
+    and the guarantees of that minimum over a band of couplings (``--band``, ``--tolerance``).
 
     Exactly one of n, n2 (rationals), or neither with a band. horizon: T >= 0 as the CLI takes
     it: a number, a decimal, scientific or fraction text ("1e100", "1/3"), or a multiple of pi
@@ -564,27 +613,33 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
 
     band: (n1, n2) (rationals) or text "N1:N2", 0 < n1 < n2; or tolerance around n: text "P%"
     (0 < P < 100) or a number, the fraction of |n| (Fraction(1, 100) is 1%): the band
-    |n| (1 -+ P%). Adds ``band`` (the CLI's "band" object): n1, n2 (Fractions), worst_h_min and
-    best_h_min (the max and min over the band of the minimum of H_q over [0, T]), each with
-    ``enclosure`` (an Interval holding the exact extreme), ``value`` (its rounding to
-    band_digits digits, None when the enclosure does not decide it), ``n_at`` (a coupling whose
-    proved minimum lies in the enclosure, a Fraction), ``n_box`` (Fractions (lo, hi): the extreme
-    is attained there), ``converged`` (False: the band_evaluations budget ran out first);
-    ``degenerate``: the pair with r_res = 0 whose zero of H_q lies in [0, T] (n2, tau, sigma,
-    t_zero), or None; then best_h_min is 0 exactly and its n_at and n_box are None. Also
-    lipschitz (the bound on |dH_q/dn| used), evaluations and digits (band_digits, 1..12;
-    band_evaluations 10..1000000 proved minima per extreme). A band alone (no n, n2) gives a
-    Result {horizon, theorem, band, digits}. Ctrl-C stops the computation (KeyboardInterrupt).
+    |n| (1 -+ P%). Adds ``band``, the CLI's "band" object (band-theorem/1) with its keys: n1, n2
+    (Fractions), horizon, digits, interrupted; ``absorption``, the absorption guarantee (the
+    highest minimum of H_q over [0, T] across the band: every coupling of the band drains H_q at
+    least that low) and ``containment``, the containment guarantee (the lowest minimum: every
+    coupling keeps at least that much; 0 exactly once T passes the zero of a degenerate pair
+    in the band), each with ``h_min`` (the correct rounding to band_digits digits, None when not
+    settled), ``enclosure`` (an Interval holding the exact guarantee and h_min), ``settled``,
+    ``interrupted``, ``reason`` (why not settled, else None), ``at`` (the coupling where it is
+    attained: its n2 a Fraction, x exact text, pair (tau, sigma) or None, and its own h_min, lobe,
+    at_horizon_end, t_min), ``intervals`` and ``couplings`` (the proof's work). With below, also
+    ``first_below``: the latest first time H_q <= E across the band (level a Fraction, never,
+    reason, t_below, enclosure, settled, interrupted, at with its own t_below, intervals,
+    couplings), else None. band_digits: 1..10000, default digits (floats then come from 17
+    digits, as the coupling's own values). A band alone (no n, n2) gives a Result {horizon,
+    theorem, band, digits}. Ctrl-C stops the computation (KeyboardInterrupt: a band's bracket
+    reached so far is not returned).
     """
     f = "coupling"
     d = _args.bounded(digits, f, "digits", 1, 1000)
     if band is not None and tolerance is not None:
         raise UsageError(f"{f}(): give at most one of band and tolerance")
+    bd = d if band_digits is None else _args.bounded(band_digits, f, "band_digits", 1, 10000)
     raw = _prefixed(f, _gyrores._coupling, None if n is None else _args.rational(n, f, "n"),
                     None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
                     _level(below, f), _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d),
                     _band_text(band, f), _tolerance_text(tolerance, f),
-                    0 if band_digits is None else _args.bounded(band_digits, f, "band_digits", 1, 10000))
+                    0 if band_digits is None else bd)  # 0: the library's digits (17 for floats)
     raw["digits"] = d
     order = list(raw)  # the CLI's order of the keys
     band_raw = raw.pop("band", None)
@@ -595,7 +650,7 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
     if enclosures is not None:
         out["enclosures"] = _hull_with_values(_intervals(enclosures, d), out)
     if band_raw is not None:
-        out["band"] = _band(band_raw, d)
+        out["band"] = _band(band_raw, d, bd)
     return Result((k, out[k]) for k in order)
 
 

@@ -1,6 +1,6 @@
 // gyrores.coupling and gyrores.couplings: the coupling request of app/coupling.hpp (any coupling
-// n) and a band of couplings (theorem/band.hpp) as the dict of `gyrores coupling
-// [--band|--tolerance] --json`, and the horizon theorem's doubles (app/coupling.hpp) over arrays
+// n) and the band request of app/band.hpp (its guarantees over a band of couplings) as the dict
+// of `gyrores coupling [--band|--tolerance] --json`, and the horizon theorem's doubles (app/coupling.hpp) over arrays
 // of couplings and horizons in one C++ loop (GIL released, the stop flag passed into every proof
 // and looked at between elements). The horizon, level, band and tolerance texts are read as the
 // CLI reads them ("1e100", "100pi", "1%", "N1:N2"), by the library's parsers (model/inputs.hpp).
@@ -29,8 +29,8 @@ coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& wh
   return is_n2 ? coupling_spec::from_n2(parse_rational(text, what)) : coupling_spec::from_n(parse_rational(text, what));
 }
 
-// The band asked for (theorem/band.hpp), from "N1:N2" or a tolerance "P%" around n, as the CLI
-// reads them (src/cli/cmd_coupling.cpp); checked before any work.
+// The band asked for, from "N1:N2" or a tolerance "P%" around n, as the CLI reads them
+// (src/cli/cmd_coupling.cpp); checked before any work (the coupling's own analysis comes first).
 std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n, const py::object& band,
                                                              const py::object& tolerance) {
   if (!band.is_none() && !tolerance.is_none()) throw usage_error("give at most one of band and tolerance");
@@ -73,6 +73,7 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
     bq.n2 = ends->second;
     bq.horizon = opt.horizon;
     bq.below = opt.below;
+    // 0: the coupling's own digits, as the CLI's --band-digits (17 when Python wants floats).
     bq.digits = band_digits > 0 ? checked_digits(band_digits, 1, report_digits_max) : opt.digits;
   }
   // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point (a

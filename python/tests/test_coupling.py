@@ -138,87 +138,123 @@ def test_an_exception_in_progress_stops_the_loop():
 # Bands (--band N1:N2, --tolerance P%): the CLI's "band" object, converted.
 
 @pytest.mark.parametrize("call, cli_args", [
-    (lambda: gyrores._gyrores._coupling(None, None, "16", None, 8, 12, "0.200:0.202", None, 6, 200),
-     ("--band", "0.200:0.202", "--horizon", "16", "--band-evaluations", "200")),
-    (lambda: gyrores._gyrores._coupling("0.2", None, "40", None, 2, 12, None, "1%", 3, 100),
-     ("0.2", "--tolerance", "1%", "--horizon", "40", "--convergents", "2", "--band-digits", "3",
-      "--band-evaluations", "100")),
-    (lambda: gyrores._gyrores._coupling(None, "1/12", "5", None, 0, 20, "1/2:3/5", None, 2, 50),
-     ("--n2", "1/12", "--horizon", "5", "--convergents", "0", "--digits", "20", "--band", "1/2:3/5",
-      "--band-digits", "2", "--band-evaluations", "50")),
+    (lambda: gyrores._gyrores._coupling(None, None, "16", None, 8, 12, "0.200:0.202", None, 0),
+     ("--band", "0.200:0.202", "--horizon", "16")),
+    (lambda: gyrores._gyrores._coupling("0.2", None, "40", None, 2, 12, None, "1%", 3),
+     ("0.2", "--tolerance", "1%", "--horizon", "40", "--convergents", "2", "--band-digits", "3")),
+    (lambda: gyrores._gyrores._coupling(None, "1/12", "5", "1%", 0, 20, "1/2:3/5", None, 0),
+     ("--n2", "1/12", "--horizon", "5", "--below", "1%", "--convergents", "0", "--digits", "20",
+      "--band", "1/2:3/5")),
+    (lambda: gyrores._gyrores._coupling(None, None, "1e6", "1%", 8, 12, "1/2:3/5", None, 4),
+     ("--band", "1/2:3/5", "--horizon", "1e6", "--below", "1%", "--band-digits", "4")),
 ])
 def test_band_raw_dict_is_the_cli_json(cli_json, call, cli_args):
     assert call() == cli_json("coupling", *cli_args)
 
 
-def _fraction_interval_holds(iv, lo, hi):
-    """Whether the Interval (floats or mpf) holds the exact rationals [lo, hi] of the CLI's JSON."""
-    def exact(x):
-        return Fraction(x) if isinstance(x, float) else Fraction(x.man) * Fraction(2) ** x.exp
-    return exact(iv.lo) <= Fraction(lo) and Fraction(hi) <= exact(iv.hi)
+def _exact(x):
+    """The exact rational of a float or an mpf."""
+    return Fraction(x) if isinstance(x, float) else Fraction(x.man) * Fraction(2) ** x.exp
+
+
+def _interval_holds(iv, lo, hi):
+    """Whether the Interval (floats or mpf) holds [lo, hi], the decimal texts of the CLI's JSON."""
+    return _exact(iv.lo) <= Fraction(lo) and Fraction(hi) <= _exact(iv.hi)
 
 
 def test_band_values_and_types_against_the_cli(cli_json):
     expected = cli_json("coupling", "0.5", "--tolerance", "10%", "--horizon", "5", "--band-digits", "3")["band"]
     r = gyrores.coupling(0.5, horizon=5, tolerance="10%", band_digits=3)
     b = r.band
-    assert (b.n1, b.n2) == (Fraction(9, 20), Fraction(11, 20)) and b.degenerate is None
-    assert b.evaluations == expected["evaluations"] and isinstance(b.evaluations, int) and b.digits == 3
-    assert isinstance(b.lipschitz, float) and b.lipschitz == float(expected["lipschitz"])
-    for key in ("worst_h_min", "best_h_min"):
+    assert list(b) == list(expected)  # the CLI's keys, in its order
+    assert (b.n1, b.n2) == (Fraction(9, 20), Fraction(11, 20)) and b.horizon == 5 and b.digits == 3
+    assert b.format == "gyrores-band/2" and b.theorem == "band-theorem/1" and b.interrupted is False
+    assert b.first_below is None  # no level asked
+    for key in ("absorption", "containment"):
         e, want = b[key], expected[key]
-        assert isinstance(e.enclosure, gyrores.Interval) and isinstance(e.enclosure.lo, float)
-        assert _fraction_interval_holds(e.enclosure, *want["enclosure"])  # outward from the exact ends
-        assert e.converged == want["converged"] and e.n_at == Fraction(want["n_at"])
-        assert e.n_box == tuple(Fraction(t) for t in want["n_box"]) and e.n_box[0] <= e.n_at <= e.n_box[1]
-        assert (e.value is None) == (want["value"] is None)
-        if e.value is not None:
-            assert isinstance(e.value, float) and e.value == float(want["value"]) and e.value in e.enclosure
+        assert list(e) == list(want)
+        assert e.settled and not e.interrupted and e.reason is None
+        assert isinstance(e.h_min, float) and e.h_min == float(want["h_min"]) and e.h_min in e.enclosure
+        assert isinstance(e.enclosure, gyrores.Interval) and _interval_holds(e.enclosure, *want["enclosure"])
+        assert e.intervals == want["intervals"] and isinstance(e.intervals, int) and e.couplings == want["couplings"]
+        assert e.at.n2 == Fraction(want["at"]["n2"]) and e.at.x == want["at"]["x"]
+        assert isinstance(e.at.h_min, float) and e.at.h_min == float(want["at"]["h_min"])
+        assert b.n1 ** 2 <= e.at.n2 <= b.n2 ** 2
+    assert b.containment.h_min <= b.absorption.h_min
     # A tolerance given as a number is a fraction of |n|; the same band.
     same = gyrores.coupling(-0.5, horizon=5, tolerance=Fraction(1, 10), band_digits=3).band
-    assert same.worst_h_min.enclosure == b.worst_h_min.enclosure and (same.n1, same.n2) == (b.n1, b.n2)
-    # Beyond 15 digits every real of the call is an mpf, the band's too.
-    wide = gyrores.coupling(0.5, horizon=5, tolerance="10%", band_digits=3, digits=30).band
-    assert isinstance(wide.worst_h_min.enclosure.lo, mpmath.mpf) and isinstance(wide.lipschitz, mpmath.mpf)
-    assert _fraction_interval_holds(wide.worst_h_min.enclosure, *expected["worst_h_min"]["enclosure"])
+    assert same == b
+    # Beyond 15 digits every real of the call is an mpf, the band's too, with all its digits.
+    wide = gyrores.coupling(0.5, horizon=5, tolerance="10%", band_digits=40, digits=30).band
+    wide_expected = cli_json("coupling", "0.5", "--tolerance", "10%", "--horizon", "5", "--band-digits", "40",
+                             "--digits", "30")["band"]
+    for key in ("absorption", "containment"):
+        e, want = wide[key], wide_expected[key]
+        assert isinstance(e.h_min, mpmath.mpf) and isinstance(e.enclosure.lo, mpmath.mpf) and wide.digits == 40
+        assert e.h_min == gyrores._numbers.mpf_of_text(want["h_min"], gyrores._numbers.bits_of_digits(40))
+        assert _interval_holds(e.enclosure, *want["enclosure"]) and e.h_min in b[key].enclosure
+    # By default the band has the call's digits (floats: from 17, as the coupling's own values).
+    assert gyrores.coupling(0.5, horizon=5, tolerance="10%").band.digits == 12
 
 
-def test_band_holds_every_sampled_minimum():
-    # Brute force: the proved minimum of every sampled coupling of the band lies in [best.lo, worst.hi],
-    # and the minimum at each n_at lies in its extreme's enclosure.
-    b = gyrores.coupling(band="9/20:11/20", horizon=5, band_digits=4).band
-    assert b.degenerate is None
-    worst, best = b.worst_h_min, b.best_h_min
-    samples = [b.n1 + (b.n2 - b.n1) * Fraction(i, 200) for i in range(201)]
+def test_band_guarantees_bound_every_sampled_minimum():
+    # Independent reference: each coupling's own proved minimum over [0, T] (the horizon theorem,
+    # one coupling at a time). Every sampled minimum lies under the absorption guarantee (the
+    # highest) and over the containment guarantee (the lowest), and each guarantee is the minimum
+    # of the coupling where it is attained.
+    b = gyrores.coupling(band="9/20:11/20", horizon=5, band_digits=8).band
+    absorption, containment = b.absorption, b.containment
+    samples = [b.n1 + (b.n2 - b.n1) * Fraction(i, 100) for i in range(101)]
     minima = [gyrores.coupling(n, horizon=5, convergents=0, digits=17).enclosures.h_min_horizon for n in samples]
-    assert all(best.enclosure.lo <= m.lo and m.hi <= worst.enclosure.hi for m in minima)
-    # the samples come close to both extremes (the sampling step times the Lipschitz bound)
-    slack = b.lipschitz * float(b.n2 - b.n1) / 200
-    assert max(m.hi for m in minima) >= worst.enclosure.lo - slack
-    assert min(m.lo for m in minima) <= best.enclosure.hi + slack
-    for e in (worst, best):
-        at = gyrores.coupling(e.n_at, horizon=5, convergents=0, digits=17).enclosures.h_min_horizon
-        assert e.enclosure.lo <= at.hi and at.lo <= e.enclosure.hi
+    assert all(containment.enclosure.lo <= m.hi and m.lo <= absorption.enclosure.hi for m in minima)
+    # the sampling comes near both ends (the guarantees are attained inside the band)
+    assert max(m.hi for m in minima) >= absorption.enclosure.lo * (1 - 1e-2)
+    assert min(m.lo for m in minima) <= containment.enclosure.hi * (1 + 1e-2)
+    for e in (absorption, containment):
+        own = gyrores.coupling(n2=e.at.n2, horizon=5, convergents=0, digits=17).enclosures.h_min_horizon
+        assert e.enclosure.lo <= own.hi and own.lo <= e.enclosure.hi
 
 
-def test_band_with_a_degenerate_pair_has_best_zero_exactly():
-    # n in [0.200, 0.202], T = 16 holds (11, 9) (n^2 = 4/99, r_res = 0, H_q = 0 at t ~ 15.63).
-    r = gyrores.coupling(band=(Fraction(1, 5), "0.202"), horizon=16, band_evaluations=200)
-    b = r.band
-    assert (b.degenerate.tau, b.degenerate.sigma) == (11, 9) and b.degenerate.n2 == Fraction(4, 99)
-    assert b.best_h_min.value == 0 and b.best_h_min.enclosure == gyrores.Interval(0.0, 0.0)
-    assert b.best_h_min.n_at is None and b.best_h_min.n_box is None and b.best_h_min.converged
-    assert b.n1 <= Fraction(4, 99) ** 0.5 <= b.n2
-    pair = gyrores.coupling(n2=b.degenerate.n2, horizon=16, digits=12)
+def test_band_holding_a_degenerate_pair_has_containment_zero_past_its_zero_time():
+    # n in [0.200, 0.202] holds (11, 9): n^2 = 4/99, r_res = 0, H_q = 0 at t ~ 15.63.
+    pair = gyrores.coupling(n2=Fraction(4, 99), horizon=16, digits=12)
     assert pair.h_min_horizon == 0 and (pair.pair.tau, pair.pair.sigma) == (11, 9)
-    assert abs(b.degenerate.t_zero - pair.pair_analysis.t_first) <= 1e-10 * pair.pair_analysis.t_first
-    assert b.degenerate.t_zero <= 16 and r.horizon == 16 and r.theorem == "horizon-theorem/1"
-    assert set(r) == {"horizon", "theorem", "band", "digits"}  # a band alone: the CLI's keys
-    # the worst case converges (lobe bounds) and its enclosure holds the value at its n_at
-    w = b.worst_h_min
-    assert w.converged and w.enclosure.lo <= w.value <= w.enclosure.hi
-    at = gyrores.coupling(w.n_at, horizon=16, digits=12)
-    assert w.enclosure.lo <= at.h_min_horizon * (1 + 1e-11) and at.h_min_horizon * (1 - 1e-11) <= w.enclosure.hi
+    t_zero = pair.pair_analysis.t_first
+    assert 15.6 < t_zero < 15.7
+    r = gyrores.coupling(band=(Fraction(1, 5), "0.202"), horizon=16)
+    assert set(r) == {"horizon", "theorem", "band", "digits"} and r.horizon == 16  # a band alone: the CLI's keys
+    c = r.band.containment
+    assert c.settled and c.h_min == 0 and c.enclosure == gyrores.Interval(0.0, 0.0)
+    assert c.at.n2 == Fraction(4, 99) and (c.at.pair.tau, c.at.pair.sigma) == (11, 9)
+    assert abs(c.at.t_min - t_zero) <= 1e-9 * t_zero
+    # Before the zero time every coupling keeps some energy: the containment guarantee is > 0.
+    before = gyrores.coupling(band=(Fraction(1, 5), "0.202"), horizon=15.5).band.containment
+    assert before.settled and before.enclosure.lo > 0
+    at = gyrores.coupling(n2=before.at.n2, horizon=15.5, digits=17).enclosures.h_min_horizon
+    assert before.enclosure.lo <= at.hi and at.lo <= before.enclosure.hi
+
+
+def test_band_first_below_is_the_latest_first_time():
+    # Each coupling's own first time below E (the horizon theorem) comes no later than the band's
+    # first time below, which is attained at its coupling.
+    b = gyrores.coupling(band=("1/2", "3/5"), below="1%", band_digits=8).band
+    fb = b.first_below
+    assert fb.level == Fraction(1, 200) and not fb.never and fb.settled and fb.t_below in fb.enclosure
+    for i in range(21):
+        n = Fraction(1, 2) + Fraction(i, 200)
+        own = gyrores.coupling(n, below="1%", convergents=0, digits=17)
+        assert not own.below.never and own.enclosures.t_below.lo <= fb.enclosure.hi
+    own = gyrores.coupling(n2=fb.at.n2, below="1%", convergents=0, digits=17).enclosures.t_below
+    assert fb.enclosure.lo <= own.hi and own.lo <= fb.enclosure.hi
+
+
+def test_band_first_below_never_when_a_coupling_keeps_above_the_level():
+    # [0.28, 0.29] holds (4, 3) (n^2 = 1/12), whose H_q stays above ~0.0031 for all time.
+    own = gyrores.coupling(n2="1/12", below="1e-6")
+    assert own.below.never
+    fb = gyrores.coupling(band=("0.28", "0.29"), below="1e-6").band.first_below
+    assert fb.never and fb.settled and fb.t_below is None and fb.enclosure is None and fb.reason
+    assert fb.at.n2 == Fraction(1, 12) and (fb.at.pair.tau, fb.at.pair.sigma) == (4, 3) and fb.at.t_below is None
 
 
 @pytest.mark.parametrize("call, message", [
@@ -240,9 +276,10 @@ def test_band_with_a_degenerate_pair_has_best_zero_exactly():
     (lambda: gyrores.coupling(band=(0.2,)), "coupling(): band must be (n1, n2) or text 'N1:N2'"),
     (lambda: gyrores.coupling(band=(0.2, True)), "coupling(): band[1] must be a number"),
     (lambda: gyrores.coupling(band=(0.2, "x")), "coupling(): band N2"),
-    (lambda: gyrores.coupling(band=(0.1, 0.2), below="1%"), "coupling(): below needs the coupling n or n2"),
-    (lambda: gyrores.coupling(band=(0.1, 0.2), band_digits=13), "coupling(): band_digits must be in [1, 12]"),
-    (lambda: gyrores.coupling(band=(0.1, 0.2), band_evaluations=5), "coupling(): band_evaluations must be in"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), below="x%"), "coupling(): below must be"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), band_digits=0), "coupling(): band_digits must be in [1, 10000], got 0"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), band_digits=10001), "coupling(): band_digits must be in [1, 10000]"),
+    (lambda: gyrores.coupling(band=(0.1, 0.2), band_digits=2.0), "coupling(): band_digits must be an integer"),
     (lambda: gyrores.coupling(band=(0.1, 0.2), horizon=-1), "coupling(): horizon must be >= 0"),
     (lambda: gyrores.coupling(2, n2=4, band=(0.1, 0.2)), "coupling(): give exactly one of n"),
 ])

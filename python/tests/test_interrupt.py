@@ -41,8 +41,9 @@ def _latency_of_sigint(call, delay):
     # the horizon is O(log T) now: the long part is the analysis of a resonant pair of order 10^4000
     # (which the library runs without the stop flag: KeyboardInterrupt at once, the work ends later)
     ("coupling of a 2000-digit pair", lambda: gyrores.coupling(n2=f"1/{10**2000 * (10**2000 + 1)}", digits=1000)),
-    ("coupling band over [0.5, 0.6] to T = 10^6", lambda: gyrores.coupling(band=(0.5, 0.6), horizon=10**6,
-                                                                        band_evaluations=10**6)),
+    # bands take milliseconds; this one (2000 digits over four decades of n to T = 10^50) minutes
+    ("coupling band [0.01, 100] to T = 10^50, 2000 digits",
+     lambda: gyrores.coupling(band=(0.01, 100), horizon="1e50", band_digits=2000)),
     ("couplings over 10^5 couplings", lambda: gyrores.couplings([0.1 + i * 1e-4 for i in range(10**5)], horizon="1e30")),
     ("pairs over 2.10^6 pairs", lambda: gyrores.pairs(range(2, 2 * 10**6), range(1, 2 * 10**6 - 1))),
     ("sweep(10^5)", lambda: gyrores.sweep(10**5, rows=False)),

@@ -27,10 +27,11 @@ def _leaves(value):
         yield "", value
 
 
-# Keys whose values are text by nature: names, explanations, formats; and coupling()'s exact
-# algebraic numbers x and horizon_lobe_distance ("sqrt(2)/2"), which no Python number holds.
+# Keys whose values are text by nature: names, explanations, formats, a design's verdicts and
+# tolerance as given ("1%"); and coupling()'s exact algebraic numbers x and
+# horizon_lobe_distance ("sqrt(2)/2"), which no Python number holds.
 TEXT_KEYS = {"format", "theorem", "reason", "note", "inf_reason", "horizon_source", "orientation",
-             "orientation_meaning", "time", "problem", "input", "x", "horizon_lobe_distance"}
+             "orientation_meaning", "time", "problem", "input", "x", "horizon_lobe_distance", "verdict", "percent"}
 
 
 def _assert_numeric(result, real_type):
@@ -54,10 +55,12 @@ CALLS = {
     "pareto": lambda **kw: gyrores.pareto(60, **kw),
     "coupling": lambda **kw: gyrores.coupling(n2="1/12", convergents=3, **kw),
     "coupling band": lambda **kw: gyrores.coupling(0.5, horizon=5, convergents=0, tolerance="10%", band_digits=2, **kw),
-    "band alone": lambda **kw: gyrores.coupling(band=("0.200", "0.202"), horizon=16, band_evaluations=50, **kw),
+    "band alone": lambda **kw: gyrores.coupling(band=("0.200", "0.202"), horizon=16, below="1%", band_digits=3, **kw),
+    "design tolerance": lambda **kw: gyrores.design("absorb", 20, tolerance="1%", level="1%", **kw),
 }
 DEFAULT_TYPE = {"pair": mpmath.mpf, "pair big": mpmath.mpf, "asymptotics": mpmath.mpf, "design": float,
-                "pareto": float, "coupling": float, "coupling band": float, "band alone": float}
+                "pareto": float, "coupling": float, "coupling band": float, "band alone": float,
+                "design tolerance": float}
 
 
 @pytest.mark.parametrize("name", CALLS)
