@@ -528,6 +528,18 @@ class resume_fixture {
   }
 };
 
+// A sweep of config(80) into `summary`, stopped after 50 pairs: its state kept for a resume.
+struct stopped_sweep {
+  sweep_config c = config(80);
+  sweep_files f;
+  sweep_engine_options e = engine(1);
+  explicit stopped_sweep(const std::string& summary) {
+    f.summary_path = summary;
+    e.max_pairs = 50;
+    REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
+  }
+};
+
 }  // namespace
 
 TEST_CASE_METHOD(resume_fixture, "sweep: resume after max_pairs limits, twice, gives the uninterrupted result", "[sweep]") {
@@ -596,12 +608,10 @@ TEST_CASE_METHOD(resume_fixture, "sweep: resume after a crash drops the rows wri
 
 TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or of other checks", "[sweep]") {
   temp_dir d("test_sweep");
-  const sweep_config c = config(80);
-  sweep_files f;
-  f.summary_path = d / "old.json";
-  auto e = engine(1);
-  e.max_pairs = 50;
-  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
+  stopped_sweep s(d / "old.json");
+  const sweep_config& c = s.c;
+  sweep_files& f = s.f;
+  sweep_engine_options& e = s.e;
   const std::string state = sweep_default_state_path(f);
   json st = read_json(state);
   const json run = st["run"];
@@ -651,18 +661,15 @@ TEST_CASE("sweep: resume refuses, in one line, a state of an earlier version or 
 
 TEST_CASE("sweep: resume refuses a different sweep, and a missing state", "[sweep]") {
   temp_dir d("test_sweep");
-  const sweep_config c = config(80);
-  sweep_files f;
-  f.summary_path = d / "e.json";
-  auto e = engine(1);
-  e.max_pairs = 50;
-  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
+  stopped_sweep s(d / "e.json");
+  sweep_files& f = s.f;
+  const sweep_engine_options& e = s.e;
   f.resume = true;
   CHECK_THROWS_AS(app::sweep_to_files<double>(config(81), f, e), usage_error);
   sweep_files g;
   g.summary_path = d / "nothing.json";
   g.resume = true;
-  CHECK_THROWS_AS(app::sweep_to_files<double>(c, g, e), usage_error);
+  CHECK_THROWS_AS(app::sweep_to_files<double>(s.c, g, e), usage_error);
 }
 
 TEST_CASE("sweep: files are written atomically", "[sweep]") {
