@@ -90,7 +90,17 @@ TEST_CASE("quadratic_number: signs, floors and field operations are exact", "[ro
     CHECK(((a * b) - quadratic_number(big_int(floor(ma * mb).convert_to<std::string>()))).floor() == 0);
     CHECK(abs(to_mp(a / b) - ma / mb) < mp(1e-60));
     CHECK((a < b) == (ma < mb));
+    // Across two fields: compare against 60-digit values; equal values of two forms (sqrt 8 and
+    // 2 sqrt 2) compare equal.
+    const quadratic_number c = random_irrational(rng);
+    const mp mc = to_mp(c);
+    CHECK(compare(a, c) == (ma < mc ? -1 : ma > mc ? 1 : 0));
+    CHECK(compare(c, a) == -compare(a, c));
+    CHECK(compare(a, quadratic_number(big_int(floor(ma * 1000).convert_to<std::string>()), big_int(1000))) == 1);
   }
+  CHECK(compare(quadratic_number(0, 1, 1, 8), quadratic_number(0, 2, 1, 2)) == 0);
+  CHECK(compare(quadratic_number(0, 1, 1, 8), quadratic_number(1, 2, 1, 2)) == -1);
+  CHECK(compare(quadratic_number(1393, 985), quadratic_number(0, 1, 1, 3)) == -1);  // 1.414 < 1.732
 }
 
 TEST_CASE("rotation: min_fractional_part equals the plain loop (rational: exact ties)", "[rotation]") {

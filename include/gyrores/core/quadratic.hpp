@@ -67,4 +67,7 @@ class quadratic_number {
   big_int p_ = 0, q_ = 0, r_ = 1, d_ = 0;
 };
 
+// The sign of u - v for numbers of any two fields (the field operators need one d), exactly.
+int compare(const quadratic_number& u, const quadratic_number& v);
+
 }  // namespace gyrores

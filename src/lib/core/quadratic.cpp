@@ -133,6 +133,18 @@ std::string quadratic_number::str() const {
   return (p_ == 0 ? num : "(" + num + ")") + "/" + r_.str();
 }
 
+int compare(const quadratic_number& u, const quadratic_number& v) {
+  if (u.is_rational() || v.is_rational() || u.d() == v.d()) return (u - v).sign();
+  // r_u r_v (u - v) = X - y sqrt(d_v), X = r_v p_u - r_u p_v + r_v q_u sqrt(d_u) in Q(sqrt d_u):
+  // X - Y has the sign of X when Y = y sqrt(d_v) has another sign, else that sign times the sign
+  // of X^2 - y^2 d_v, which lies in Q(sqrt d_u) again.
+  const quadratic_number X(v.r() * u.p() - u.r() * v.p(), v.r() * u.q(), big_int(1), u.d());
+  const big_int y = u.r() * v.q();
+  const int sx = X.sign(), sy = y.sign();
+  if (sx != sy) return sx > sy ? 1 : -1;
+  return sx * (X * X - quadratic_number(big_int(y * y * v.d()))).sign();
+}
+
 double quadratic_number::approx() const {
   if (sign() == 0) return 0;
   // p and q sqrt d may nearly cancel: the absolute error of p + q sqrt d at `bits` bits is below

@@ -35,19 +35,8 @@ using namespace arb_support;
 using band_detail::band_arith;
 using band_detail::precision_shortfall;
 
-// u < v for numbers of two quadratic fields (the band's ends lie in different ones): exact within
-// one field, else by balls of growing precision, which decide since two such numbers differ
-// (a rational is in every field; two irrationals of different fields are never equal).
-bool less_than(const quadratic_number& u, const quadratic_number& v) {
-  if (u.is_rational() || v.is_rational() || u.d() == v.d()) return u < v;
-  for (slong prec = 128;; prec *= 2) {
-    ball a, b;
-    set_quadratic(a, u, prec);
-    set_quadratic(b, v, prec);
-    if (arb_lt(a, b)) return true;
-    if (arb_gt(a, b)) return false;
-  }
-}
+// u < v for numbers of two quadratic fields (the band's ends lie in different ones), exactly.
+bool less_than(const quadratic_number& u, const quadratic_number& v) { return compare(u, v) < 0; }
 const quadratic_number& larger(const quadratic_number& u, const quadratic_number& v) { return less_than(u, v) ? v : u; }
 
 // ---- intervals of the band and where to split them ----
@@ -384,7 +373,7 @@ band_extreme prove_extreme(const big_rational& n1, const big_rational& n2, const
                     if (r.settled || r.decided || r.interrupted || !r.unsettled_reason.empty()) return r;
                     status = proof_status::undecided("the bounds did not settle the rounding");
                   } catch (const precision_shortfall& e) {
-                    status = proof_status::undecided(e.what());
+                    status = proof_status::undecided(e.why());
                   }
                   return std::nullopt;
                 });
@@ -535,13 +524,15 @@ band_cover_interval band_interval_bound(const band_coupling& a, const band_coupl
   opt.digits = digits;
   const extreme which = absorption ? extreme::absorption : extreme::containment;
   const slong start = start_bits(digits, b.spec.n2, T);
-  for (slong prec = start; prec <= slong(tie_bits_cap(mpfr_prec_t(start))); prec *= 2) {
+  const precision_plan plan{mpfr_prec_t(start), tie_bits_cap(mpfr_prec_t(start))};
+  return refine(plan, {}, "band: an interval's bound", [&](mpfr_prec_t bits, proof_status& status) -> std::optional<band_cover_interval> {
     try {
-      return search(a, b, T, opt, which, prec).bound_only(a, b);
-    } catch (const precision_shortfall&) {
+      return search(a, b, T, opt, which, slong(bits)).bound_only(a, b);
+    } catch (const precision_shortfall& e) {
+      status = proof_status::undecided(e.why());
+      return std::nullopt;
     }
-  }
-  throw compute_error("band: an interval's bound was not decided within the precision cap");
+  });
 }
 
 band_extreme prove_band_absorption(const big_rational& n1, const big_rational& n2, const horizon_time& T,
