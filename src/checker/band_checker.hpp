@@ -21,7 +21,7 @@ namespace gyrores_checker {
 
 inline constexpr const char* band_certificate_format = "gyrores-band-certificate/1";
 inline constexpr std::size_t band_max_intervals = 4000;
-inline constexpr std::size_t band_max_field_chars = 400;
+inline constexpr std::size_t band_max_field_chars = 2000;
 inline constexpr long band_max_digits = 40;
 inline constexpr long band_max_prec_bits = 8192;
 
