@@ -261,6 +261,7 @@ struct ctx {
   long prec;
   Qr T;
   B pi, half;
+  long* pieces;  // the end point's pieces over the whole certificate (band_max_pieces)
 };
 struct at_x {  // the coupling's balls
   B x, x2, one_m_x2, alpha_T;
@@ -617,6 +618,8 @@ Qr n2_of(const coupling& c) {
 }
 void end_point_bound(const ctx& C, const coupling& a, const coupling& b, const B& printed, bool absorption, int depth,
                      const std::string& where) {
+  if (++*C.pieces > band_max_pieces)
+    throw fails("work bound: the end point needs more than " + std::to_string(band_max_pieces) + " pieces in all");
   B lo, hi;
   end_point(C, a, b, lo, hi);
   if (absorption ? arb_le(hi.v, printed.v) : arb_ge(lo.v, printed.v)) return;
@@ -766,7 +769,7 @@ void check_interval(const ctx& C, const interval& J, bool absorption, const std:
 
 // ---- One claim.
 void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, const Qr& n2sq, const Qr& T,
-                      const std::string& horizon_text, long digits, long prec0) {
+                      const std::string& horizon_text, long digits, long prec0, long& pieces) {
   const bool absorption = which == "absorption";
   keys(j, {"value", "at", "cover"}, which);
   const bracket value = bracket_field(j["value"], which + ".value", band_max_field_chars);
@@ -829,7 +832,7 @@ void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, c
     bool done = false;
     for (long prec = prec0; !done; prec *= 2) {
       if (prec > band_max_prec_bits) throw fails("work bound: " + where + " is not decided within " + std::to_string(band_max_prec_bits) + " bits");
-      ctx C{prec, T, B(), B()};
+      ctx C{prec, T, B(), B(), &pieces};
       arb_const_pi(C.pi.v, prec);
       arb_set_d(C.half.v, 0.5);
       try {
@@ -873,8 +876,9 @@ verdict check_band_certificate(const std::string& json_text) {
     const long size = std::max<long>(0, long(fmpz_bits(fmpq_numref(scale.v))) - long(fmpz_bits(fmpq_denref(scale.v))));
     const long prec0 = long(3.33 * double(digits + 12)) + 64 + 2 * size;
     const std::string horizon_text = j["horizon"].get<std::string>();
-    check_claim_side(j["absorption"], "absorption", n1sq, n2sq, T, horizon_text, digits, prec0);
-    check_claim_side(j["containment"], "containment", n1sq, n2sq, T, horizon_text, digits, prec0);
+    long pieces = 0;
+    check_claim_side(j["absorption"], "absorption", n1sq, n2sq, T, horizon_text, digits, prec0, pieces);
+    check_claim_side(j["containment"], "containment", n1sq, n2sq, T, horizon_text, digits, prec0, pieces);
     return {0, "certificate holds (band-theorem/1): the absorption guarantee lies in " +
                    j["absorption"]["value"][0].get<std::string>() + " .. " + j["absorption"]["value"][1].get<std::string>() +
                    ", the containment guarantee in " + j["containment"]["value"][0].get<std::string>() + " .. " +

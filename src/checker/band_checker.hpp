@@ -9,8 +9,9 @@
 // bisection of H(u) = pi nu in Arb, and includes no header of include/gyrores/.
 //
 // It bounds its own work: a certificate with more than band_max_intervals intervals, a number
-// field longer than band_max_field_chars characters, digits above band_max_digits, or one whose
-// inequalities need more than band_max_prec_bits bits is refused (status 1, "work bound").
+// field longer than band_max_field_chars characters, digits above band_max_digits, one whose
+// inequalities need more than band_max_prec_bits bits, or whose end-point bounds need more than
+// band_max_pieces pieces in all, is refused (status 1, "work bound").
 #pragma once
 #include <cstddef>
 #include <string>
@@ -24,6 +25,7 @@ inline constexpr std::size_t band_max_intervals = 4000;
 inline constexpr std::size_t band_max_field_chars = 2000;
 inline constexpr long band_max_digits = 40;
 inline constexpr long band_max_prec_bits = 8192;
+inline constexpr long band_max_pieces = 100000;  // the end point's pieces, over the whole certificate
 
 // Re-proves the certificate in `json_text` from its band, its horizon and its data alone.
 verdict check_band_certificate(const std::string& json_text);
