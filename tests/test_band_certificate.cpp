@@ -247,6 +247,28 @@ TEST_CASE("band certificates: the tamper catalogue", "[band][certificate]") {
     }
   }
 
+  SECTION("wrong but self-consistent: every bound and the claim moved together") {
+    // Absorption: every upper bound and hi scaled by 0.9 (each interval's bound then too low);
+    // containment: every lower bound and lo scaled by 1.1 (too high). Only recomputation can tell.
+    for (const std::string side : {"absorption", "containment"}) {
+      const bool absorption = side == "absorption";
+      checker_json j = good;
+      const double f = absorption ? 0.9 : 1.1;
+      for (auto& J : j[side]["cover"]) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.12e", std::stod(J["bound"].get<std::string>()) * f);
+        J["bound"] = text;
+      }
+      if (absorption) j[side]["value"][1] = "1";  // any hi: the bounds' side holds
+      else j[side]["value"][0] = "0";
+      const auto v = check(j);
+      INFO(side << ": " << v.message);
+      CHECK(v.status == 1);
+      CHECK(v.message.find(absorption ? "bound is below the recomputed upper bound" : "bound is above the recomputed lower bound") !=
+            std::string::npos);
+    }
+  }
+
   SECTION("the work bounds") {
     checker_json j = good;
     checker_json& cover = j["absorption"]["cover"];
