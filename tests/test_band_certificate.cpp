@@ -18,6 +18,7 @@
 
 #include <fstream>
 #include <map>
+#include <set>
 #include <string>
 
 #include "band_checker.hpp"
@@ -86,6 +87,20 @@ TEST_CASE("band certificates of a few bands are accepted", "[band][certificate]"
     CHECK(v.message.find("certificate holds (band-theorem/1)") != std::string::npos);
     CHECK(j["format"] == "gyrores-band-certificate/1");
     CHECK(!j["absorption"]["cover"].empty());
+  }
+  // The kinds these covers exercise (line_turning needs x^2 > 1/2, n > 2, and a rare interval).
+  std::set<std::string> kinds;
+  for (const band& b : {band{rational_str(around2.first), rational_str(around2.second), "1000000"}, band{"2", "12/5", "4"},
+                        band{"3/10", "3", "5"}})
+    for (const std::string side : {"absorption", "containment"})
+      for (const auto& J : certificate(b.n1, b.n2, b.T)[side]["cover"])
+        kinds.insert(side + " " + J["kind"].get<std::string>() + (J["unreached"].get<bool>() ? " unreached" : "") +
+                     (J["reached"].get<bool>() ? " reached" : ""));
+  for (const std::string k : {"absorption lobes", "absorption lobes reached", "absorption line_falling", "absorption line_rising",
+                              "absorption line_unproved", "absorption end_point",
+                              "containment lobes", "containment end_point unreached"}) {
+    INFO(k);
+    CHECK(kinds.count(k) == 1);
   }
   // The band holding x = 1/10 (n^2 = 4/99, a centre of lobe 5): containment exactly 0, attained there.
   const checker_json& z = certificate("1/5", "101/500", "20");
@@ -307,4 +322,8 @@ TEST_CASE("gyrores coupling --band --certificate, then gyrores check", "[cli][ba
   CHECK(r.status != 0);
   CHECK(r.err.find("multiple of pi") != std::string::npos);
   CHECK(!std::ifstream(pi).good());
+  // A path that cannot be written is refused before the work too.
+  r = test::cli_run("coupling --band 1.98:2.02 --horizon 10 --certificate " + (dir / "no/such/dir/x.json"));
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
 }
