@@ -9,6 +9,8 @@
 //     (format, theorem, ends, horizon, digits, claims, the attaining coupling, each interval's
 //     ends, kind, K, k, flags and bound, the order of the intervals, a removed one, a gap): each
 //     refused with one line naming it;
+//   * each kind of the absorption cover changed to every other kind, and a line's k moved: refused
+//     (to end_point: refused unless the end point proves the same bound, a true statement);
 //   * the work bounds: too many intervals, too long a number, too many digits: refused;
 //   * the CLI: `coupling --band ... --certificate FILE`, then `check FILE` exits 0, a tampered file 1.
 #include <catch2/catch.hpp>
@@ -21,6 +23,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "band_checker.hpp"
 #include "testing/cli_run.hpp"
@@ -299,6 +302,44 @@ TEST_CASE("band certificates: the tamper catalogue", "[band][certificate]") {
     j = good;
     j["n1"] = std::string(gyrores_checker::band_max_field_chars, '1') + "/3";
     refused(j, "work bound: n1 has more than");
+  }
+}
+
+TEST_CASE("band certificates: each kind tampered", "[band][certificate]") {
+  // In three bands, the first absorption interval of each kind: its kind changed to every other
+  // kind and (a line) its k moved by one; each refused.
+  std::set<std::string> seen;
+  for (const auto& [n1, n2, T] : {std::tuple<std::string, std::string, std::string>{"38/5", "42/5", "3"}, {"3/10", "3", "5"}, {"1", "3", "10"}}) {
+    const checker_json& good = certificate(n1, n2, T);
+    REQUIRE(check(good).status == 0);
+    const checker_json& cover = good["absorption"]["cover"];
+    for (std::size_t i = 0; i < cover.size(); ++i) {
+      const std::string kind = cover[i]["kind"];
+      if (!seen.insert(kind).second) continue;
+      for (const std::string other : {"lobes", "line_falling", "line_rising", "line_turning", "line_unproved", "end_point"}) {
+        if (other == kind) continue;
+        checker_json j = good;
+        j["absorption"]["cover"][i]["kind"] = other;
+        const auto v = check(j);
+        INFO(n1 << ":" << n2 << " " << kind << " -> " << other << ": " << v.message);
+        // The end point proved on the checker's halved pieces can be tighter than the producer's
+        // one mean-value form: a lobe bound it also proves is then a true statement of that kind.
+        if (other == "end_point") CHECK(v.status != 2);
+        else CHECK(v.status == 1);
+      }
+      if (kind.rfind("line_", 0) == 0)
+        for (const long d : {-1L, 1L}) {
+          checker_json j = good;
+          j["absorption"]["cover"][i]["k"] = std::to_string(std::stol(cover[i]["k"].get<std::string>()) + d);
+          const auto v = check(j);
+          INFO(n1 << ":" << n2 << " " << kind << " k " << d << ": " << v.message);
+          CHECK(v.status == 1);
+        }
+    }
+  }
+  for (const std::string kind : {"lobes", "line_falling", "line_rising", "line_turning", "line_unproved", "end_point"}) {
+    INFO(kind);
+    CHECK(seen.count(kind) == 1);
   }
 }
 
