@@ -8,7 +8,7 @@ if(NOT GYRORES_CHECKER_DIR)
   message(FATAL_ERROR "check_checker_independent: pass -DGYRORES_CHECKER_DIR=<repo>/src/checker")
 endif()
 file(GLOB sources ${GYRORES_CHECKER_DIR}/*.cpp ${GYRORES_CHECKER_DIR}/*.hpp)
-set(allowed_local certificate_checker.hpp horizon_checker.hpp checker_support.hpp)
+set(allowed_local certificate_checker.hpp horizon_checker.hpp band_checker.hpp exact_field.hpp checker_support.hpp)
 set(violations 0)
 set(lines_total 0)
 foreach(source ${sources})
@@ -30,9 +30,11 @@ endforeach()
 if(violations GREATER 0)
   message(FATAL_ERROR "check_checker_independent: ${violations} violation(s)")
 endif()
-# Two checkers: lattice-theorem certificates (about 380 lines) and coupling certificates (about
-# 1000: its own Q(sqrt D) arithmetic, MinFrac, FirstHit, the minimum and the first time below).
-if(lines_total GREATER 1450)
-  message(FATAL_ERROR "check_checker_independent: the checker has ${lines_total} lines (the aim is at most 1450)")
+# Three checkers: lattice-theorem certificates (about 380 lines), coupling certificates (about
+# 1000: its own Q(sqrt D) arithmetic, MinFrac, FirstHit, the minimum and the first time below) and
+# band certificates (about 900: its own Stern-Brocot search, the lobe value's bisection, the end
+# point's mean-value form, the covers and the claims).
+if(lines_total GREATER 2400)
+  message(FATAL_ERROR "check_checker_independent: the checker has ${lines_total} lines (the aim is at most 2400)")
 endif()
 message(STATUS "check_checker_independent: ${lines_total} lines, includes only Arb/FLINT, nlohmann-json and the standard library")

@@ -6,6 +6,8 @@
 #include <gyrores/io/band_json.hpp>
 #include <gyrores/model/coupling.hpp>
 
+#include "band_checker.hpp"
+
 namespace gyrores::app {
 
 namespace {
@@ -20,7 +22,14 @@ band_result run_band(const band_request& request) {
   check_band(request.n1, request.n2, "the band");
   check_report_digits(request.digits);
   if (request.horizon.value < 0) throw usage_error("the horizon must be >= 0, got " + request.horizon.str());
+  if (request.certificate) {  // what a band certificate states, gyrores check must read
+    check_band_certificate_horizon(request.horizon);
+    if (request.digits > unsigned(gyrores_checker::band_max_digits))
+      throw usage_error("band certificates are limited to " + std::to_string(gyrores_checker::band_max_digits) +
+                        " digits (what gyrores check reads), got " + std::to_string(request.digits));
+  }
   band_options opt;
+  opt.record_cover = request.certificate;
   opt.digits = request.digits;
   opt.max_intervals = request.max_intervals;
   opt.stop = request.stop;
@@ -34,6 +43,20 @@ band_result run_band(const band_request& request) {
     r.interrupted = r.below->interrupted;
   }
   if (r.interrupted) return r;
+  if (request.certificate) {
+    r.certificate = band_certificate_of(request.n1, request.n2, request.horizon, request.digits, r.absorption, *r.containment);
+    // What a band certificate states, gyrores check must read (its work bounds, band_checker.hpp).
+    for (const band_certificate_claim* c : {&r.certificate->absorption, &r.certificate->containment}) {
+      if (c->cover.size() > gyrores_checker::band_max_intervals)
+        throw compute_error("band certificate: a cover of " + std::to_string(c->cover.size()) + " intervals, more than the " +
+                            std::to_string(gyrores_checker::band_max_intervals) + " gyrores check reads");
+      for (const band_certificate_interval& I : c->cover)
+        for (const std::string& s : {rational_str(I.a), rational_str(I.b), I.K.str(), I.bound})
+          if (s.size() > gyrores_checker::band_max_field_chars)
+            throw compute_error("band certificate: a number of " + std::to_string(s.size()) + " characters, more than the " +
+                                std::to_string(gyrores_checker::band_max_field_chars) + " gyrores check reads");
+    }
+  }
   // Each extreme's own coupling, its lobe and time (the horizon theorem at the digits asked).
   r.absorption_at = attained(r.absorption.at);
   r.containment_at = attained(r.containment->at);

@@ -5,6 +5,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/certificate_json.hpp>
 
+#include "band_checker.hpp"
 #include "certificate_checker.hpp"
 #include "horizon_checker.hpp"
 
@@ -24,7 +25,8 @@ check_verdict run_check(const std::string& text) {
   const std::string format = certificate_format_of(text);
   if (format == retired_certificate_format) return {2, retired_certificate_message(), true};
   const auto v = format == gyrores_checker::coupling_certificate_format ? gyrores_checker::check_coupling_certificate(text)
-                                                                       : gyrores_checker::check_theorem_certificate(text);
+                 : format == gyrores_checker::band_certificate_format ? gyrores_checker::check_band_certificate(text)
+                                                                     : gyrores_checker::check_theorem_certificate(text);
   return {v.status, v.message, false};
 }
 

@@ -2,7 +2,8 @@
 // gyrores check FILE        (exit 0: holds; 1: a claim or fact fails; 2: unreadable, malformed or retired)
 //
 // certify writes a lattice-theorem certificate ("gyrores-certificate/2"); check re-proves one with
-// the independent Arb checkers (src/checker/), for either format (app/certify.hpp). A file of the
+// the independent Arb checkers (src/checker/), for each format (app/certify.hpp): lattice-theorem,
+// coupling and band certificates. A file of the
 // retired cover format ("gyrores-certificate/1") is refused at once with exit 2 and how to
 // re-certify (docs/formats.md): nothing of it is read.
 

@@ -15,6 +15,7 @@
 #include <gyrores/app/coupling.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/io/files.hpp>
+#include <gyrores/io/band_certificate_json.hpp>
 #include <gyrores/io/horizon_certificate_json.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
@@ -219,6 +220,8 @@ std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args
 app::band_request band_request_of(const coupling_args& a, const std::pair<big_rational, big_rational>& band,
                                   const horizon_time& T) {
   app::band_request q;
+  q.certificate = !a.certificate.empty();
+  if (q.certificate) check_output_path(a.certificate);  // before the work
   q.n1 = band.first;
   q.n2 = band.second;
   q.horizon = T;
@@ -232,6 +235,8 @@ app::band_request band_request_of(const coupling_args& a, const std::pair<big_ra
 std::string band_output(const coupling_args& a, app::band_request& q, const std::string& before, json* whole) {
   signal_scope signals;
   const app::band_result b = run_band(q, signals);
+  // The band certificate, from the very proofs printed below (not when interrupted).
+  if (b.certificate) write_file_atomically(a.certificate, band_certificate_text(*b.certificate));
   std::string out;
   if (!a.json) out = before + band_text(a, q, b);
   else if (whole) {
@@ -251,6 +256,8 @@ std::string run_coupling(const coupling_args& a) {
     app::band_request q = band_request_of(a, *band, parse_horizon_time(a.horizon, "--horizon"));
     return band_output(a, q, "", nullptr);
   }
+  // With a band, --certificate is the band's certificate (both guarantees), refused before the work.
+  const bool band_certificate = band && !a.certificate.empty();
   if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
   check_digits_flag(a.digits, 1, int(app::coupling_digits_max));
   check_flag_range(a.convergents, 0, std::int64_t(app::coupling_convergents_max), "--convergents");
@@ -261,7 +268,11 @@ std::string run_coupling(const coupling_args& a) {
   if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below");
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
-  request.certificate = !a.certificate.empty();
+  request.certificate = !a.certificate.empty() && !band_certificate;
+  if (band_certificate) {
+    check_output_path(a.certificate);
+    check_band_certificate_horizon(opt.horizon);
+  }
   if (request.certificate) {  // before the work
     check_output_path(a.certificate);
     check_certificate_horizon(opt.horizon);
@@ -285,7 +296,7 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
   sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
   sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
-  sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE: gyrores check FILE");
+  sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE, or with --band/--tolerance the band's (both guarantees): gyrores check FILE");
   sub.add("--band", a->band, "a band of couplings N1:N2: its absorption and containment guarantees over [0, T], proved (N optional)");
   sub.add("--tolerance", a->tolerance, "the band N (1 -+ P%) around N, e.g. 1%");
   sub.add("--band-digits", a->band_digits, "digits of the band's guarantees (default: --digits)");

@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 
+#include <gyrores/certify/band_certificate.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/stop.hpp>
 #include <gyrores/io/json.hpp>
@@ -23,6 +24,7 @@ struct band_request {
   std::optional<big_rational> below;  // a level E: the band-wide first time H_q <= E
   unsigned digits = 6;            // of every real, [1, report_digits_max]
   std::size_t max_intervals = 100000;
+  bool certificate = false;       // also the band certificate, from these very proofs (record_cover)
   stop_token stop;
   std::function<void(const band_progress&)> progress;
 };
@@ -43,6 +45,7 @@ struct band_result {
   std::optional<band_first_below> below;
   std::optional<band_attained> below_at;
   bool interrupted = false;  // some proof stopped by the stop token: its bracket so far is reported
+  std::optional<band_certificate> certificate;  // with request.certificate, when not interrupted
 };
 
 // The "band" object of the JSON outputs (docs/formats.md, "Band guarantees"): the request's band,
@@ -50,7 +53,8 @@ struct band_result {
 json band_result_json(const band_request& request, const band_result& result);
 
 // usage_error for a band that is not 0 < n1 < n2, a negative horizon or level, digits outside
-// [1, report_digits_max]. A proof that stops on its cap is returned not settled, with the reason.
+// [1, report_digits_max], and (with request.certificate) a horizon that is not a rational > 0,
+// before any work. A proof that stops on its cap is returned not settled, with the reason.
 band_result run_band(const band_request& request);
 
 }  // namespace gyrores::app

@@ -307,9 +307,9 @@ band_extreme search::run() {
     // (fractions of small denominators can crowd one end, e.g. the centres 1 - 1/(2k) as x -> 1:
     // splitting only there would advance one fraction at a time).
     std::vector<fraction> points = J.splits;
-    const auto [third_lo, third_hi] = arith_.middle_third(J.a, J.b);
+    const std::pair<big_rational, big_rational> third = arith_.middle_third(J.a, J.b);
     if (std::none_of(points.begin(), points.end(), [&](const fraction& f) {
-          return big_rational(f.p, f.q) >= third_lo && big_rational(f.p, f.q) <= third_hi;
+          return big_rational(f.p, f.q) >= third.first && big_rational(f.p, f.q) <= third.second;
         })) {
       const fraction m = middle(J);
       points.insert(std::upper_bound(points.begin(), points.end(), m,
