@@ -237,20 +237,7 @@ std::optional<frac> least_of_parity(const point& y1, const point& y2, bool odd, 
 }
 
 // ---- Balls.
-long bits(const Z& z) { return long(fmpz_bits(z.v)); }
-B ball_qd(const field& F, const QD& a, long prec) {
-  const long work = prec + 2 * std::max(bits(a.p), bits(a.q) + bits(F.D) / 2 + 1) + 16;
-  B out, t;
-  arb_set_fmpz(out.v, a.p.v);
-  if (!fmpz_is_zero(a.q.v)) {
-    arb_set_fmpz(t.v, F.D.v);
-    arb_sqrt(t.v, t.v, work);
-    arb_mul_fmpz(t.v, t.v, a.q.v, work);
-    arb_add(out.v, out.v, t.v, work);
-  }
-  arb_div_fmpz(out.v, out.v, a.r.v, prec);
-  return out;
-}
+B ball_qd(const field& F, const QD& a, long prec) { return exact::ball_of(F, a, prec); }
 B ball_q(const Qr& q, long prec) {
   B b;
   arb_set_fmpq(b.v, q.v, prec);
@@ -286,28 +273,8 @@ at_x balls_of(const ctx& C, const coupling& c) {
 // An inequality Arb did not decide at this precision: the interval is retried at twice it.
 struct undecided {};
 
-B H(const ctx& C, const at_x& X, const B& u) {
-  B s, co, h;
-  arb_sin_cos(s.v, co.v, u.v, C.prec);
-  arb_mul(s.v, s.v, X.x.v, C.prec);
-  arb_atan2(h.v, s.v, co.v, C.prec);
-  arb_addmul(h.v, X.x.v, u.v, C.prec);
-  return h;
-}
-// G(u) = (1 - x^2) x^2 sin^4 u/(cos^2 u + x^2 sin^2 u) (lattice-theorem.md Step C).
-B G(const ctx& C, const at_x& X, const B& u) {
-  B s, co, e, g;
-  arb_sin_cos(s.v, co.v, u.v, C.prec);
-  arb_sqr(s.v, s.v, C.prec);
-  arb_sqr(co.v, co.v, C.prec);
-  arb_mul(e.v, X.x2.v, s.v, C.prec);
-  arb_add(e.v, e.v, co.v, C.prec);
-  arb_sqr(g.v, s.v, C.prec);
-  arb_mul(g.v, g.v, X.x2.v, C.prec);
-  arb_mul(g.v, g.v, X.one_m_x2.v, C.prec);
-  arb_div(g.v, g.v, e.v, C.prec);
-  return g;
-}
+B H(const ctx& C, const at_x& X, const B& u) { return lobe_H(X.x, u, C.prec); }
+B G(const ctx& C, const at_x& X, const B& u) { return lobe_G(X.x2, X.one_m_x2, u, C.prec); }
 // H^{-1}(pi nu) for a ball nu in (0, 1/2]: lo, hi exact with H(lo) < pi nu < H(hi) for every nu
 // of the ball (hi may be the ball of pi/2, where H = (1 + x) pi/2 > pi nu). Bisection to about
 // prec relative bits.

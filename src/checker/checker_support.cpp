@@ -76,4 +76,27 @@ std::string one_line(const std::string& s) {
   return out;
 }
 
+B lobe_H(const B& x, const B& u, long prec) {
+  B s, co, h;
+  arb_sin_cos(s.v, co.v, u.v, prec);
+  arb_mul(s.v, s.v, x.v, prec);
+  arb_atan2(h.v, s.v, co.v, prec);
+  arb_addmul(h.v, x.v, u.v, prec);
+  return h;
+}
+
+B lobe_G(const B& x2, const B& one_m_x2, const B& u, long prec) {
+  B s, co, e, g;
+  arb_sin_cos(s.v, co.v, u.v, prec);
+  arb_sqr(s.v, s.v, prec);
+  arb_sqr(co.v, co.v, prec);
+  arb_mul(e.v, x2.v, s.v, prec);
+  arb_add(e.v, e.v, co.v, prec);
+  arb_sqr(g.v, s.v, prec);
+  arb_mul(g.v, g.v, x2.v, prec);
+  arb_mul(g.v, g.v, one_m_x2.v, prec);
+  arb_div(g.v, g.v, e.v, prec);
+  return g;
+}
+
 }  // namespace gyrores_checker::support

@@ -74,4 +74,10 @@ json parse_without_duplicate_keys(const std::string& text);
 // character from the file (a JSON string may hold one), shown escaped instead.
 std::string one_line(const std::string& s);
 
+// The lobe equations of the checkers, in balls (proofs/horizon-theorem.md, Notation):
+// H(u) = x u + atan2(x sin u, cos u) for |u| < pi/2, and
+// G(u) = (1 - x^2) x^2 sin^4 u/(cos^2 u + x^2 sin^2 u), R at a lobe minimiser (lattice-theorem.md Step C).
+B lobe_H(const B& x, const B& u, long prec);
+B lobe_G(const B& x2, const B& one_m_x2, const B& u, long prec);
+
 }  // namespace gyrores_checker::support

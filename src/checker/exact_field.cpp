@@ -1,7 +1,10 @@
 // exact_field.hpp: the checkers' exact arithmetic in Q(sqrt D) and rotation minima.
 #include "exact_field.hpp"
 
+#include <arb.h>
 #include <flint/fmpz.h>
+
+#include <algorithm>
 
 namespace gyrores_checker::exact {
 
@@ -214,5 +217,25 @@ std::optional<Z> first_lobe_at_most(const field& F, const QD& x, const QD& d, co
   return first_hit(F, x, frac(F, add(rational(1, 2), d)), add(d, d), K);
 }
 
+
+namespace {
+long bit_length(const Z& z) { return long(fmpz_bits(z.v)); }
+}  // namespace
+
+support::B ball_of(const field& F, const QD& a, long prec) {
+  // |p + q sqrt D| >= 1/(|p| + |q| sqrt D) (the norm is a non-zero integer): their bit lengths
+  // twice over suffice.
+  const long work = prec + 2 * std::max(bit_length(a.p), bit_length(a.q) + bit_length(F.D) / 2 + 1) + 16;
+  support::B out, t;
+  arb_set_fmpz(out.v, a.p.v);
+  if (!fmpz_is_zero(a.q.v)) {
+    arb_set_fmpz(t.v, F.D.v);
+    arb_sqrt(t.v, t.v, work);
+    arb_mul_fmpz(t.v, t.v, a.q.v, work);
+    arb_add(out.v, out.v, t.v, work);
+  }
+  arb_div_fmpz(out.v, out.v, a.r.v, prec);
+  return out;
+}
 
 }  // namespace gyrores_checker::exact

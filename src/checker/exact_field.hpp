@@ -43,4 +43,8 @@ std::optional<Z> first_hit(const field& F, const QD& alpha, const QD& beta, cons
 // The first k in [0, K] with nu_k <= d (d in [0, 1/2)).
 std::optional<Z> first_lobe_at_most(const field& F, const QD& x, const QD& d, const Z& K);
 
+// A ball of a at prec bits (Arb): p and q sqrt D may cancel, so they are formed at a working
+// precision their bit lengths give.
+support::B ball_of(const field& F, const QD& a, long prec);
+
 }  // namespace gyrores_checker::exact

@@ -211,21 +211,7 @@ lobe_exact lobe_of(const rotation& R, const Z& k) {
 
 // ---- Balls.
 long bits_of(const Z& z) { return long(fmpz_bits(z.v)); }
-B ball_of_q2(const field& F, const QD& a, long prec) {
-  // p and q sqrt D may cancel, but |p + q sqrt D| >= 1/(|p| + |q| sqrt D) (the norm is a non-zero
-  // integer): their bit lengths twice over suffice.
-  const long work = prec + 2 * std::max(bits_of(a.p), bits_of(a.q) + bits_of(F.D) / 2 + 1) + 16;
-  B out, t;
-  arb_set_fmpz(out.v, a.p.v);
-  if (!fmpz_is_zero(a.q.v)) {
-    arb_set_fmpz(t.v, F.D.v);
-    arb_sqrt(t.v, t.v, work);
-    arb_mul_fmpz(t.v, t.v, a.q.v, work);
-    arb_add(out.v, out.v, t.v, work);
-  }
-  arb_div_fmpz(out.v, out.v, a.r.v, prec);
-  return out;
-}
+B ball_of_q2(const field& F, const QD& a, long prec) { return exact::ball_of(F, a, prec); }
 // The exact value of a decimal (as read by decimal_field), for the comparisons balls cannot make
 // (two equal decimals, a decimal against the rational T).
 struct Qx {
@@ -293,29 +279,8 @@ constants constants_of(const certificate& c, const rotation& R, long prec) {
   arb_mul_2exp_si(K.alpha_T.v, K.alpha_T.v, -1);
   return K;
 }
-// H(u) = x u + atan2(x sin u, cos u) for |u| < pi/2.
-B H(const constants& K, const B& u) {
-  B s, co, h;
-  arb_sin_cos(s.v, co.v, u.v, K.prec);
-  arb_mul(s.v, s.v, K.x.v, K.prec);
-  arb_atan2(h.v, s.v, co.v, K.prec);
-  arb_addmul(h.v, K.x.v, u.v, K.prec);
-  return h;
-}
-// G(u) = (1 - x^2) x^2 sin^4 u/(cos^2 u + x^2 sin^2 u): R at a lobe minimiser (lattice-theorem.md Step C).
-B G(const constants& K, const B& u) {
-  B s, co, e, g;
-  arb_sin_cos(s.v, co.v, u.v, K.prec);
-  arb_sqr(s.v, s.v, K.prec);
-  arb_sqr(co.v, co.v, K.prec);
-  arb_mul(e.v, K.x2.v, s.v, K.prec);
-  arb_add(e.v, e.v, co.v, K.prec);
-  arb_sqr(g.v, s.v, K.prec);
-  arb_mul(g.v, g.v, K.x2.v, K.prec);
-  arb_mul(g.v, g.v, K.one_m_x2.v, K.prec);
-  arb_div(g.v, g.v, e.v, K.prec);
-  return g;
-}
+B H(const constants& K, const B& u) { return lobe_H(K.x, u, K.prec); }
+B G(const constants& K, const B& u) { return lobe_G(K.x2, K.one_m_x2, u, K.prec); }
 // R = (1 - x^2) sin^2 alpha cos^2 beta + (cos alpha cos beta - x sin alpha sin beta)^2, beta = x alpha.
 B R_at(const constants& K, const B& alpha) {
   B b, sa, ca, sb, cb, q, qd, t;
