@@ -317,9 +317,14 @@ band_extreme search::run() {
                     m);
     }
     std::vector<band_coupling> cuts{J.a};
-    for (const fraction& f : points) {
-      cuts.push_back(band_coupling::of_x(f.p, f.q));
-      evaluate(cuts.back());
+    try {
+      for (const fraction& f : points) {
+        cuts.push_back(band_coupling::of_x(f.p, f.q));
+        evaluate(cuts.back());
+      }
+    } catch (const interrupted&) {  // a horizon proof stopped: J's bound still holds its part
+      open.push(std::move(J));
+      return finish(lo, hi, true, "");
     }
     cuts.push_back(J.b);
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
@@ -408,8 +413,9 @@ std::optional<band_coupling> pair_above(const band_coupling& x1, const band_coup
 
 // r holds the bracket reached so far, for an interrupted search.
 void first_below_search(const big_rational& n1, const big_rational& n2, const big_rational& E, const band_options& opt,
-                        slong prec, band_first_below& r) {
+                        slong prec, band_first_below& r, bool& bracketed) {
   r = band_first_below{};
+  bracketed = false;
   r.level = E;
   const band_coupling x1 = band_coupling::of_n(n1), x2 = band_coupling::of_n(n2);
   const band_arith arith(horizon_time(big_rational(1)), prec);
@@ -469,13 +475,13 @@ void first_below_search(const big_rational& n1, const big_rational& n2, const bi
     throw precision_shortfall("the absorption guarantee at a trial horizon was not decided against the level");
   };
   hi = 2 * lo + 1;
-  r.time = band_detail::enclosure_of_rationals(lo, lo);
   while (!drains_by(hi)) {
     if (hi > big_rational(big_int(1) << 400)) throw precision_shortfall("no horizon up to 2^400 drains every coupling to E");
     hi *= 2;
   }
   for (;;) {
     r.time = band_detail::enclosure_of_rationals(lo, hi);
+    bracketed = true;
     opt.stop.throw_if_requested();
     if (opt.progress) opt.progress({"first time below", r.intervals, r.couplings, lo.convert_to<double>(), hi.convert_to<double>()});
     if (r.time.rounded(opt.digits)) break;
@@ -500,11 +506,12 @@ band_first_below prove_band_first_below(const big_rational& n1, const big_ration
   const slong start = start_bits(opt.digits, n2 * n2, horizon_time(big_rational(1)));
   precision_plan plan{mpfr_prec_t(start), tie_bits_cap(mpfr_prec_t(start))};
   band_first_below r;
+  bool bracketed = false;  // r.time holds the latest first time (a draining horizon is known)
   try {
     return refine(plan, opt.stop, "the band's first time below a level",
                   [&](mpfr_prec_t bits, proof_status& status) -> std::optional<band_first_below> {
                     try {
-                      first_below_search(n1, n2, level, opt, slong(bits), r);
+                      first_below_search(n1, n2, level, opt, slong(bits), r, bracketed);
                       return r;
                     } catch (const precision_shortfall& e) {
                       status = proof_status::undecided(e.why());
@@ -512,6 +519,7 @@ band_first_below prove_band_first_below(const big_rational& n1, const big_ration
                     return std::nullopt;
                   });
   } catch (const interrupted&) {
+    if (!bracketed) throw;  // no horizon is proved to drain the band yet: no bracket to print
     r.interrupted = true;  // the bracket reached: [latest evaluated first time, last draining horizon]
     r.settled = false;
     return r;
