@@ -105,13 +105,6 @@ Qr decimal_value(const std::string& s, const std::string& name) {
   } else fmpq_set_fmpz_frac(q.v, m.v, p.v);
   return q;
 }
-void keys(const json& j, const std::set<std::string>& ks, const std::string& where) {
-  if (!j.is_object()) throw malformed(where + " must be an object");
-  for (auto it = j.begin(); it != j.end(); ++it)
-    if (!ks.count(it.key())) throw malformed("unknown field '" + it.key() + "' in " + where);
-  for (const auto& k : ks)
-    if (!j.contains(k)) throw malformed("missing field '" + k + "' in " + where);
-}
 
 // ---- A coupling n^2 = P/Q: x = sqrt(P/(P + 4Q)) exactly in Q(sqrt D), D = P (P + 4Q).
 struct coupling {
@@ -738,7 +731,7 @@ void check_interval(const ctx& C, const interval& J, bool absorption, const std:
 void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, const Qr& n2sq, const Qr& T,
                       const std::string& horizon_text, long digits, long prec0, long& pieces) {
   const bool absorption = which == "absorption";
-  keys(j, {"value", "at", "cover"}, which);
+  exact_keys(j, {"value", "at", "cover"}, which);
   const bracket value = bracket_field(j["value"], which + ".value", band_max_field_chars);
   const Qr lo = decimal_value(value.lo, which + ".value"), hi = decimal_value(value.hi, which + ".value");
   if (fmpq_sgn(lo.v) < 0 || fmpq_cmp(lo.v, hi.v) > 0) throw fails(which + ".value must have 0 <= lo <= hi");
@@ -765,7 +758,7 @@ void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, c
   for (std::size_t i = 0; i < cover.size(); ++i) {
     const std::string where = which + ".cover[" + std::to_string(i) + "]";
     const json& c = cover[i];
-    keys(c, {"a", "b", "kind", "K", "k", "reached", "unreached", "bound"}, where);
+    exact_keys(c, {"a", "b", "kind", "K", "k", "reached", "unreached", "bound"}, where);
     interval J;
     J.a2 = rational_of(c["a"], where + ".a");
     J.b2 = rational_of(c["b"], where + ".b");
@@ -824,7 +817,7 @@ verdict check_band_certificate(const std::string& json_text) {
     } catch (const std::exception& e) {
       throw malformed(std::string("not JSON: ") + e.what());
     }
-    keys(j, {"format", "theorem", "n1", "n2", "horizon", "digits", "absorption", "containment"}, "the certificate");
+    exact_keys(j, {"format", "theorem", "n1", "n2", "horizon", "digits", "absorption", "containment"}, "the certificate");
     if (j["format"] != band_certificate_format) throw malformed(std::string("format is not ") + band_certificate_format);
     if (j["theorem"] != "band-theorem/1") throw fails("theorem is not band-theorem/1 (the one this checker knows)");
     if (!j["digits"].is_number_integer()) throw malformed("digits must be an integer");

@@ -76,6 +76,14 @@ std::string one_line(const std::string& s) {
   return out;
 }
 
+void exact_keys(const json& j, const std::set<std::string>& keys, const std::string& where) {
+  if (!j.is_object()) throw malformed(where + " must be an object");
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (!keys.count(it.key())) throw malformed("unknown field '" + it.key() + "' in " + where);
+  for (const auto& key : keys)
+    if (!j.contains(key)) throw malformed("missing field '" + key + "' in " + where);
+}
+
 B lobe_H(const B& x, const B& u, long prec) {
   B s, co, h;
   arb_sin_cos(s.v, co.v, u.v, prec);

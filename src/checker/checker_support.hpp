@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -73,6 +74,9 @@ json parse_without_duplicate_keys(const std::string& text);
 // The verdict is one line: a field quoted in a message may hold a newline or another control
 // character from the file (a JSON string may hold one), shown escaped instead.
 std::string one_line(const std::string& s);
+
+// Malformed unless j is an object with exactly the fields `keys` (`where` names it in the message).
+void exact_keys(const json& j, const std::set<std::string>& keys, const std::string& where);
 
 // The lobe equations of the checkers, in balls (proofs/horizon-theorem.md, Notation):
 // H(u) = x u + atan2(x sin u, cos u) for |u| < pi/2, and

@@ -68,13 +68,6 @@ bool bool_field(const json& j, const std::string& name) {
   if (!j.is_boolean()) throw malformed(name + " must be true or false");
   return j.get<bool>();
 }
-void exact_keys(const json& j, const std::set<std::string>& keys, const std::string& where) {
-  if (!j.is_object()) throw malformed(where + " must be an object");
-  for (auto it = j.begin(); it != j.end(); ++it)
-    if (!keys.count(it.key())) throw malformed("unknown field '" + it.key() + "' in " + where);
-  for (const auto& key : keys)
-    if (!j.contains(key)) throw malformed("missing field '" + key + "' in " + where);
-}
 
 struct lobe_data {
   Z k, j;

@@ -72,12 +72,11 @@ void G(arb_t out, const arb_t x, const arb_t u, slong p) {
 }
 
 void dG(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, s2, e, w, t;
+  ball sn, cs, s2, e, xs2, w, t;
   arb_sin_cos(sn, cs, u, p);
-  arb_mul(s2, sn, sn, p);           // sin^2
-  arb_mul(w, x, x, p);              // x^2
-  arb_mul(e, cs, cs, p);
-  arb_addmul(e, w, s2, p);          // E
+  E_of(e, xs2, x, sn, cs, p);       // E
+  square(s2, sn, p);                // sin^2
+  square(w, x, p);                  // x^2
   arb_sub_si(t, w, 1, p);
   arb_neg(t, t);                    // 1 - x^2
   arb_mul(out, t, s2, p);
