@@ -22,11 +22,7 @@
 #include "testing/cli_run.hpp"
 
 using gyrores::json;
-using gyrores::test::cli_available;
-using gyrores::test::cli_result;
-using gyrores::test::path_exists;
-using gyrores::test::read_text;
-using gyrores::test::temp_dir;
+using namespace gyrores::test;  // cli_run.hpp: the CLI runner and temporary files
 
 namespace {
 

@@ -295,8 +295,7 @@ TEST_CASE("prove_theorem_root and theorem_radius contain the independent u* and 
     if (m == 0) continue;
     for (mpfr_prec_t prec : {64, 128, 333, 1000}) {
       INFO(p.str() << " at " << prec << " bits");
-      theorem_constants K(prec);
-      set_theorem_constants(K, p);
+      theorem_constants K(prec, p);
       root_enclosure r(prec);
       REQUIRE(prove_theorem_root(r, K, m));
       big_float u(prec + extra_bits), rr(prec + extra_bits);
@@ -324,8 +323,7 @@ TEST_CASE("prove_theorem_root for larger offsets m (the paper's lobe roots)", "[
     bool proved = false;
     for (mpfr_prec_t prec = 200; prec <= 1600 && !proved; prec *= 2) {
       INFO(p.str() << ", m = " << m << " at " << prec << " bits");
-      theorem_constants K(prec);
-      set_theorem_constants(K, p);
+      theorem_constants K(prec, p);
       root_enclosure r(prec);
       if (!(proved = bool(prove_theorem_root(r, K, big_int(m))))) continue;
       big_float u(prec + extra_bits);
@@ -461,8 +459,7 @@ TEST_CASE("prove_paper_root contains the independent root of u + tan u = s", "[t
       if (m > b || -m > b) continue;
       for (mpfr_prec_t prec : {64, 256, 1000}) {
         INFO(p.str() << ", m = " << m << " at " << prec << " bits");
-        theorem_constants K(prec);
-        set_theorem_constants(K, p);
+        theorem_constants K(prec, p);
         root_enclosure r(prec);
         REQUIRE(prove_paper_root(r, K, m));
         big_float u(prec + extra_bits);
@@ -493,8 +490,7 @@ TEST_CASE("prove_theorem_bracket refuses brackets on the wrong side of the root"
     if (m == 0) continue;
     const mpfr_prec_t prec = 128;
     INFO(p.str());
-    theorem_constants K(prec);
-    set_theorem_constants(K, p);
+    theorem_constants K(prec, p);
     root_enclosure r(prec);
     REQUIRE(theorem_centre_of(r, K, m));
     big_float u(prec + extra_bits);
@@ -523,8 +519,7 @@ TEST_CASE("prove_theorem_bracket: the bracket of one offset m is refused for ano
   for (const auto& [tau, sigma] : {std::pair{"1000", "1"}, {"1000000000", "1"}, {"1000004", "3"}, {"19999", "2"}}) {
     const resonant_pair<big_int> p{big_int(tau), big_int(sigma)};
     const mpfr_prec_t prec = 128;
-    theorem_constants K(prec);
-    set_theorem_constants(K, p);
+    theorem_constants K(prec, p);
     for (auto [proved, against] : {std::pair{1, 2}, {2, 1}}) {
       INFO(p.str() << ": the bracket of m = " << proved << " against m = " << against);
       root_enclosure own(prec), other(prec);
@@ -561,8 +556,7 @@ TEST_CASE("prove_theorem_bracket refuses a claim narrower than its enclosures at
         scaled_point(LO, u, -1, which == 0 ? int(P) + 4 : int(P) - 24);
         scaled_point(HI, u, +1, which == 1 ? int(P) + 4 : int(P) - 24);
         {
-          theorem_constants K(P);
-          set_theorem_constants(K, p);
+          theorem_constants K(P, p);
           root_enclosure r(P);
           REQUIRE(theorem_centre_of(r, K, m));
           fixed_mpfi T(P);
@@ -591,8 +585,7 @@ TEST_CASE("prove_theorem_bracket refuses ends farther than 2^-10 from the centre
     REQUIRE(m != 0);
     const mpfr_prec_t prec = 128;
     INFO(p.str());
-    theorem_constants K(prec);
-    set_theorem_constants(K, p);
+    theorem_constants K(prec, p);
     root_enclosure r(prec);
     REQUIRE(theorem_centre_of(r, K, m));
     fixed_mpfi LO(prec), HI(prec), T(prec);
@@ -620,8 +613,7 @@ TEST_CASE("prove_theorem_bracket refuses ends farther than 2^-10 from the centre
     const auto p = pair_of(c);
     const mpfr_prec_t prec = 128;
     INFO(p.str());
-    theorem_constants K(prec);
-    set_theorem_constants(K, p);
+    theorem_constants K(prec, p);
     root_enclosure r(prec);
     REQUIRE(prove_theorem_root(r, K, big_int(p.strand_offset_min())));
     REQUIRE(mpfr_cmp_d(r.U.right(), 0x1.cp-11) < 0);
@@ -645,8 +637,7 @@ TEST_CASE("theorem_radius encloses sqrt(G) over an interval T and only there", "
     if (m == 0) continue;
     INFO(p.str());
     const mpfr_prec_t prec = 200, bits = prec + extra_bits;
-    theorem_constants K(prec);
-    set_theorem_constants(K, p);
+    theorem_constants K(prec, p);
     big_float u(bits), v(bits), t(bits), g(bits);
     theorem_root_reference(u, p, m);
     fixed_mpfi T(prec), R(prec);

@@ -30,6 +30,17 @@ void add_output_options(const options& sub, int& digits, bool& json) {
 
 void add_size_option(const options& sub, std::string& size, const std::string& help) { sub.add("--size", size, help); }
 
+void add_pair_filter_options(const options& sub, pair_filter_flags& f) {
+  sub.add("--beat", f.beat, "only pairs with (tau+sigma)/(tau-sigma) >= B (decimal or fraction)");
+  sub.add("--exclude-low", f.exclude_low, "drop the low-order set tau + sigma <= L");
+}
+
+void apply_pair_filter_flags(const pair_filter_flags& f, pair_filter& filter) {
+  if (!f.beat.empty()) filter.beat_min = parse_positive_flag(f.beat, "--beat");
+  if (f.exclude_low < 0) throw usage_error("--exclude-low must be >= 0");
+  filter.exclude_low = f.exclude_low;
+}
+
 void check_digits_flag(int digits, int lo, int hi) {
   if (digits < lo || digits > hi)
     throw usage_error("--digits must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +

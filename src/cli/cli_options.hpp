@@ -18,6 +18,10 @@ namespace CLI {
 class App;
 }
 
+namespace gyrores {
+struct pair_filter;
+}
+
 namespace gyrores::cli {
 
 // How an option appears: plain, with its default shown in the help, or required.
@@ -61,6 +65,15 @@ void add_json_flag(const options& sub, bool& json);
 void add_output_options(const options& sub, int& digits, bool& json);
 // --size WxH of an image.
 void add_size_option(const options& sub, std::string& size, const std::string& help);
+
+// --beat B and --exclude-low L: the pair filters that design and pareto share.
+struct pair_filter_flags {
+  std::string beat;
+  std::int64_t exclude_low = 0;
+};
+void add_pair_filter_options(const options& sub, pair_filter_flags& f);
+// Their values into `filter` (usage_error naming the flag).
+void apply_pair_filter_flags(const pair_filter_flags& f, pair_filter& filter);
 
 // usage_error "--digits must be in [lo, hi], got D" outside [lo, hi].
 void check_digits_flag(int digits, int lo, int hi);

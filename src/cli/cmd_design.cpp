@@ -26,8 +26,9 @@ namespace {
 constexpr std::int64_t delta_unset = std::numeric_limits<std::int64_t>::min();
 
 struct design_args {
-  std::string problem, tmax, beat, tolerance, level, horizon;
-  std::int64_t max_order = 200, exclude_low = 0, delta = delta_unset, candidates = 5;
+  std::string problem, tmax, tolerance, level, horizon;
+  pair_filter_flags filter;
+  std::int64_t max_order = 200, delta = delta_unset, candidates = 5;
   int digits = 10;
   bool proxy = false, json = false;
 };
@@ -57,18 +58,16 @@ app::design_request request_of(const design_args& a) {
   o.problem = app::parse_design_problem(a.problem);
   check_digits_flag(a.digits, 1, int(app::listed_digits_max));
   o.tmax = parse_positive_flag(a.tmax, "--tmax");
-  if (!a.beat.empty()) o.filter.beat_min = parse_positive_flag(a.beat, "--beat");
-  if (a.exclude_low < 0) throw usage_error("--exclude-low must be >= 0");
+  apply_pair_filter_flags(a.filter, o.filter);
   if (a.delta != delta_unset && a.delta < 1) throw usage_error("--delta must be >= 1, got " + std::to_string(a.delta));
   check_flag_range(a.candidates, 0, 1000, "--candidates");
-  o.filter.exclude_low = a.exclude_low;
   if (a.delta != delta_unset) o.filter.delta = a.delta;
   o.time = a.proxy ? design_time::proxy : design_time::first_hit;
   o.max_order = a.max_order;
   o.candidates = std::size_t(a.candidates);
   check_max_order_flag(a.max_order);
   r.tmax_text = a.tmax;
-  r.beat_text = a.beat;
+  r.beat_text = a.filter.beat;
   r.digits = unsigned(a.digits);
   r.tolerance = tolerance_of(a, o.problem);
   return r;
@@ -146,9 +145,8 @@ command_runner install_design(CLI::App& app) {
   auto sub = options(app).subcommand("design", "Choose a resonant pair: absorb (min r_res) or contain (max r_res) under a time limit");
   sub.add("PROBLEM", a->problem, "absorb or contain", show::required);
   sub.add("--tmax", a->tmax, "time limit T (decimal or fraction); constraint time <= T", show::required);
-  sub.add("--beat", a->beat, "require (tau+sigma)/(tau-sigma) >= B (decimal or fraction)");
   sub.add("--max-order", a->max_order, "search pairs with tau + sigma <= M (3..5000)", show::with_default);
-  sub.add("--exclude-low", a->exclude_low, "exclude the low-order set tau + sigma <= L");
+  add_pair_filter_options(sub, a->filter);
   sub.add("--delta", a->delta, "only pairs with tau - sigma = D (follows the paper's Case A)");
   sub.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| instead of the exact first-hit time");
   sub.add("--candidates", a->candidates, "runners-up to report", show::with_default);

@@ -25,8 +25,9 @@ using frontend::figure_output;
 using frontend::figure_spec;
 
 struct pareto_args {
-  std::int64_t max_order = 0, exclude_low = 0;
-  std::string orientation = "absorb", beat, out, plot, size;
+  std::int64_t max_order = 0;
+  pair_filter_flags filter;
+  std::string orientation = "absorb", out, plot, size;
   bool proxy = false, exclude_degenerate = false, json = false;
   int digits = 10;
 };
@@ -70,10 +71,8 @@ std::string run_pareto(const pareto_args& a) {
   app::pareto_request r;
   r.orientation = app::parse_pareto_orientation(a.orientation, "--orientation");
   check_digits_flag(a.digits, 1, int(app::listed_digits_max));
-  if (a.exclude_low < 0) throw usage_error("--exclude-low must be >= 0");
-  r.filter.exclude_low = a.exclude_low;
+  apply_pair_filter_flags(a.filter, r.filter);
   r.filter.exclude_degenerate = a.exclude_degenerate;
-  if (!a.beat.empty()) r.filter.beat_min = parse_positive_flag(a.beat, "--beat");
   std::optional<figure_spec> spec;
   if (!a.plot.empty()) spec = frontend::figure_spec_from_out(a.plot, a.size, 900, 640);
   const fs::path out(a.out);
@@ -106,8 +105,7 @@ command_runner install_pareto(CLI::App& app) {
   sub.add("--orientation", a->orientation, "absorb (min r_res, min time) or contain (max r_res, min time)", show::with_default);
   sub.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");
   sub.flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs (r_res = 0)");
-  sub.add("--beat", a->beat, "only pairs with (tau+sigma)/(tau-sigma) >= B");
-  sub.add("--exclude-low", a->exclude_low, "drop the low-order set tau + sigma <= L");
+  add_pair_filter_options(sub, a->filter);
   sub.add("--out", a->out, "write the front as CSV to FILE.csv");
   sub.add("--plot", a->plot, "draw the front to FILE.svg or FILE.png (data and gnuplot script beside it)");
   add_size_option(sub, a->size, "plot size WxH in pixels (default 900x600)");

@@ -88,6 +88,7 @@ double paper_root_double(double s);
 // O(prec) each, where an interval x would cost a full product); any coupling's x and pi only.
 struct theorem_constants {
   explicit theorem_constants(mpfr_prec_t p) : prec(p), a(p), b(p), x(p), x2(p), s1mx2(p), sqrt_ts(p), pi(p) {}
+  theorem_constants(mpfr_prec_t p, const resonant_pair<big_int>& pair);  // set_theorem_constants(*this, pair)
   mpfr_prec_t prec;
   // a, b, x = b/a, x^2, sqrt(1-x^2) = 2 sqrt(tau sigma)/a, sqrt(tau sigma), pi
   fixed_mpfi a, b, x, x2, s1mx2, sqrt_ts, pi;

@@ -50,8 +50,7 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
     // (u* <= pi/4: d log sqrt(G)/d log u <= 2 u (1 + tan^2 u)/tan u < 4; theta_first and t_first
     // at most 1 time), so they come out within 2^-e.
     const unsigned d = digits + 10;
-    theorem_constants K(bits);
-    set_theorem_constants(K, p);
+    theorem_constants K(bits, p);
     root_enclosure z(bits);
     iv r(bits), theta(bits), t(bits);
     const auto wide = proof_status::undecided("a claim is wider than the digits at this precision");

@@ -67,8 +67,7 @@ struct design_refined {
 
 std::unique_ptr<design_refined> design_refine(const design_point& p) {
   const resonant_pair<big_int> pr(big_int(p.tau), big_int(p.sigma));
-  theorem_constants K(refine_bits);
-  set_theorem_constants(K, pr);
+  theorem_constants K(refine_bits, pr);
   fixed_mpfi v(refine_bits);
   mpfi_set_ui(v, 1);
   minimum_enclosure m(refine_bits);

@@ -305,8 +305,7 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
   if (r.asymptotic_applicable) r.asymptotic_reason = asymptotic_remarks(p, paper_fast_node(a, b).tie);
   round_refined(p, opt.digits, opt.enclosures, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
     r.bits = bits;
-    theorem_constants K(bits);
-    set_theorem_constants(K, p);
+    theorem_constants K(bits, p);
     iv v(bits);
     mpfi_set_q(v, e.v.backend().data());
     minimum_enclosure M(bits);
@@ -338,8 +337,7 @@ paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_in
   const big_int m = a - 2 * k * b;
   paper_lobe_detail d;
   round_refined(p, digits, true, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
-    theorem_constants K(bits);
-    set_theorem_constants(K, p);
+    theorem_constants K(bits, p);
     root_cache cache(K);
     lobe_enclosures L(bits);
     GYRORES_TRY_PROOF(prove_lobe(L, K, cache, k, m));

@@ -39,56 +39,53 @@ void H(arb_t out, const arb_t x, const arb_t u, slong p) {
 
 namespace {
 
-// E(u) = cos^2 u + x^2 sin^2 u and x^2 sin^2 u from sin u and cos u (squares from their ends).
-void E_of(arb_t e, arb_t xs2, const arb_t x, const arb_t sn, const arb_t cs, slong p) {
-  ball c2;
-  arb_mul(xs2, x, sn, p);
-  square(xs2, xs2, p);
-  square(c2, cs, p);
-  arb_add(e, c2, xs2, p);
-}
+// The terms dH, G and dG share: sin u, cos u, E(u) = cos^2 u + x^2 sin^2 u, x^2 sin^2 u, sin^2 u,
+// x^2 and 1 - x^2 (squares from their ends).
+struct lobe_terms {
+  ball sn, cs, e, xs2, s2, x2, w;
+  lobe_terms(const arb_t x, const arb_t u, slong p) {
+    ball c2;
+    arb_sin_cos(sn, cs, u, p);
+    arb_mul(xs2, x, sn, p);
+    square(xs2, xs2, p);
+    square(c2, cs, p);
+    arb_add(e, c2, xs2, p);
+    square(s2, sn, p);
+    square(x2, x, p);
+    arb_sub_si(w, x2, 1, p);
+    arb_neg(w, w);              // 1 - x^2
+  }
+};
 
 }  // namespace
 
 void dH(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, e, xs2;
-  arb_sin_cos(sn, cs, u, p);
-  E_of(e, xs2, x, sn, cs, p);
-  arb_div(out, x, e, p);
+  const lobe_terms L(x, u, p);
+  arb_div(out, x, L.e, p);
   arb_add(out, out, x, p);
 }
 
 void G(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, xs, e, t, w;
-  arb_sin_cos(sn, cs, u, p);
-  E_of(e, xs, x, sn, cs, p);  // xs = x^2 sin^2
-  square(t, sn, p);
-  arb_mul(t, t, xs, p);       // x^2 sin^4
-  square(w, x, p);
-  arb_sub_si(w, w, 1, p);
-  arb_neg(w, w);              // 1 - x^2
-  arb_mul(out, w, t, p);
-  arb_div(out, out, e, p);
+  const lobe_terms L(x, u, p);
+  ball t;
+  arb_mul(t, L.s2, L.xs2, p);  // x^2 sin^4
+  arb_mul(out, L.w, t, p);
+  arb_div(out, out, L.e, p);
 }
 
 void dG(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, s2, e, xs2, w, t;
-  arb_sin_cos(sn, cs, u, p);
-  E_of(e, xs2, x, sn, cs, p);       // E
-  square(s2, sn, p);                // sin^2
-  square(w, x, p);                  // x^2
-  arb_sub_si(t, w, 1, p);
-  arb_neg(t, t);                    // 1 - x^2
-  arb_mul(out, t, s2, p);
+  const lobe_terms L(x, u, p);
+  ball e2;
+  arb_mul(out, L.w, L.s2, p);
   arb_mul_2exp_si(out, out, 1);     // 2 (1 - x^2) sin^2
-  arb_addmul_si(out, e, 4, p);      // 4E + 2 (1 - x^2) sin^2
-  arb_mul(out, out, t, p);
-  arb_mul(out, out, w, p);
-  arb_mul(out, out, s2, p);
-  arb_mul(out, out, sn, p);
-  arb_mul(out, out, cs, p);
-  arb_mul(e, e, e, p);
-  arb_div(out, out, e, p);
+  arb_addmul_si(out, L.e, 4, p);    // 4E + 2 (1 - x^2) sin^2
+  arb_mul(out, out, L.w, p);
+  arb_mul(out, out, L.x2, p);
+  arb_mul(out, out, L.s2, p);
+  arb_mul(out, out, L.sn, p);
+  arb_mul(out, out, L.cs, p);
+  arb_mul(e2, L.e, L.e, p);
+  arb_div(out, out, e2, p);
 }
 
 namespace {

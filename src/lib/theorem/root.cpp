@@ -89,6 +89,10 @@ void set_theorem_constants(theorem_constants& K, const resonant_pair<big_int>& p
   K.ratio = true;
 }
 
+theorem_constants::theorem_constants(mpfr_prec_t p, const resonant_pair<big_int>& pair) : theorem_constants(p) {
+  set_theorem_constants(*this, pair);
+}
+
 void set_theorem_constants(theorem_constants& K, const iv& x) {
   mpfi_set(K.x, x);
   mpfi_const_pi(K.pi);
