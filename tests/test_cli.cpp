@@ -151,7 +151,12 @@ TEST_CASE("bad input: one line on stderr, nothing on stdout, exit 2 or 3", "[cli
            row{"pair 6 5 --qdot0 abc", 2, "--qdot0"},
            row{"pair 6 5 --bogus", 2, "--bogus"},
            row{"pair 6 5 --method magic", 2, "--method"},
-           row{"frobnicate", 2, ""},
+           row{"frobnicate", 2, "unknown subcommand 'frobnicate' (gyrores --help lists them)"},
+           // A typo of a subcommand or of an option is named with its nearest spelling.
+           row{"pari 6 5", 2, "unknown subcommand 'pari' (did you mean 'pair'?)"},
+           row{"cuopling 2", 2, "did you mean 'coupling'?"},
+           row{"pair 6 5 --digts 5", 2, "did you mean '--digits' for '--digts'?"},
+           row{"coupling 2 --horizn 10", 2, "did you mean '--horizon' for '--horizn'?"},
            row{"pair 6 5 --estimate", 2, "--estimate"},
        }) {
     check_rejected(args, status, needle);

@@ -16,6 +16,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/stop.hpp>
@@ -90,6 +91,55 @@ bool print_stdout(const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// Edit distance (insertions, deletions, substitutions, adjacent transpositions) of two short words.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+// The candidate nearest to `word` when it is close enough to be a typo of it (a third of its
+// letters, at least one), else "".
+std::string nearest(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(1, word.size() / 3) + 1;
+  for (const auto& c : candidates)
+    if (const std::size_t d = edit_distance(word, c); d < best_d) best_d = d, best = c;
+  return best;
+}
+
+// " (did you mean 'X'?)" for a mistyped subcommand (the first word names none) or an option the
+// subcommand does not have; "" when nothing is close.
+std::string did_you_mean(CLI::App& app, int argc, char** argv, bool named) {
+  if (!named) {
+    std::vector<std::string> names;
+    for (const auto& e : command_registry()) names.push_back(e.name);
+    const std::string near = nearest(argv[1], names);
+    return near.empty() ? "" : " (did you mean '" + near + "'?)";
+  }
+  const CLI::App* sub = app.get_subcommand(argv[1]);
+  std::vector<std::string> options;
+  for (const CLI::Option* o : sub->get_options())
+    for (const auto& l : o->get_lnames()) options.push_back("--" + l);
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i], word = arg.substr(0, arg.find('='));
+    if (word.rfind("--", 0) != 0 || std::find(options.begin(), options.end(), word) != options.end()) continue;
+    if (const std::string near = nearest(word, options); !near.empty())
+      return " (did you mean '" + near + "' for '" + word + "'?)";
+  }
+  return "";
+}
+
+}  // namespace
+
 int cannot_write_stdout(int err) {
   std::cerr << "gyrores: error: cannot write to stdout: " << std::strerror(err) << "\n";
   return exit_usage;
@@ -131,10 +181,14 @@ int run(int argc, char** argv, bool execute) {
     if (!execute) return 0;
     return print_stdout(std::string("gyrores ") + GYRORES_VERSION + "\n") ? 0 : cannot_write_stdout(errno);
   } catch (const CLI::ParseError& e) {
-    std::string msg = e.what();
+    std::string msg = e.what(), hint = did_you_mean(app, argc, argv, named);
+    if (!named && argv[1][0] != '-') {
+      msg = std::string("unknown subcommand '") + argv[1] + "'";
+      if (hint.empty()) hint = " (gyrores --help lists them)";
+    }
     for (auto& ch : msg)
       if (ch == '\n') ch = ' ';
-    std::cerr << "gyrores: error: " << msg << "\n";
+    std::cerr << "gyrores: error: " << msg << hint << "\n";
     return exit_usage;
   }
   if (!execute) return 0;
