@@ -52,6 +52,11 @@ struct ratio_target {
   std::string suffix;
 };
 
+// The theorem's double row of a pair (the numerator or reference of most headlines).
+const measurement* theorem_row(const std::vector<measurement>& rows, const bench_pair& bp) {
+  return find_row(rows, "theorem_double", "double", bp.name);
+}
+
 template <class Describe>
 void add_ratios(headline& h, const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs,
                 const ratio_target& t, Describe describe) {
@@ -71,7 +76,7 @@ void add_ratios(headline& h, const std::vector<measurement>& rows, const std::ve
 std::string h1_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   std::vector<double> units, lattice;
   for (const auto& bp : pairs) {
-    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
+    const auto* e = theorem_row(rows, bp);
     const auto* o = find_row(rows, "one_eval", "double", bp.name);
     const auto* l = find_row(rows, "ref_lattice", "double", bp.name);
     if (e && o) units.push_back(paired_ratio(*e, *o));
@@ -92,10 +97,9 @@ std::string h1_remark(const std::vector<measurement>& rows, const std::vector<be
 headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"H1",
              "The theorem's r_res in double (theorem_minimum_double) costs at most 1.5x the paper's asymptotic "
-             "theta_asy alone, for every pair size",
-             {}, 0, 0, ""};
+             "theta_asy alone, for every pair size"};
   for (const auto& bp : pairs) {
-    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
+    const auto* e = theorem_row(rows, bp);
     const auto* t = find_row(rows, "theta_asy", "double", bp.name);
     if (!e) {
       if (t)
@@ -122,7 +126,7 @@ headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
 template <class Describe>
 headline ratio_headline(const char* id, const char* target, const std::vector<measurement>& rows,
                         const std::vector<bench_pair>& pairs, const ratio_target& t, Describe describe) {
-  headline h{id, target, {}, 0, 0, ""};
+  headline h{id, target};
   add_ratios(h, rows, pairs, t, describe);
   return h;
 }
@@ -155,10 +159,9 @@ const measurement* fastest_simulation(const std::vector<measurement>& rows, cons
 headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"H3",
              "Against time-domain simulation reaching 1e-8 relative error in r_res, the theorem in double "
-             "(theorem_minimum_double) is at least 1000x faster and reaches full precision",
-             {}, 0, 0, ""};
+             "(theorem_minimum_double) is at least 1000x faster and reaches full precision"};
   for (const auto& bp : pairs) {
-    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
+    const auto* e = theorem_row(rows, bp);
     if (!e) continue;
     bool any = false;
     const measurement* best = fastest_simulation(rows, bp.name, any);
@@ -226,8 +229,7 @@ std::string h5_remark(const std::vector<measurement>& rows, const std::vector<be
 headline h5(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"H5",
              "At 1000 and 10000 digits, the theorem's proved enclosures of theta and r_res (prove_minimum) take at "
-             "most 1.5x the time Arb takes to refine the root alone",
-             {}, 0, 0, ""};
+             "most 1.5x the time Arb takes to refine the root alone"};
   for (const char* prec : {"mp1000", "mp10000"})
     add_ratios(h, rows, pairs, {prec, "theorem_proved", "arb_newton", true, 1.5, std::string(" ") + prec},
                times_of("proved", "Arb"));
@@ -250,11 +252,10 @@ std::string with_digits(const std::string& label, const measurement& m) {
 headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"L1",
              "Exact double: gyrores' double path (theorem_minimum_double) takes at most 1.25x the plain "
-             "theorem-aware peer (peer_newton), for every pair",
-             {}, 0, 0, ""};
+             "theorem-aware peer (peer_newton), for every pair"};
   for (const auto& bp : pairs) {
     const auto* d = find_row(rows, "peer_newton", "double", bp.name);
-    const auto* e = find_row(rows, "theorem_double", "double", bp.name);
+    const auto* e = theorem_row(rows, bp);
     const auto* big = e ? nullptr : find_row(rows, "theorem_proved", "double", bp.name);
     if (!d || !(e || big)) continue;
     const measurement& n = e ? *e : *big;
@@ -287,8 +288,7 @@ std::string ratio_of(const std::vector<measurement>& rows, const std::string& nu
 headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
   headline h{"L2",
              "Certified: a certificate (certify_by_theorem, what `gyrores certify` computes) takes at most 1.3x the "
-             "Arb ball peer (peer_arb_ball), which proves and writes the same claims, at 30, 1000 and 10000 digits",
-             {}, 0, 0, ""};
+             "Arb ball peer (peer_arb_ball), which proves and writes the same claims, at 30, 1000 and 10000 digits"};
   for (const char* prec : {"mp30", "mp1000", "mp10000"})
     for (const auto& bp : pairs) {
       const auto* c = find_row(rows, "certificate", prec, bp.name);
