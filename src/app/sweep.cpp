@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <map>
-#include <mutex>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/files.hpp>
@@ -98,31 +96,20 @@ json run_sweep_in_memory(const sweep_in_memory_request& r) {
   const std::uint64_t total = sweep_total_pairs(cfg.min_order, cfg.max_order);
   sweep_accumulator acc;
   acc.max_examples = cfg.max_examples;
-  // The engine's blocks are evaluated on workers in any order; their rows wait here, by first
-  // index, until on_block takes them in enumeration order.
-  std::mutex mtx;
-  std::map<std::uint64_t, std::vector<sweep_row<double>>> pending;
   sweep_engine_options eo;
   eo.threads = r.threads;
   auto evaluate = [&](const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk) {
-    std::vector<sweep_row<double>> rows;
+    sweep_record rec;
     for (const auto& p : pairs) {
       auto row = sweep_evaluate<double>(p, cfg);
-      blk.summary.add(sweep_record_of(row, cfg.digits));
-      if (r.keep_rows) rows.push_back(std::move(row));
+      sweep_record_fill(rec, row, cfg.digits);
+      blk.summary.add(rec);
+      if (r.keep_rows) blk.kept.push_back(std::move(row));
     }
-    std::lock_guard<std::mutex> lk(mtx);
-    pending[blk.first] = std::move(rows);
   };
   auto on_block = [&](sweep_block& blk) {
     acc.merge(blk.summary);
-    std::vector<sweep_row<double>> rows;
-    {
-      std::lock_guard<std::mutex> lk(mtx);
-      rows = std::move(pending.at(blk.first));
-      pending.erase(blk.first);
-    }
-    if (r.on_block) r.on_block(rows, blk.first + blk.count, total);
+    if (r.on_block) r.on_block(blk.kept, blk.first + blk.count, total);
   };
   const auto t0 = std::chrono::steady_clock::now();
   sweep_run_blocks(cfg, eo, evaluate, on_block);

@@ -1,26 +1,21 @@
 // The enclosures of a sweep row, from the lattice theorem (proofs/lattice-theorem.md), and the
-// integer facts the checks rest on. `gyrores sweep --certified` decides its checks from them (a
+// integer facts the checks rest on: `gyrores sweep --certified` decides its checks from them (a
 // pass is a proof), and every row wider than double takes its values from them.
 //
 // sweep_prove_pair(p, opt) establishes, for one pair (amplitude v = 1):
-//  - R(pi/2) exactly: at theta = pi/2 the phases a pi/4 and b pi/4 are multiples of pi/4, so
-//    4 a^2 R(pi/2) is an integer (`quarter_R_scaled`), and its vanishing is decided exactly
-//    (P3 in docs/mathematics.md);
-//  - the minimisers' lobes (theorem/lobes.hpp, exact integers; the theorem's items 4 and 5) and
-//    m_min, which sweep_lobes_hold checks against the pair independently;
-//  - enclosures of r_res and theta_first (the theorem's prove_minimum, theorem/minimum.hpp),
-//    t_first = sqrt(tau sigma) theta_first, t_min_paper = pi/|n| and their ratio; and
-//    r_res^2 <= R(pi/2) decided against the exact integer;
-//  - for x < 1/2 and opt.asy, the paper's error in its lobe, its bound, ratio and constant
-//    (prove_paper_error, theorem/paper.hpp).
-// Precision: the enclosures start at opt.bits + 32 bits (opt.bits: the row's working precision;
-// with the asy error, 2 log2(a) + 8 more for all of them, whose difference d must be narrower
-// than 2^-(opt.bits + 8) relative). Every printed value's enclosure must round to one value at
-// opt.bits in the direction the row prints it (to nearest; the certified asy columns outward),
-// so that the row holds the exact values' roundings, whatever proved them; otherwise the
-// precision doubles, up to 8 times the start. Every
-// object carries its own precision (core/fixed_precision.hpp): nothing here reads or writes
-// Boost's process-wide default, so it runs on any number of threads.
+//  - 4 a^2 R(pi/2), an integer (the phases at theta = pi/2 are multiples of pi/4), so its
+//    vanishing is decided exactly (P3 in docs/mathematics.md);
+//  - the minimisers' lobes and m_min (theorem/lobes.hpp; the theorem's items 4 and 5), which
+//    sweep_lobes_hold checks against the pair independently;
+//  - enclosures of r_res and theta_first (prove_minimum, theorem/minimum.hpp), t_first,
+//    t_min_paper = pi/|n| and their ratio; and r_res^2 <= R(pi/2) against the exact integer;
+//  - for x < 1/2 and opt.asy, the paper's error, bound, ratio and constant (theorem/paper.hpp).
+// Precision: from opt.bits + 32 bits (with the asy error 2 log2(a) + 8 more, its d narrower than
+// 2^-(opt.bits + 8) relative), doubling up to 8 times the start (core/refine.hpp), until every
+// printed value's enclosure rounds to one value at opt.bits in the direction the row prints it
+// (to nearest; certified asy columns outward): the row then holds the exact values' roundings,
+// whatever proved them. Every object carries its own precision (core/fixed_precision.hpp), so
+// it runs on any number of threads.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -37,13 +32,11 @@
 
 namespace gyrores {
 
-// 4 a^2 R(pi/2) (v = 1) for a pair with order a and delta b (a > b >= 1, a = b mod 2), exactly
-// in I: int128 for every sweep order, int64 for orders below 2^28 (it is below 2^62 there). With
-// alpha = a pi/4, beta = b pi/4 (theta = pi/2): q = sqrt(1-x^2) sin alpha cos beta, q' = cos alpha
-// cos beta - x sin alpha sin beta (docs/mathematics.md §1), so 4 a^2 R = 4 (a^2 - b^2) (sA cB)^2 +
-// 4 (a cA cB - b sA sB)^2. For odd a (b odd too) every sine and cosine is +-1/sqrt(2), each
-// product is (+-1)/2; for even a they are 0 or +-1: sqrt(2) sin(k pi/4), sqrt(2) cos(k pi/4) for
-// odd k, sin, cos for even k, from k mod 8.
+// 4 a^2 R(pi/2) (v = 1) for order a and delta b (a > b >= 1, a = b mod 2), exactly in I: int128
+// for every sweep order, int64 below order 2^28. With alpha = a pi/4, beta = b pi/4
+// (docs/mathematics.md §1): 4 a^2 R = 4 (a^2 - b^2) (sA cB)^2 + 4 (a cA cB - b sA sB)^2. The
+// tables hold sqrt(2) sin(k pi/4), sqrt(2) cos(k pi/4) for odd k (odd a: each product is
+// (+-1)/2), sin, cos for even k (0 or +-1).
 template <class I = int128> I sweep_quarter_R_scaled(std::int64_t a, std::int64_t b) {
   static constexpr int sin_q[8] = {0, 1, 1, 1, 0, -1, -1, -1}, cos_q[8] = {1, 1, 0, -1, -1, -1, 0, 1};
   const int sa = sin_q[a & 7], ca = cos_q[a & 7], sb = sin_q[b & 7], cb = cos_q[b & 7];
@@ -83,8 +76,7 @@ struct sweep_proof_options {
   bool outward_asy = false; // the asy columns are printed outward (certified rows), not to nearest
 };
 
-// The minimum's enclosures, at `prec` bits.
-struct sweep_minimum_enclosure {
+struct sweep_minimum_enclosure {  // at `prec` bits
   explicit sweep_minimum_enclosure(mpfr_prec_t p)
       : prec(p), r_res(p), theta_first(p), t_first(p), t_min_paper(p), t_ratio(p) {}
   mpfr_prec_t prec;
@@ -105,8 +97,8 @@ struct sweep_proof {
 };
 
 // The proofs above for pair p (order <= 2^40). Throws only what the root solvers' double scouts
-// throw (compute_error, never for valid pairs); what is not proved within the precision limit
-// is left null and named in `note`.
+// throw (compute_error, never for valid pairs); what is not proved within the cap is left null
+// and named in `note`.
 sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, const sweep_proof_options& opt = {});
 
 }  // namespace gyrores

@@ -1,9 +1,7 @@
-// The checks a sweep runs on every pair, and the sweep's configuration.
-//
-// Each check tests one of the paper's claims per pair (docs/mathematics.md §2, §3); what each
-// one computes is in evaluate.hpp. A set of checks is a bit mask (bit i: check i), in the order
-// of the enum, which is also the order of the rows' check columns and of the summary's checks
-// (docs/formats.md). A sweep runs all four unless told otherwise.
+// The checks a sweep runs on every pair (the paper's claims, docs/mathematics.md §2, §3; what each
+// computes: evaluate.hpp), the sweep's configuration, and its number of pairs. A set of checks is
+// a bit mask in the enum's order, which is also the order of the rows' check columns and of the
+// summary's checks (docs/formats.md).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -16,17 +14,16 @@ enum class sweep_check : int { degeneracy = 0, paper_node = 1, asy_bound = 2, st
 inline constexpr int sweep_check_count = 4;
 using sweep_check_set = unsigned;  // bit i: check i
 inline constexpr sweep_check_set sweep_all_checks = (1u << sweep_check_count) - 1;
-// degeneracy, paper-node, asy-bound, structure: what a sweep checks unless told otherwise.
 inline constexpr sweep_check_set sweep_default_checks = sweep_all_checks;
 
-// The check's name as users type it ("paper-node"); i in [0, sweep_check_count), not checked.
+// The check's name as users type it ("paper-node") and its rows' column ("check_paper_node");
+// i in [0, sweep_check_count), not checked.
 const char* sweep_check_name(int i);
-// The name of the rows' column holding check i's pass/fail status ("check_paper_node").
 const char* sweep_check_column(int i);
 inline bool sweep_has_check(sweep_check_set s, sweep_check c) { return (s >> int(c)) & 1u; }
 
-// A comma-separated list of check names, "default" (sweep_default_checks) and "all" (every check);
-// usage_error names an unknown (or empty) one.
+// A comma-separated list of check names, "default" and "all"; usage_error names an unknown (or
+// empty) one.
 sweep_check_set sweep_parse_checks(const std::string& list);
 // The names of the checks in s, in check order.
 std::vector<std::string> sweep_check_names(sweep_check_set s);
@@ -44,14 +41,24 @@ struct sweep_config {
   unsigned digits = 17;          // significant digits of reals in rows when T is wider than double
                                  // (mpfr_real: also the working precision, digits + 8, sweep_bits)
   bool certified = false;        // decide the checks by exact integers and intervals (sweep/certified.hpp)
-  bool certified_filter = true;  // certified double rows: try the double-double balls first
-                                 // (sweep/filtered.hpp; the rows are the same either way; false
-                                 // only to test that)
+  bool certified_filter = true;  // certified double rows: the double-double balls first (the same
+                                 // rows; false only to test that)
   bool operator==(const sweep_config&) const = default;
 };
 
 // usage_error (naming the parameter) unless 3 <= max_order <= 2^40, min_order <= max_order and
 // 0 <= shard_index < shard_count.
 void sweep_validate(const sweep_config& c);
+
+// Orders up to this are counted (the sieve takes 4 bytes per order: 40 MB).
+inline constexpr std::int64_t sweep_count_limit = 10'000'000;
+
+// Number of pairs with min_order <= tau + sigma <= max_order, without enumerating them (for
+// progress, and for checking that each shard of a merge holds its share): the sum of phi(a)/2.
+// min_order below 3 counts as 3; 0 if max_order < min_order; usage_error beyond sweep_count_limit.
+std::uint64_t sweep_total_pairs(std::int64_t min_order, std::int64_t max_order);
+
+// Pairs of shard i of n (0 <= i < n, not checked): the positions p < total with p = i mod n.
+std::uint64_t sweep_shard_pairs(std::uint64_t total, std::int64_t i, std::int64_t n);
 
 }  // namespace gyrores

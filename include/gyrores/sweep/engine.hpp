@@ -1,13 +1,8 @@
-// The sweep engine: evaluates the pairs of one shard on worker threads and delivers the results
-// in enumeration order, so that every output is independent of the thread count.
-//
-// The calling thread enumerates nothing itself; `threads` workers take blocks of consecutive
-// pairs from the shared lazy enumeration (model/enumerate.hpp, sharded), evaluate them, and hand
-// back per-block results; the calling thread consumes the blocks strictly in enumeration order
-// (rows text, accumulator). A stop flag is honoured at block boundaries: blocks already taken are
-// finished and delivered, so the pairs done are always a prefix of the shard's enumeration, which
-// is what a resume state records (docs/formats.md). Every real type runs on every worker: a
-// row never reads or writes Boost's process-wide MPFR precision (evaluate.hpp).
+// The sweep engine: workers take blocks of consecutive pairs of one shard's enumeration
+// (model/enumerate.hpp) and evaluate them; the calling thread receives the blocks strictly in
+// enumeration order, so every output is independent of the thread count. A stop is honoured at
+// block boundaries, after the blocks already taken are delivered: the pairs done are always a
+// prefix of the enumeration, which is what a resume state records (docs/formats.md).
 #pragma once
 #include <atomic>
 #include <cstddef>
@@ -18,8 +13,6 @@
 
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/pair.hpp>
-#include <gyrores/sweep/checks.hpp>
-#include <gyrores/sweep/evaluate.hpp>
 #include <gyrores/sweep/summary.hpp>
 
 namespace gyrores {
@@ -29,6 +22,7 @@ struct sweep_block {
   std::uint64_t first = 0, count = 0;  // shard-relative index of the first pair, number of pairs
   sweep_accumulator summary;           // of this block alone
   std::string rows;                    // formatted rows (when a row formatter is given)
+  std::vector<sweep_row<double>> kept;  // rows held in memory (app::run_sweep_in_memory)
   sweep_pair_id last{0, 0};            // last pair of the block
 };
 
@@ -53,21 +47,19 @@ struct sweep_outcome {
 using sweep_block_evaluator =
     std::function<void(const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk)>;
 
-// The engine for any evaluation of pairs: the pairs of cfg's shard from index opt.start on, in
-// blocks of opt.block_size, evaluated by `evaluate` on opt.threads workers (0: every core) and
-// handed to on_block in enumeration order, on the calling thread. Returns when the shard is
-// exhausted, opt.max_pairs is reached, or *opt.stop is set (after finishing and delivering every
-// block already started). usage_error if cfg is invalid (sweep_validate). An exception thrown by
-// on_block or by `evaluate` stops the run and is rethrown here, after the workers have ended.
+// The pairs of cfg's shard from index opt.start on, evaluated by `evaluate` on the workers and
+// handed to on_block in enumeration order on the calling thread, until the shard is exhausted,
+// opt.max_pairs is reached or *opt.stop is set. usage_error if cfg is invalid (sweep_validate).
+// An exception from on_block or `evaluate` stops the run and is rethrown here, after the workers
+// have ended.
 sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_options& opt,
                                const sweep_block_evaluator& evaluate,
                                const std::function<void(sweep_block&)>& on_block);
 
-// sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (computation failures become
-// error rows, they do not stop the run); format_row, if set, appends a row's text to the
-// block's `rows` (it runs on the workers). Without rows (no format_row) a double sweep that is
-// not certified takes each pair's summary from the theorem's series form where that decides it
-// (src/lib/sweep/fast.cpp): the same summary, at a fraction of a row's cost.
+// sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (a failed pair is an error row,
+// not a stop); format_row, if set, appends a row's text to the block's `rows` on the workers.
+// Without rows a double sweep that is not certified takes each pair's summary from the theorem's
+// series form where that decides it (src/lib/sweep/fast.cpp): the same summary, far cheaper.
 template <class T>
 sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
                         const std::function<void(sweep_block&)>& on_block,

@@ -1,20 +1,10 @@
-// One pair of a sweep: the exact quantities and the checks of the paper's claims.
-//
-// Per pair (sweep_evaluate<T>, amplitude v = 1; r_res is linear in v), from the lattice theorem
-// (proofs/lattice-theorem.md) and nothing else:
-//  - the exact quantities r_res, theta_first, t_first, the minimisers' count; the paper's proxy
-//    t_min_paper = pi/|n| and t_first/t_min_paper (= theta_first b/pi):
-//      double rows (uncertified, order < 2^31): theorem_minimum_double (theorem/minimum.hpp),
-//      r_res, theta_first, t_first within one ulp, the paper's columns a few ulps;
-//      every other row (long double, float128, mpfr_real, --certified, and double beyond order
-//      2^31, where the int64 lobe arithmetic of theorem_minimum_double would overflow): the
-//      exact values rounded to T, from proved enclosures of sweep_prove_pair (sweep/certified.hpp:
-//      the theorem's prove_minimum) at the row's precision + 32 bits or more; certified double
-//      rows are first tried in the theorem's double-double balls (theorem/minimum_dd_ball.hpp),
-//      filtered (sweep/filtered.hpp): the same values where those decide. Nothing in a row reads
-//      or writes Boost's process-wide MPFR precision: an mpfr_real row value carries
-//      sweep_bits<mpfr_real>(cfg) bits of its own;
-//  - the checks named in sweep_config::checks (each pass, fail, or not applicable):
+// One pair of a sweep: its row, the exact quantities and the checks of the paper's claims, from
+// the lattice theorem (proofs/lattice-theorem.md) and nothing else (amplitude v = 1). Which
+// kernel gives a row's reals and how close they are: docs/formats.md, "Sweep rows" (double rows:
+// theorem_minimum_double; wider and certified rows: the enclosures of sweep_prove_pair,
+// sweep/certified.hpp, a certified double row first through the double-double balls,
+// sweep/filtered.hpp). No row reads or writes Boost's process-wide MPFR precision: an mpfr_real
+// value carries sweep_bits<mpfr_real>(cfg) bits of its own. The checks (each pass, fail, or n/a):
 //    degeneracy  (P3) R(pi/2) = 0 iff delta = 2 mod 4, with R(pi/2) the exact integer
 //                4 a^2 R(pi/2) of the model at theta = pi/2 (sweep_quarter_R_scaled), not the
 //                integer test delta mod 4 the library uses; and for non-degenerate pairs
@@ -23,24 +13,17 @@
 //                within 2^-40 of each other (a filtered predicate, sweep/filtered.hpp).
 //    paper-node  (P5, non-degenerate pairs) one of the global minimisers lies in the paper's lobe
 //                alpha = a theta/2 in (k pi - pi/2, k pi + pi/2), k = round(a/(2b)) (either k on
-//                a tie, b = 1): integers, the minimisers' lobes (theorem/lobes.hpp). The row also
-//                says whether the *first* minimiser is there (first_at_paper_node).
+//                a tie, b = 1): integers, the minimisers' lobes (theorem/lobes.hpp).
 //    asy-bound   (P7, pairs with x = b/a < 1/2) |theta_c - theta_asy| <= pi^3 x^2/a in the lobe
 //                k = round(a/(2b)) (the smaller k on a tie; the other is its mirror image);
-//                ratio = error/bound, constant = error a/x^2 (its sup over a sweep estimates the
-//                sharp constant). Double rows: d = u_c - u_asy by Newton's method on an equation
-//                without cancellation; other rows: the enclosures (both theorem/paper.hpp).
-//    structure   (docs/mathematics.md §3) the theorem's integer claims, checked
-//                (sweep_lobes_hold): 2 minimisers for delta odd, 4 for delta = 0 mod 4 (2 for
-//                degenerate pairs: pi/2, 3 pi/2), each lobe's frame satisfies its equation with
-//                |m| = m_min, and m_min = p.strand_offset_min() = min over N of |a - 4N|.
-//  With cfg.certified (`gyrores sweep --certified`) every row takes the enclosure path and the
-//  checks are decided by proofs (exact integers, MPFI): a pass is a proof. The asy columns then
-//  hold proved upper bounds (asy_bound a lower bound); a check that could not be decided (a
-//  resource limit) fails with "not proved" in the note.
-//  A pair whose computation throws (compute_error, usage_error, domain_error), or whose minimum
-//  was not proved within the precision limit, is an error row: counted and listed, never
-//  silently dropped.
+//                ratio = error/bound, constant = error a/x^2. Double rows: d = u_c - u_asy by
+//                Newton's method on an equation without cancellation; other rows: the
+//                enclosures (both theorem/paper.hpp).
+//    structure   (docs/mathematics.md §3) the theorem's integer claims (sweep_lobes_hold).
+// With cfg.certified every check is decided by proofs (exact integers, MPFI): a pass is a proof,
+// and one that could not be decided (a resource limit) fails with "not proved" in the note. A
+// pair whose computation throws, or whose minimum was not proved within the precision limit, is
+// an error row: counted and listed, never silently dropped.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -78,24 +61,20 @@ template <class T> struct sweep_row : sweep_row_info {
   T asy_error{}, asy_bound{}, asy_ratio{}, asy_constant{};
 };
 
-// The working precision of a sweep in T, in bits: the type's own, and for mpfr_real
-// cfg.digits + 8 decimal digits (Boost's digits-to-bits rule, as the run descriptions of
-// earlier versions named it).
+// The working precision of a sweep in T, in bits: the type's own; mpfr_real: cfg.digits + 8
+// decimal digits (Boost's digits-to-bits rule, as earlier run descriptions named it).
 template <class T> unsigned sweep_bits(const sweep_config& cfg) {
   if constexpr (is_mpfr_v<T>) return unsigned(boost::multiprecision::detail::digits10_2_2(cfg.digits + 8));
   else return unsigned(std::numeric_limits<T>::digits);
 }
-// The working type's name in run descriptions: "double", "long double", "float128",
-// "mpfr(B bits)".
+// The working type's name in run descriptions ("double", ..., "mpfr(B bits)").
 template <class T> std::string sweep_type_name(const sweep_config& cfg) {
   if constexpr (is_mpfr_v<T>) return "mpfr(" + std::to_string(sweep_bits<T>(cfg)) + " bits)";
   else return real_type_name<T>();
 }
 
-// Evaluate one pair into r (see the header comment), overwriting all of it: the same row as
-// sweep_evaluate<T>(p, cfg), without a new row per pair (the engine's workers reuse one).
-// Never throws for a computation that fails: the row is marked `failed` with the message in
-// `note`.
+// Pair p's row into r, all of it overwritten (the engine's workers reuse one row). Never throws
+// for a computation that fails: the row is marked `failed` with the message in `note`.
 template <class T> void sweep_evaluate_to(sweep_row<T>& r, const resonant_pair<std::int64_t>& p, const sweep_config& cfg);
 
 template <class T> sweep_row<T> sweep_evaluate(const resonant_pair<std::int64_t>& p, const sweep_config& cfg) {

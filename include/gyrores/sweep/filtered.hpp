@@ -1,17 +1,11 @@
-// A filtered evaluation, after CGAL's Filtered_predicate (Filtered_kernel/include/CGAL/
-// Filtered_predicate.h): a cheap filter that either decides, its result then the exact one
-// (proof_status proved, core/status.hpp), or says why not; and the exact evaluation, which always
-// decides and runs only when the filter did not. Written once for the sweep's three:
-//   certified double rows   the theorem's double-double balls, then its MPFI proof
-//                           (src/lib/sweep/certified_filter.cpp; off: --no-filter);
-//   P3 in double rows       r_res^2 <= R(pi/2) in double beyond a proved error band, then the
-//                           enclosure (src/lib/sweep/evaluate.cpp);
-//   sweeps without rows     a pair's summary from the theorem's series form
-//                           (theorem/minimum_series.hpp), then from its row (src/lib/sweep/fast.cpp).
-// The off switch (use_filter false) runs the exact evaluation alone: the same results, which the
-// tests compare. With GYRORES_FILTER_STATS set in the environment each filter counts its calls by
-// outcome (the status's reason) and prints the counts to stderr at exit: a diagnostic for tuning
-// a filter, which changes no result.
+// A filtered evaluation, after CGAL's Filtered_predicate: a cheap filter that either decides
+// (proof_status proved, core/status.hpp: its result is then the exact one) or says why not, and
+// the exact evaluation, run only when the filter did not decide. The sweep's three: certified
+// double rows (double-double balls, then MPFI; off: --no-filter), P3 in double rows (double
+// beyond a proved error band, then the enclosure) and sweeps without rows (the series form, then
+// the row). use_filter false runs the exact evaluation alone: the same results, which the tests
+// compare. With GYRORES_FILTER_STATS set each filter prints its outcome counts to stderr at exit
+// (a diagnostic for tuning a filter; no result changes).
 #pragma once
 #include <array>
 #include <atomic>
@@ -43,8 +37,8 @@ class filter_counts {
   std::array<std::atomic<std::uint64_t>, slots> count_{};
 };
 
-// filter(args...) -> proof_status, and exact(args...), which must give what a proved filter
-// gives (both write their result through the arguments).
+// filter(args...) -> proof_status and exact(args...) write their result through the arguments;
+// exact must give what a proved filter gives.
 template <class Filter, class Exact> struct filtered {
   filter_counts& counts;
   Filter filter;

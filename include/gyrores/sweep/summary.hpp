@@ -1,33 +1,37 @@
-// The summary of a sweep: what it keeps of each row (sweep_record), and the mergeable
-// accumulator with exact quantiles (docs/formats.md, sweep summary).
-//
-// The accumulator holds pairs, degenerate pairs, per check (pairs checked, violations, the first
-// `max_examples` violating pairs in enumeration order), errors, the largest asy ratio and the
-// largest constant error a/x^2 with their pairs (ties: the earlier pair), the number of
-// non-degenerate pairs whose first minimiser is in the paper's lobe, and every value of
-// t_first/(pi/|n|) over the non-degenerate pairs (degenerate pairs have exactly delta/2 there,
-// by Thm. degenerate, and are left out). The values are kept exactly, one double each, in memory
-// or (a long sweep: 10 GB at order 10^5) in files the io layer names (sweep/values.hpp), so the
-// quantiles are exact order statistics: q-quantile = sorted[floor(q (n-1))] (the median is the
-// lower median), found by radix selection in bounded memory. Accumulators merge exactly and in
-// any grouping: counts add, examples are re-sorted by enumeration order (order a, then sigma) and
-// cut, extremes compare by value then by enumeration order, values concatenate. Reals in the summary are doubles; with a
-// wider T each is first printed (sweep_real_text) and read back, the same path a merge of row
-// files takes, so single runs and merges agree bit for bit.
+// What a sweep's summary keeps of its rows (docs/formats.md, sweep summary): a mergeable
+// accumulator of counts, the first violating pairs, the extremes of the asy columns and every
+// t_first/(pi/|n|) for exact quantiles (values.hpp). Accumulators merge exactly in any grouping:
+// counts add, examples are re-sorted by enumeration order and cut, extremes compare by value then
+// by enumeration order, values concatenate. Reals are doubles; with a wider T each is first
+// printed as rows print it and read back, as a merge of row files does, so that single runs and
+// merges agree bit for bit.
 #pragma once
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include <gyrores/core/decimal.hpp>
 #include <gyrores/sweep/checks.hpp>
 #include <gyrores/sweep/evaluate.hpp>
-#include <gyrores/sweep/real_text.hpp>
 #include <gyrores/sweep/values.hpp>
 
 namespace gyrores {
+
+// Reals as rows and summaries print them: doubles in the shortest form that reads back exactly,
+// wider types with max(digits, 17) significant digits, correctly rounded (an mpfr_real from its
+// own bits, at its own precision).
+std::string sweep_double_text(double v);
+template <class T> std::string sweep_real_text(const T& v, unsigned digits) {
+  if constexpr (std::is_same_v<T, double>) return sweep_double_text(v);
+  else if constexpr (is_mpfr_v<T>) return format_scientific(v.backend().data(), digits < 17 ? 17 : digits);
+  else return format_scientific(real_to_mpfr(v), digits < 17 ? 17 : digits);
+}
+// Text to double, correctly rounded; compute_error on text that is not a whole real number.
+double sweep_text_double(const std::string& s);
 
 // What the summary needs of one row, in doubles (the merge of row files rebuilds exactly this).
 struct sweep_record {
@@ -43,21 +47,14 @@ struct sweep_record {
   std::string asy_ratio_text, asy_constant_text;  // empty for T = double (text = shortest form)
 };
 
-// What the summary keeps of row r, into s (all of it overwritten; s's strings keep their buffers,
-// so that a worker reusing one record allocates nothing per pair). Reals wider than double are
-// read back from their text (sweep_real_text at `digits`), as a merge of rows reads them.
+// What the summary keeps of row r, into s (all of it overwritten; its strings keep their buffers:
+// a worker reusing one record allocates nothing per pair).
 template <class T> void sweep_record_fill(sweep_record& s, const sweep_row<T>& r, unsigned digits);
 
-template <class T> sweep_record sweep_record_of(const sweep_row<T>& r, unsigned digits) {
-  sweep_record s;
-  sweep_record_fill(s, r, digits);
-  return s;
-}
-
 // Compiled once in src/lib/sweep/summary.cpp for the compiled reals (core/real.hpp).
-#define GYRORES_SWEEP_RECORD_INSTANCES(PREFIX, T)                                      \
-  PREFIX template void sweep_record_fill<T>(sweep_record&, const sweep_row<T>&, unsigned); \
-  PREFIX template sweep_record sweep_record_of<T>(const sweep_row<T>&, unsigned);
+#define GYRORES_SWEEP_RECORD_INSTANCES(PREFIX, T)                                          \
+  PREFIX template std::string sweep_real_text<T>(const T&, unsigned);                      \
+  PREFIX template void sweep_record_fill<T>(sweep_record&, const sweep_row<T>&, unsigned);
 GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_RECORD_INSTANCES, extern)
 
 using sweep_pair_id = std::pair<std::int64_t, std::int64_t>;  // (tau, sigma)
@@ -95,14 +92,12 @@ struct sweep_accumulator {
   std::array<sweep_tally, sweep_check_count> checks{};
   sweep_tally errors;  // checked = 0; violations = failed pairs
   sweep_extreme asy_ratio_max, sharp_constant;
-  sweep_values t_ratios;  // t_first/(pi/|n|), non-degenerate pairs (order irrelevant)
+  sweep_values t_ratios;  // t_first/(pi/|n|), non-degenerate pairs (degenerate: delta/2 exactly)
 
   void add(const sweep_record& r);
-  // Check i's verdict s on pair id (none: not checked), as add counts it.
-  void add_check(int i, sweep_status s, const sweep_pair_id& id);
   // Exact merge; the result does not depend on the grouping or order of merges.
   void merge(const sweep_accumulator& o);
-  // Exact order statistics of t_ratios (a few passes over them when they are many).
+  // q-quantile = sorted[floor(q (n-1))] of t_ratios (the median is the lower median).
   sweep_quantiles quantiles(const sweep_selection_options& opt = {}) const;
 };
 

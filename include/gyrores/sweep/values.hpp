@@ -1,22 +1,13 @@
-// The t_first/(pi/|n|) values of a sweep and their exact order statistics, in bounded memory.
-//
-// A sweep to order 10^5 has 1.27e9 non-degenerate pairs, one double each: 10 GB, too much to
-// hold, and an exact quantile cannot be had from a one-pass summary of the stream. So the values
-// are kept exactly but not necessarily in memory: a sweep_values holds some in memory and names
-// the rest by *sources*, callables that replay values kept elsewhere (the io layer's files,
-// io/sweep_values_file.hpp); this layer never touches a file.
-//
-// Order statistics are found by radix selection on the order-preserving 64-bit key of each
-// double (sweep_value_key): a pass over all values counts them by the top `bits` bits of the key
-// among the values that share the prefix found so far; the bucket holding the wanted rank
-// extends the prefix; once the candidates are few (at most `collect_limit`) they are collected
-// and the rank is picked by nth_element. With 20 bits a pass and ~10^9 values spread over a few
-// binades, that is two passes over the values; memory is ~8 MB per histogram plus the collected
-// candidates, whatever the count. All wanted ranks share each pass.
-//
-// The result is exactly the element sorted[rank] of the sorted values (the same as sorting
-// them all): keys order doubles as < does, -0 is stored as +0 (they compare equal, and the
-// printed quantile must not depend on which one a pair gave), NaNs sort after +inf.
+// The t_first/(pi/|n|) values of a sweep and their exact order statistics in bounded memory
+// (docs/formats.md, "Quantiles": 10 GB of them at order 10^5, and no one-pass summary of a stream
+// gives an exact quantile). A sweep_values holds some values in memory and names the rest by
+// *sources*, callables that replay values kept elsewhere (io/sweep_values_file.hpp); this layer
+// never touches a file. Radix selection on the order-preserving 64-bit key of each double: each
+// pass counts the values sharing the prefix found so far by their next `bits` key bits, the
+// bucket holding the wanted rank extends the prefix, and at most `collect_limit` candidates are
+// collected for nth_element; all ranks share each pass. The result is exactly sorted[rank]:
+// -0 is stored as +0 (the printed quantile must not depend on which one a pair gave), NaNs sort
+// after +inf.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -50,9 +41,8 @@ class sweep_values {
   void add(double v) { memory_.push_back(v == 0 ? 0.0 : v); }
   // Room for n more values in memory (a block knows how many it will add).
   void reserve(std::size_t n) { memory_.reserve(memory_.size() + n); }
-  // Every value: those in memory and those held by sources.
   std::uint64_t size() const { return elsewhere_ + memory_.size(); }
-  // The values in memory (the ones not handed to a source yet).
+  // The values not handed to a source yet.
   const std::vector<double>& memory() const { return memory_; }
   // The owner has stored the values in memory elsewhere (and will add a source for them). The
   // capacity stays: a sweep refills it block by block (8 MB at a time), and growing it again

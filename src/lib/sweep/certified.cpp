@@ -1,15 +1,16 @@
-// include/gyrores/sweep/certified.hpp: the enclosures of a sweep row, from the theorem's
-// prove_minimum (theorem/minimum.hpp) and the paper's error (theorem/paper.hpp) at an explicit
-// precision (the sweep runs them on several threads; Boost's MPFR wrappers keep one process-wide
-// default precision, so they are not used here).
+// include/gyrores/sweep/certified.hpp: the theorem's prove_minimum and prove_paper_error at an
+// explicit precision (Boost's MPFR wrappers keep one process-wide precision: not used here).
 #include <gyrores/sweep/certified.hpp>
 
 #include <mpfi.h>
 
 #include <bit>
 
+#include <gyrores/core/refine.hpp>
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/minimum.hpp>
+
+#include "row_parts.hpp"
 
 namespace gyrores {
 
@@ -66,8 +67,6 @@ bool prove_asy_at(paper_error_enclosure& E, const theorem_constants& K, std::int
          rounds_alike(E.constant, opt, up ? MPFR_RNDU : MPFR_RNDN);
 }
 
-void add_note(std::string& note, const std::string& what) { note += std::string(note.empty() ? "" : "; ") + what; }
-
 }  // namespace
 
 sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, const sweep_proof_options& opt) {
@@ -81,8 +80,10 @@ sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, const sweep_p
   // One precision for both (at sweep orders the extra bits of the asy error cost no more limbs).
   const mpfr_prec_t start = mpfr_prec_t(opt.bits) + 32 +
                             (pr.has_asy ? 2 * mpfr_prec_t(std::bit_width(std::uint64_t(a))) + 8 : 0);
-  auto done = [&] { return pr.minimum && (pr.asy || !pr.has_asy); };
-  for (mpfr_prec_t prec = start; prec <= 8 * start && !done(); prec *= 2) {
+  const precision_plan plan{start, 8 * start};
+  // The one precision loop, ended at its cap with what is proved (the rest named in the note: a
+  // row's error or a failed check, not an exception).
+  refine(plan, {}, "", [&](mpfr_prec_t prec, proof_status&) -> std::optional<bool> {
     theorem_constants K(prec);
     set_theorem_constants(K, pb);
     if (!pr.minimum) {
@@ -93,10 +94,12 @@ sweep_proof sweep_prove_pair(const resonant_pair<std::int64_t>& p, const sweep_p
       auto E = std::make_unique<paper_error_enclosure>(prec);
       if (prove_asy_at(*E, K, a, b, opt)) pr.asy = std::move(E);
     }
-  }
-  const std::string limit = std::to_string(8 * start) + " bits";
-  if (!pr.minimum) add_note(pr.note, "not proved: the bracket of u* was not decided within " + limit);
-  if (pr.has_asy && !pr.asy) add_note(pr.note, "not proved: the asy error was not enclosed within " + limit);
+    if ((pr.minimum && (pr.asy || !pr.has_asy)) || 2 * prec > plan.cap) return true;
+    return std::nullopt;
+  });
+  const std::string limit = std::to_string(plan.cap) + " bits";
+  if (!pr.minimum) sweep_rows::add_note(pr.note, "not proved: the bracket of u* was not decided within " + limit);
+  if (pr.has_asy && !pr.asy) sweep_rows::add_note(pr.note, "not proved: the asy error was not enclosed within " + limit);
   return pr;
 }
 

@@ -19,10 +19,10 @@
 
 namespace gyrores {
 
-// ---- the rounding of a value v known to lie in [A.m - A.r, B.m + B.r] (both ends positive) ----
-// With h = A.m.hi = B.m.hi and v = h + e, |e| small: v rounds to h (to nearest) iff e lies in
-// (-gb, ga), gb and ga half the spacings below and above h. Each comparison is of doubles: a
-// rounded sum c of two doubles is compared through c (1 - 2^-52), at most its exact value.
+// ---- the rounding of a value v known to lie in [X.m - X.r, X.m + X.r] (v > 0) ----
+// With h = X.m.hi and v = h + e, |e| small: v rounds to h (to nearest) iff e lies in (-gb, ga),
+// gb and ga half the spacings below and above h. Each comparison is of doubles: a rounded sum c
+// of two doubles is compared through c (1 - 2^-52), at most its exact value.
 namespace {
 struct spacing {
   double below, above;  // h - prev(h), next(h) - h (exact)
@@ -34,39 +34,39 @@ spacing spacing_of(double h) {  // h > 0 finite: its neighbours are the adjacent
 double at_most(double c) { return c * (1 - 0x1p-52); }
 }  // namespace
 
-bool sweep_testing::round_nearest(const dd_ball& A, const dd_ball& B, double& out) {
-  const double h = A.m.hi;
-  if (!(h > 0) || B.m.hi != h) return false;
+bool sweep_testing::round_nearest(const dd_ball& X, double& out) {
+  const double h = X.m.hi;
+  if (!(h > 0)) return false;
   const spacing g = spacing_of(h);
-  if (!(A.r < at_most(A.m.lo + g.below / 2)) || !(B.r < at_most(g.above / 2 - B.m.lo))) return false;
+  if (!(X.r < at_most(X.m.lo + g.below / 2)) || !(X.r < at_most(g.above / 2 - X.m.lo))) return false;
   out = h;
   return true;
 }
 // Upward: v in (h, next(h)] rounds to next(h), v in (prev(h), h] to h.
-bool sweep_testing::round_up(const dd_ball& A, const dd_ball& B, double& out) {
-  const double h = A.m.hi;
-  if (!(h > 0) || B.m.hi != h) return false;
+bool sweep_testing::round_up(const dd_ball& X, double& out) {
+  const double h = X.m.hi;
+  if (!(h > 0)) return false;
   const spacing g = spacing_of(h);
-  if (A.r < A.m.lo && B.r < at_most(g.above - B.m.lo)) {
+  if (X.r < X.m.lo && X.r < at_most(g.above - X.m.lo)) {
     out = h + g.above;
     return true;
   }
-  if (B.r <= -B.m.lo && A.r < at_most(A.m.lo + g.below)) {
+  if (X.r <= -X.m.lo && X.r < at_most(X.m.lo + g.below)) {
     out = h;
     return true;
   }
   return false;
 }
 // Downward: v in [h, next(h)) rounds to h, v in [prev(h), h) to prev(h).
-bool sweep_testing::round_down(const dd_ball& A, const dd_ball& B, double& out) {
-  const double h = A.m.hi;
-  if (!(h > 0) || B.m.hi != h) return false;
+bool sweep_testing::round_down(const dd_ball& X, double& out) {
+  const double h = X.m.hi;
+  if (!(h > 0)) return false;
   const spacing g = spacing_of(h);
-  if (A.r <= A.m.lo && B.r < at_most(g.above - B.m.lo)) {
+  if (X.r <= X.m.lo && X.r < at_most(g.above - X.m.lo)) {
     out = h;
     return true;
   }
-  if (B.r < -B.m.lo && A.r < at_most(A.m.lo + g.below)) {
+  if (X.r < -X.m.lo && X.r < at_most(X.m.lo + g.below)) {
     out = h - g.below;
     return true;
   }
@@ -79,11 +79,6 @@ namespace {
 using sweep_testing::round_down;
 using sweep_testing::round_nearest;
 using sweep_testing::round_up;
-
-// The double nearest every value of the ball X (X's value > 0), upward, downward.
-bool nearest(const dd_ball& X, double& out) { return round_nearest(X, X, out); }
-bool upward(const dd_ball& X, double& out) { return round_up(X, X, out); }
-bool downward(const dd_ball& X, double& out) { return round_down(X, X, out); }
 
 // The minimisers' lobes (theorem/lobes.hpp): minimiser_lobes_euclid's machine-integer Euclid
 // gives minimiser_lobes's list (that header's comment; tests/test_double_double.cpp compares
@@ -106,14 +101,14 @@ const proof_status undecided_rounding = proof_status::undecided("a rounding to d
 proof_status asy_columns(sweep_row<double>& r, const dd_ball_constants& K, std::int64_t am) {
   paper_error_dd_ball E;
   GYRORES_TRY_PROOF(prove_paper_error_dd_ball(E, K, am));
-  if (!downward(E.bound, r.asy_bound)) return undecided_rounding;
+  if (!round_down(E.bound, r.asy_bound)) return undecided_rounding;
   if (am == 0) {  // s = 0: u_c = u_a = 0, every column 0; as the fallback prints the upper end of
     // MPFI's [0, 0], which MPFI holds as [+0, -0]: "-0"
     r.asy_error = r.asy_ratio = r.asy_constant = -0.0;
     return proof_status::proved();
   }
   if (!ddb::negative(ddb::sub(E.ratio, ddb::exact(1.0)))) return proof_status::undecided("asy ratio < 1");
-  if (!upward(E.error, r.asy_error) || !upward(E.ratio, r.asy_ratio) || !upward(E.constant, r.asy_constant))
+  if (!round_up(E.error, r.asy_error) || !round_up(E.ratio, r.asy_ratio) || !round_up(E.constant, r.asy_constant))
     return undecided_rounding;
   return proof_status::proved();
 }
@@ -130,9 +125,9 @@ proof_status certified_filter_row(sweep_row<double>& row, const resonant_pair<st
   GYRORES_TRY_PROOF(prove_minimum_dd_ball(M, K, m_min, lobes.front()));
   sweep_row<double> r = row;  // filled here, handed back only if all of it is proved
   const bool degenerate = m_min == 0;
-  if (!nearest(M.t_min_paper, r.t_min_paper) || !nearest(M.theta_first, r.theta_first) ||
-      !nearest(M.t_first, r.t_first) || (!degenerate && !nearest(M.r_res, r.r_res)) ||
-      (!degenerate && !nearest(M.t_ratio, r.t_ratio)))
+  if (!round_nearest(M.t_min_paper, r.t_min_paper) || !round_nearest(M.theta_first, r.theta_first) ||
+      !round_nearest(M.t_first, r.t_first) || (!degenerate && !round_nearest(M.r_res, r.r_res)) ||
+      (!degenerate && !round_nearest(M.t_ratio, r.t_ratio)))
     return undecided_rounding;
   row_facts<int128> f;
   f.quarter_R_scaled = sweep_quarter_R_scaled(a, b);

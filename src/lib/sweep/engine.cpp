@@ -109,16 +109,113 @@ class block_pipeline {
         it_(cfg.min_order, cfg.max_order, cfg.shard_index, cfg.shard_count),
         limit_(opt.max_pairs ? opt.start + opt.max_pairs : std::numeric_limits<std::uint64_t>::max()) {}
 
-  sweep_outcome run(const std::function<void(sweep_block&)>& on_block);
+  sweep_outcome run(const std::function<void(sweep_block&)>& on_block) {
+    // Resume: step over the pairs done before (nothing runs concurrently yet).
+    while (taken_ < opt_.start && !it_.done()) {
+      it_.next();
+      ++taken_;
+    }
+    exhausted_ = it_.done();
+    std::uint64_t done = taken_;  // before the workers start taking
+    active_ = threads_;
+    std::vector<std::thread> pool;
+    pool.reserve(threads_);
+    for (unsigned i = 0; i < threads_; ++i) pool.emplace_back([this] { worker(); });
+    sweep_block blk;
+    while (next_in_order(blk)) {
+      try {
+        done = blk.first + blk.count;
+        on_block(blk);
+      } catch (...) {
+        fail(std::current_exception());
+        break;
+      }
+    }
+    for (auto& t : pool) t.join();
+    if (failure_) std::rethrow_exception(failure_);
+    return {done, it_.done() && done == taken_, threads_};
+  }
 
  private:
-  void skip_to_start();
   bool stop_requested() const { return opt_.stop && opt_.stop->load(std::memory_order_relaxed); }
-  bool take_block(std::vector<std::pair<std::int64_t, std::int64_t>>& raw, std::uint64_t& id, std::uint64_t& first);
-  sweep_block evaluate_block(const std::vector<pair64>& pairs, std::uint64_t first) const;
-  void worker();
-  bool next_in_order(sweep_block& blk);
-  void fail(std::exception_ptr e);
+
+  // Under mtx_: the next block's pairs as (a, sigma), its id and first index; false when no more
+  // work is wanted. The pairs themselves are built by the worker, outside the lock.
+  bool take_block(std::vector<std::pair<std::int64_t, std::int64_t>>& raw, std::uint64_t& id, std::uint64_t& first) {
+    if (abort_ || exhausted_ || taken_ >= limit_ || stop_requested()) return false;
+    raw.clear();
+    first = taken_;
+    while (raw.size() < block_size_ && taken_ < limit_ && !it_.done()) {
+      raw.emplace_back(it_.order(), it_.sigma());
+      it_.next();
+      ++taken_;
+    }
+    if (it_.done()) exhausted_ = true;
+    id = next_id_++;
+    return true;
+  }
+
+  void fail(std::exception_ptr e) {
+    std::lock_guard<std::mutex> lk(mtx_);
+    if (!failure_) failure_ = e;
+    abort_ = true;
+    cv_work_.notify_all();
+    cv_done_.notify_all();
+  }
+
+  void worker() {
+    std::vector<std::pair<std::int64_t, std::int64_t>> raw;
+    std::vector<pair64> pairs;
+    raw.reserve(block_size_);
+    pairs.reserve(block_size_);
+    for (;;) {
+      std::uint64_t id = 0, first = 0;
+      {
+        std::unique_lock<std::mutex> lk(mtx_);
+        cv_work_.wait(lk, [&] { return abort_ || next_id_ < next_write_ + window_; });
+        if (!take_block(raw, id, first)) break;
+      }
+      sweep_block blk;
+      try {
+        pairs.clear();
+        for (const auto& [a, s] : raw) pairs.emplace_back(a - s, s, known_coprime);  // from pair_stream's table
+        blk.first = first;
+        blk.count = pairs.size();
+        blk.summary.max_examples = cfg_.max_examples;
+        evaluate_(pairs, blk);
+        if (!pairs.empty()) blk.last = {pairs.back().tau(), pairs.back().sigma()};
+      } catch (...) {
+        fail(std::current_exception());
+        break;
+      }
+      {
+        std::lock_guard<std::mutex> lk(mtx_);
+        ready_.emplace(id, std::move(blk));
+      }
+      cv_done_.notify_all();
+    }
+    release_thread_caches();  // the certified checks and MPFR rows use MPFR and Arb on this thread
+    std::lock_guard<std::mutex> lk(mtx_);
+    --active_;
+    cv_done_.notify_all();
+  }
+
+  // The next block in enumeration order; false when the run is over (aborted, or every worker has
+  // ended and every block has been delivered).
+  bool next_in_order(sweep_block& blk) {
+    {
+      std::unique_lock<std::mutex> lk(mtx_);
+      cv_done_.wait(lk, [&] { return abort_ || ready_.count(next_write_) || (active_ == 0 && next_write_ == next_id_); });
+      if (abort_) return false;
+      auto f = ready_.find(next_write_);
+      if (f == ready_.end()) return false;
+      blk = std::move(f->second);
+      ready_.erase(f);
+      ++next_write_;
+    }
+    cv_work_.notify_all();
+    return true;
+  }
 
   const sweep_config& cfg_;
   const sweep_engine_options& opt_;
@@ -141,134 +238,13 @@ class block_pipeline {
   std::exception_ptr failure_;
 };
 
-// Resume: step over the pairs done before (nothing runs concurrently yet).
-void block_pipeline::skip_to_start() {
-  while (taken_ < opt_.start && !it_.done()) {
-    it_.next();
-    ++taken_;
-  }
-  exhausted_ = it_.done();
-}
-
-// Under mtx_: the next block's pairs as (a, sigma), its id and first index; false when no more
-// work is wanted. The pairs themselves are built by the worker, outside the lock.
-bool block_pipeline::take_block(std::vector<std::pair<std::int64_t, std::int64_t>>& raw, std::uint64_t& id,
-                                std::uint64_t& first) {
-  if (abort_ || exhausted_ || taken_ >= limit_ || stop_requested()) return false;
-  raw.clear();
-  first = taken_;
-  while (raw.size() < block_size_ && taken_ < limit_ && !it_.done()) {
-    raw.emplace_back(it_.order(), it_.sigma());
-    it_.next();
-    ++taken_;
-  }
-  if (it_.done()) exhausted_ = true;
-  id = next_id_++;
-  return true;
-}
-
-sweep_block block_pipeline::evaluate_block(const std::vector<pair64>& pairs, std::uint64_t first) const {
-  sweep_block blk;
-  blk.first = first;
-  blk.count = pairs.size();
-  blk.summary.max_examples = cfg_.max_examples;
-  evaluate_(pairs, blk);
-  if (!pairs.empty()) blk.last = {pairs.back().tau(), pairs.back().sigma()};
-  return blk;
-}
-
-void block_pipeline::fail(std::exception_ptr e) {
-  std::lock_guard<std::mutex> lk(mtx_);
-  if (!failure_) failure_ = e;
-  abort_ = true;
-  cv_work_.notify_all();
-  cv_done_.notify_all();
-}
-
-void block_pipeline::worker() {
-  std::vector<std::pair<std::int64_t, std::int64_t>> raw;
-  std::vector<pair64> pairs;
-  raw.reserve(block_size_);
-  pairs.reserve(block_size_);
-  for (;;) {
-    std::uint64_t id = 0, first = 0;
-    {
-      std::unique_lock<std::mutex> lk(mtx_);
-      cv_work_.wait(lk, [&] { return abort_ || next_id_ < next_write_ + window_; });
-      if (!take_block(raw, id, first)) break;
-    }
-    sweep_block blk;
-    try {
-      pairs.clear();
-      for (const auto& [a, s] : raw) pairs.emplace_back(a - s, s, known_coprime);  // from pair_stream's table
-      blk = evaluate_block(pairs, first);
-    } catch (...) {
-      fail(std::current_exception());
-      break;
-    }
-    {
-      std::lock_guard<std::mutex> lk(mtx_);
-      ready_.emplace(id, std::move(blk));
-    }
-    cv_done_.notify_all();
-  }
-  release_thread_caches();  // the certified checks and MPFR rows use MPFR and Arb on this thread
-  std::lock_guard<std::mutex> lk(mtx_);
-  --active_;
-  cv_done_.notify_all();
-}
-
-// The next block in enumeration order; false when the run is over (aborted, or every worker has
-// ended and every block has been delivered).
-bool block_pipeline::next_in_order(sweep_block& blk) {
-  {
-    std::unique_lock<std::mutex> lk(mtx_);
-    cv_done_.wait(lk, [&] { return abort_ || ready_.count(next_write_) || (active_ == 0 && next_write_ == next_id_); });
-    if (abort_) return false;
-    auto f = ready_.find(next_write_);
-    if (f == ready_.end()) return false;
-    blk = std::move(f->second);
-    ready_.erase(f);
-    ++next_write_;
-  }
-  cv_work_.notify_all();
-  return true;
-}
-
-sweep_outcome block_pipeline::run(const std::function<void(sweep_block&)>& on_block) {
-  skip_to_start();
-  std::uint64_t done = taken_;  // before the workers start taking
-  active_ = threads_;
-  std::vector<std::thread> pool;
-  pool.reserve(threads_);
-  for (unsigned i = 0; i < threads_; ++i) pool.emplace_back([this] { worker(); });
-  sweep_block blk;
-  while (next_in_order(blk)) {
-    try {
-      done = blk.first + blk.count;
-      on_block(blk);
-    } catch (...) {
-      fail(std::current_exception());
-      break;
-    }
-  }
-  for (auto& t : pool) t.join();
-  if (failure_) std::rethrow_exception(failure_);
-  sweep_outcome out;
-  out.done = done;
-  out.complete = it_.done() && done == taken_;
-  out.threads = threads_;
-  return out;
-}
-
 }  // namespace
 
 sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_options& opt,
                                const sweep_block_evaluator& evaluate,
                                const std::function<void(sweep_block&)>& on_block) {
   sweep_validate(cfg);
-  block_pipeline pipeline(cfg, opt, evaluate);
-  return pipeline.run(on_block);
+  return block_pipeline(cfg, opt, evaluate).run(on_block);
 }
 
 template <class T>
@@ -292,7 +268,7 @@ sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt
       }
     }
     // One row and one record for the whole block, overwritten pair by pair: no allocation per
-    // pair (they are the same values as sweep_evaluate's and sweep_record_of's).
+    // pair (the same values as sweep_evaluate's).
     sweep_row<T> row;
     sweep_record rec;
     for (const auto& p : pairs) {

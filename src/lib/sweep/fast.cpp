@@ -1,22 +1,13 @@
-// The sweeps that write no rows (double, not --certified): a pair's contribution to the summary
-// from the theorem's series form (theorem/minimum_series.hpp), filtered (sweep/filtered.hpp)
-// before the pair's row.
-//
-// Without rows, what a pair's values feed is the summary (sweep/summary.hpp): the checks'
-// verdicts, which must stay exact, and three computed (not proved) values: t_first/(pi/|n|)
-// for the quantiles, and the asy ratio and constant, whose largest values are printed. So the
-// filter forms the pair's record (what the summary keeps of a row):
-//  - every verdict from facts cheaper than the row's values: exact integers (the lobes,
-//    paper-node, structure, R(pi/2)) and proved inequalities (P3, asy-bound) that are far from
-//    tight for the pairs taken here (argued below);
-//  - t_first/(pi/|n|) from u*'s series, theta_first within about an ulp of the exact value as
-//    the row's is (so the quantiles agree with a run that writes rows except, rarely, in their
-//    last digit: a value within an ulp of a rounding boundary);
-//  - the asy ratio and constant (the row's own function, bit for bit) only for the pairs whose
-//    proved upper bound on them reaches the largest constant already computed in this run: the
-//    others cannot change either maximum (their record says has_asy = false: values not formed).
-// A pair not decided this way (small delta, a failure of P3 or structure, a bound that does not
-// decide) takes the row's way, so its contribution, failures included, is exactly the row's.
+// The sweeps that write no rows (double, not --certified; docs/formats.md, "Without rows"): a
+// pair's record (what the summary keeps of a row) from the theorem's series form
+// (theorem/minimum_series.hpp), filtered (sweep/filtered.hpp) before the pair's row. The record
+// needs the checks' verdicts, which must stay exact, and three computed values, so the filter
+// forms every verdict from exact integers and from proved inequalities far from tight here
+// (argued below), t_first/(pi/|n|) from u*'s series (within about an ulp, as the row's), and the
+// asy ratio and constant (the row's own function) only where a proved bound says they could
+// reach the largest constant already computed (the others cannot change either maximum: their
+// record has has_asy = false). Any pair not decided this way takes the row's way, so its
+// contribution, failures included, is exactly the row's.
 #include <array>
 #include <cmath>
 #include <numbers>

@@ -1,7 +1,6 @@
-// What the sweep's sources share of a row (private to src/lib/sweep/; the tests' view of it is
-// include/gyrores/sweep/testing.hpp): the facts a row's checks are decided from, whichever path
-// established them, and the paths that evaluate.cpp's sweep_evaluate_to and engine.cpp's
-// sweeps without rows choose between.
+// What the sweep's sources share of a row (private to src/lib/sweep/): the facts a row's checks
+// are decided from, whichever path established them, and the paths between which evaluate.cpp
+// and engine.cpp choose.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -13,10 +12,8 @@
 #include <gyrores/core/status.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/model/resonant.hpp>
-#include <gyrores/sweep/engine.hpp>
 #include <gyrores/sweep/certified.hpp>
-#include <gyrores/sweep/evaluate.hpp>
-#include <gyrores/sweep/summary.hpp>
+#include <gyrores/sweep/engine.hpp>
 #include <gyrores/theorem/lobes.hpp>
 
 namespace gyrores::sweep_rows {
@@ -41,8 +38,7 @@ void fail_note(sweep_row_info& r, sweep_check c, const int128& quarter_R_scaled)
 void add_note(std::string& note, const std::string& what);
 
 // Every field of row r but the reals, from f (the checks of sweep/evaluate.hpp); or of a record
-// r (sweep/summary.hpp: what the summary keeps of a row, where the sweeps without rows write
-// directly, src/lib/sweep/fast.cpp). Inline: those run it for every pair.
+// r (the sweeps without rows, fast.cpp). Inline: it runs for every pair.
 template <class R, class L>
 inline void checks_from_facts(R& r, const resonant_pair<std::int64_t>& p, const row_facts<L>& f, const sweep_config& cfg) {
   constexpr bool row = std::is_base_of_v<sweep_row_info, R>;  // else a record: no notes or counts

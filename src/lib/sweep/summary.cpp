@@ -1,11 +1,28 @@
-// include/gyrores/sweep/summary.hpp: the mergeable accumulator and its exact quantiles.
+// include/gyrores/sweep/summary.hpp: reals as text, the mergeable accumulator, its quantiles.
 #include <gyrores/sweep/summary.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <type_traits>
+#include <cstdlib>
+
+#include <gyrores/core/error.hpp>
 
 namespace gyrores {
+
+std::string sweep_double_text(double v) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+double sweep_text_double(const std::string& s) {
+  char* end = nullptr;
+  double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end != s.c_str() + s.size()) throw compute_error("not a real number: '" + s + "'");
+  return v;
+}
+
 namespace {
 
 // Keeps the k earliest examples; input may come out of order (merging shards).
@@ -95,21 +112,19 @@ void sweep_accumulator::add(const sweep_record& r) {
     add_example(errors, id, max_examples);
     return;
   }
-  for (int i = 0; i < sweep_check_count; ++i) add_check(i, r.status[i], id);
+  for (int i = 0; i < sweep_check_count; ++i) {
+    if (r.status[i] == sweep_status::none) continue;
+    ++checks[i].checked;
+    if (r.status[i] == sweep_status::fail) {
+      ++checks[i].violations;
+      add_example(checks[i], id, max_examples);
+    }
+  }
   if (r.first_at_paper_node == 1) ++first_at_paper_node;
   if (r.has_ratio) t_ratios.add(r.t_ratio);
   if (r.has_asy) {
     asy_ratio_max.offer(r.asy_ratio, r.asy_ratio_text, id);
     sharp_constant.offer(r.asy_constant, r.asy_constant_text, id);
-  }
-}
-
-void sweep_accumulator::add_check(int i, sweep_status s, const sweep_pair_id& id) {
-  if (s == sweep_status::none) return;
-  ++checks[i].checked;
-  if (s == sweep_status::fail) {
-    ++checks[i].violations;
-    add_example(checks[i], id, max_examples);
   }
 }
 
@@ -129,21 +144,11 @@ sweep_quantiles sweep_accumulator::quantiles(const sweep_selection_options& opt)
   const std::uint64_t n = t_ratios.size();
   q.count = n;
   if (n == 0) return q;
-  const std::vector<std::uint64_t> ranks = {0,
-                                            quantile_rank(n, 1, 100),
-                                            quantile_rank(n, 10, 100),
-                                            quantile_rank(n, 1, 2),
-                                            quantile_rank(n, 90, 100),
-                                            quantile_rank(n, 99, 100),
-                                            n - 1};
+  std::vector<std::uint64_t> ranks;
+  for (std::uint64_t percent : {0, 1, 10, 50, 90, 99, 100}) ranks.push_back(quantile_rank(n, percent, 100));
   const auto v = sweep_order_statistics([this](const sweep_value_sink& s) { t_ratios.replay(s); }, n, ranks, opt);
-  q.min = v[0];
-  q.p01 = v[1];
-  q.p10 = v[2];
-  q.median = v[3];
-  q.p90 = v[4];
-  q.p99 = v[5];
-  q.max = v[6];
+  double* out[] = {&q.min, &q.p01, &q.p10, &q.median, &q.p90, &q.p99, &q.max};
+  for (std::size_t i = 0; i < v.size(); ++i) *out[i] = v[i];
   return q;
 }
 

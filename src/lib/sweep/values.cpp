@@ -6,7 +6,6 @@
 #include <cstring>
 #include <map>
 #include <string>
-#include <utility>
 
 #include <gyrores/core/error.hpp>
 
@@ -43,17 +42,20 @@ void sweep_values::replay(const sweep_value_sink& sink) const {
 
 namespace {
 
-// One wanted rank, narrowed pass by pass: the values whose key starts with `prefix` (its top
-// `fixed` bits) number `within`, and the wanted one is the `rank`-th of them.
+// One wanted rank, narrowed pass by pass: the values whose key starts with `prefix` (its top F
+// bits; every unfinished target has gained the same bits on every pass) number `within`, and the
+// wanted one is the `rank`-th of them.
 struct target {
   std::uint64_t rank = 0, prefix = 0, within = 0;
-  unsigned fixed = 0;
   bool done = false;
   double value = 0;
 };
 
-// Targets with one prefix are served by one histogram or one candidate list.
-using group_id = std::pair<unsigned, std::uint64_t>;  // (fixed, prefix)
+// The values of one prefix in a pass: counted by their next bits, or (few) collected.
+struct group {
+  bool collect = false;
+  std::vector<std::uint64_t> hist, keys;
+};
 
 }  // namespace
 
@@ -66,76 +68,45 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
     if (r >= count)
       throw std::invalid_argument("sweep_order_statistics: rank " + std::to_string(r) + " of " + std::to_string(count) +
                                   " values");
-    targets.push_back({r, 0, count, 0, false, 0});
+    targets.push_back({r, 0, count, false, 0});
   }
-  for (;;) {
-    // This pass: a histogram of the next bits for each prefix with too many values, the values
-    // themselves for the others.
-    std::map<group_id, std::vector<std::uint64_t>> histograms, candidates;
-    for (auto& t : targets) {
-      if (t.done) continue;
-      const group_id g{t.fixed, t.prefix};
-      if (t.within <= opt.collect_limit) candidates[g];
-      else histograms.try_emplace(g, std::size_t(1) << std::min(opt.bits, 64 - t.fixed), 0);
-    }
-    if (histograms.empty() && candidates.empty()) break;
-    // Every unfinished target has gained the same bits on every pass, so the groups of a pass
-    // share `fixed` (F): a value belongs to the group whose prefix is its top F bits, found by
-    // one shift and a scan of the few groups (at most one per rank), in prefix order.
-    const unsigned F = (histograms.empty() ? candidates.begin()->first : histograms.begin()->first).first;
-    struct slot {
-      std::uint64_t prefix;
-      std::uint64_t* hist;             // counters by the next b bits, or
-      std::vector<std::uint64_t>* keys;  // the candidates themselves
-    };
-    std::vector<slot> slots;
-    for (auto& [g, h] : histograms) slots.push_back({g.second, h.data(), nullptr});
-    for (auto& [g, c] : candidates) slots.push_back({g.second, nullptr, &c});
-    for (const auto& g : histograms) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
-    for (const auto& g : candidates) if (g.first.first != F) throw compute_error("sweep quantiles: targets out of step");
-    std::sort(slots.begin(), slots.end(), [](const slot& x, const slot& y) { return x.prefix < y.prefix; });
+  for (unsigned F = 0;; F += std::min(opt.bits, 64 - F)) {
     const unsigned nb = std::min(opt.bits, 64 - F);  // the bits this pass resolves
-    // For a short prefix (F <= 24: the second pass), the slot of each prefix by one table
-    // look-up instead of a scan of the slots (a mispredicted branch per value; at order 10^5
-    // this pass reads 1.27e9 values).
+    std::map<std::uint64_t, group> groups;            // by prefix, at most one per rank
+    for (const auto& t : targets) {
+      if (t.done) continue;
+      group& g = groups[t.prefix];
+      g.collect = t.within <= opt.collect_limit;  // the same for every target of a prefix
+      if (!g.collect && g.hist.empty()) g.hist.assign(std::size_t(1) << nb, 0);
+    }
+    if (groups.empty()) break;
+    std::vector<std::uint64_t> prefixes;
+    std::vector<group*> slots;
+    for (auto& [prefix, g] : groups) {
+      prefixes.push_back(prefix);
+      slots.push_back(&g);
+    }
+    // For a short prefix (F <= 24: the first two passes), the group of a value by one table
+    // look-up instead of a search of the groups (a mispredicted branch per value; at order 10^5
+    // such a pass reads 1.27e9 values). (k >> 1) >> (63 - F): the top F bits, none for F = 0.
     std::vector<unsigned char> slot_of;
-    if (F > 0 && F <= 24 && slots.size() < 255) {
+    if (F <= 24 && slots.size() < 255) {
       slot_of.assign(std::size_t(1) << F, 255);
-      for (std::size_t j = 0; j < slots.size(); ++j) slot_of[std::size_t(slots[j].prefix)] = static_cast<unsigned char>(j);
+      for (std::size_t j = 0; j < slots.size(); ++j) slot_of[std::size_t(prefixes[j])] = static_cast<unsigned char>(j);
     }
     std::uint64_t seen = 0;
     replay([&](const double* v, std::size_t n) {
       seen += n;
-      if (F == 0) {  // one group: every value
-        const slot& s = slots.front();
-        if (s.hist) {
-          for (std::size_t i = 0; i < n; ++i) ++s.hist[std::size_t(sweep_value_key(v[i] == 0 ? 0.0 : v[i]) >> (64 - nb))];
-        } else {
-          for (std::size_t i = 0; i < n; ++i) s.keys->push_back(sweep_value_key(v[i] == 0 ? 0.0 : v[i]));
-        }
-        return;
-      }
-      if (!slot_of.empty()) {
-        for (std::size_t i = 0; i < n; ++i) {
-          const std::uint64_t k = sweep_value_key(v[i] == 0 ? 0.0 : v[i]);
-          const unsigned j = slot_of[std::size_t(k >> (64 - F))];
-          if (j == 255) continue;
-          const slot& s = slots[j];
-          if (s.hist) ++s.hist[std::size_t((k << F) >> (64 - nb))];
-          else s.keys->push_back(k);
-        }
-        return;
-      }
       for (std::size_t i = 0; i < n; ++i) {
-        const std::uint64_t k = sweep_value_key(v[i] == 0 ? 0.0 : v[i]), top = k >> (64 - F);
-        for (const slot& s : slots) {
-          if (s.prefix < top) continue;
-          if (s.prefix == top) {
-            if (s.hist) ++s.hist[std::size_t((k << F) >> (64 - nb))];
-            else s.keys->push_back(k);
-          }
-          break;
+        const std::uint64_t k = sweep_value_key(v[i] == 0 ? 0.0 : v[i]), top = (k >> 1) >> (63 - F);
+        group* g = nullptr;
+        if (!slot_of.empty()) {
+          if (slot_of[std::size_t(top)] != 255) g = slots[slot_of[std::size_t(top)]];
+        } else if (auto at = std::lower_bound(prefixes.begin(), prefixes.end(), top); at != prefixes.end() && *at == top) {
+          g = slots[std::size_t(at - prefixes.begin())];
         }
+        if (g && g->collect) g->keys.push_back(k);
+        else if (g) ++g->hist[std::size_t((k << F) >> (64 - nb))];
       }
     });
     if (seen != count)
@@ -143,28 +114,23 @@ std::vector<double> sweep_order_statistics(const sweep_value_source& replay, std
                           std::to_string(count));
     for (auto& t : targets) {
       if (t.done) continue;
-      const group_id g{t.fixed, t.prefix};
-      if (auto c = candidates.find(g); c != candidates.end()) {
-        auto& keys = c->second;
-        if (keys.size() != t.within)
-          throw compute_error("sweep quantiles: the values changed between passes");
-        std::nth_element(keys.begin(), keys.begin() + std::ptrdiff_t(t.rank), keys.end());
-        t.value = sweep_value_of_key(keys[t.rank]);
+      group& g = groups.at(t.prefix);
+      if (g.collect) {
+        if (g.keys.size() != t.within) throw compute_error("sweep quantiles: the values changed between passes");
+        std::nth_element(g.keys.begin(), g.keys.begin() + std::ptrdiff_t(t.rank), g.keys.end());
+        t.value = sweep_value_of_key(g.keys[t.rank]);
         t.done = true;
         continue;
       }
-      const auto& h = histograms.at(g);
-      const unsigned b = std::min(opt.bits, 64 - t.fixed);
       std::uint64_t below = 0, total = 0;
-      for (auto x : h) total += x;
+      for (auto x : g.hist) total += x;
       if (total != t.within) throw compute_error("sweep quantiles: the values changed between passes");
       std::size_t bucket = 0;
-      while (below + h[bucket] <= t.rank) below += h[bucket++];
+      while (below + g.hist[bucket] <= t.rank) below += g.hist[bucket++];
       t.rank -= below;
-      t.within = h[bucket];
-      t.prefix = (t.fixed == 0 ? 0 : t.prefix << b) | bucket;
-      t.fixed += b;
-      if (t.fixed == 64) {  // the whole key: every candidate is this value
+      t.within = g.hist[bucket];
+      t.prefix = (t.prefix << nb) | bucket;
+      if (F + nb == 64) {  // the whole key: every candidate is this value
         t.value = sweep_value_of_key(t.prefix);
         t.done = true;
       }
