@@ -10,7 +10,6 @@
 
 #include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
-#include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 #include <gyrores/model/enumerate.hpp>
 

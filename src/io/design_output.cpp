@@ -1,4 +1,4 @@
-// include/gyrores/io/design_output.hpp
+// include/gyrores/io/design_output.hpp: the design and Pareto outputs.
 #include <gyrores/io/design_output.hpp>
 
 #include <gyrores/io/report_json.hpp>
@@ -17,6 +17,8 @@ json listed_json(const std::vector<design_point>& pairs, const std::vector<pair_
 }
 
 json optional_text(const std::string& text) { return text.empty() ? json(nullptr) : json(text); }
+
+constexpr const char* pareto_csv_header = "tau,sigma,order,delta,degenerate,n,r_res,t_first,t_min_paper\n";
 
 }  // namespace
 

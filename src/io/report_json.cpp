@@ -1,4 +1,4 @@
-// The JSON forms of the pair and coupling reports (io/report_json.hpp).
+// include/gyrores/io/report_json.hpp: the pair, coupling and band reports as JSON.
 #include <gyrores/io/report_json.hpp>
 
 #include <utility>
@@ -7,8 +7,11 @@
 #include <gyrores/theorem/lobes.hpp>
 
 namespace gyrores {
-
 namespace {
+
+// The version of the pair object; "/2": every real proved (the output before the lattice
+// theorem, without this field, printed verified estimates).
+constexpr const char* pair_report_format = "gyrores-pair/2";
 
 json real_json(const proved_real& r) { return r.value; }
 json enclosure_json(const proved_real& r) { return json::array({r.enclosure.first, r.enclosure.second}); }
@@ -25,6 +28,25 @@ json lobe_json(const paper_lobe_report& l, bool enclosures) {
     lo[name] = enclosures ? enclosure_json(*value) : real_json(*value);
   if (!enclosures) lo["holds_global_min"] = l.holds_global_min;
   return lo;
+}
+
+// {"tau": ..., "sigma": ...}.
+json pair_json(const resonant_pair<big_int>& p) {
+  json j;
+  j["tau"] = json_integer(p.tau().str());
+  j["sigma"] = json_integer(p.sigma().str());
+  return j;
+}
+
+// The "asymptotic" object of `gyrores pair --json`: applicable, reason, lobes.
+json asymptotic_json(const pair_report& r) {
+  json asy;
+  asy["applicable"] = r.asymptotic_applicable;
+  asy["reason"] = r.asymptotic_reason;
+  json lobes = json::array();
+  for (const auto& l : r.lobes) lobes.push_back(lobe_json(l, false));
+  asy["lobes"] = lobes;
+  return asy;
 }
 
 // Every real of the report by its key, as value strings or as enclosures.
@@ -65,14 +87,18 @@ json coupling_convergents_json(const std::vector<coupling_convergent>& rows) {
   return arr;
 }
 
-}  // namespace
-
-json pair_json(const resonant_pair<big_int>& p) {
-  json j;
-  j["tau"] = json_integer(p.tau().str());
-  j["sigma"] = json_integer(p.sigma().str());
-  return j;
+json rounded_or_null(const enclosure& e, unsigned digits, bool settled) {
+  if (!settled) return nullptr;
+  const auto v = e.rounded(digits);
+  return v ? json(*v) : json(nullptr);
 }
+
+json outward_json(const enclosure& e, unsigned digits) {
+  const auto [lo, hi] = e.outward(digits + 3);
+  return json::array({lo, hi});
+}
+
+}  // namespace
 
 json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
   json j = pair_json(p);
@@ -81,16 +107,6 @@ json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
     j[key] = value->value;
   j["degenerate"] = v.degenerate;
   return j;
-}
-
-json asymptotic_json(const pair_report& r) {
-  json asy;
-  asy["applicable"] = r.asymptotic_applicable;
-  asy["reason"] = r.asymptotic_reason;
-  json lobes = json::array();
-  for (const auto& l : r.lobes) lobes.push_back(lobe_json(l, false));
-  asy["lobes"] = lobes;
-  return asy;
 }
 
 json pair_report_json(const resonant_pair<big_int>& p, const pair_report& r, bool enclosures) {
@@ -143,9 +159,9 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["cut_lobe"] = json_integer(h.proof.cut_lobe);
   j["cut_lobe_reached"] = h.proof.cut_lobe_reached;
   json enc;
-  enc["h_min_horizon"] = {h.h_min.enclosure.first, h.h_min.enclosure.second};
-  enc["t_min_horizon"] = {h.t_min.enclosure.first, h.t_min.enclosure.second};
-  enc["r_min_horizon"] = {h.r_min.enclosure.first, h.r_min.enclosure.second};
+  enc["h_min_horizon"] = enclosure_json(h.h_min);
+  enc["t_min_horizon"] = enclosure_json(h.t_min);
+  enc["r_min_horizon"] = enclosure_json(h.r_min);
   if (r.below) {
     const first_below_report& b = *r.below;
     json jb;
@@ -156,7 +172,7 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
     jb["t_below"] = b.never ? json(nullptr) : json(b.t_below.value);
     j["below"] = jb;
     j["t_below"] = jb["t_below"];
-    if (!b.never) enc["t_below"] = {b.t_below.enclosure.first, b.t_below.enclosure.second};
+    if (!b.never) enc["t_below"] = enclosure_json(b.t_below);
   }
   j["enclosures"] = enc;
   j["inf_all_time"] = r.inf_all_time;
@@ -165,6 +181,43 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["convergents"] = coupling_convergents_json(r.convergents);
   j["digits"] = digits;
   return j;
+}
+
+json band_coupling_json(const band_coupling& c, const std::optional<resonant_pair<big_int>>& pair) {
+  return json{{"n2", rational_str(c.spec.n2)},
+              {"x", c.x.str()},
+              {"pair", pair ? pair_json(*pair) : json(nullptr)}};
+}
+
+json horizon_place_json(const horizon_minimum_report& r) {
+  return json{{"h_min", r.h_min.value},
+              {"lobe", r.lobe ? json(json_integer(r.lobe->k)) : json(nullptr)},
+              {"at_horizon_end", r.proof.at_horizon_end},
+              {"t_min", r.t_min.value}};
+}
+
+json band_extreme_json(const band_extreme& e, unsigned digits, const json& at) {
+  return json{{"h_min", rounded_or_null(e.value, digits, e.settled)},
+              {"enclosure", outward_json(e.value, digits)},
+              {"settled", e.settled},
+              {"interrupted", e.interrupted},
+              {"reason", e.unsettled_reason.empty() ? json(nullptr) : json(e.unsettled_reason)},
+              {"at", at},
+              {"intervals", e.intervals},
+              {"couplings", e.couplings}};
+}
+
+json band_first_below_json(const band_first_below& b, unsigned digits, const json& at) {
+  return json{{"level", rational_str(b.level)},
+              {"never", b.never},
+              {"reason", b.reason},
+              {"t_below", b.never ? json(nullptr) : rounded_or_null(b.time, digits, b.settled)},
+              {"enclosure", b.never ? json(nullptr) : outward_json(b.time, digits)},
+              {"settled", b.settled},
+              {"interrupted", b.interrupted},
+              {"at", at},
+              {"intervals", b.intervals},
+              {"couplings", b.couplings}};
 }
 
 }  // namespace gyrores
