@@ -34,6 +34,7 @@
 
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 using gyrores::test::path_exists;

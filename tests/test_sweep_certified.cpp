@@ -16,6 +16,7 @@
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_forms.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 

@@ -14,6 +14,7 @@
 #include <gyrores/io/sweep_summary.hpp>
 
 #include "testing/cli_run.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 using gyrores::test::read_text;

@@ -232,14 +232,6 @@ json sweep_summary_json(const sweep_accumulator& a, const json& run, double seco
   return j;
 }
 
-json sweep_summary_core(json j) {
-  j.erase("seconds");
-  j.erase("run");
-  j.erase("values_file");
-  j.erase("values_check");
-  return j;
-}
-
 std::string sweep_summary_text(const json& s) {
   std::ostringstream os;
   text_run_line(os, s.at("run"));

@@ -1,11 +1,15 @@
 // The JSON forms of the reports that `gyrores pair`, `design`, `pareto` and `coupling` print with
-// --json and that the Python module returns as dicts, one definition for both, and of a band's
-// guarantees (docs/formats.md). Reals are decimal strings, each the correct rounding of a proved
-// enclosure (report/pair_report.hpp).
+// --json and that the Python module returns as dicts, one definition for both, of a band's
+// guarantees, and the Pareto front's CSV (docs/formats.md). Reals are decimal strings, each the
+// correct rounding of a proved enclosure (report/pair_report.hpp); exact rationals are text.
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include <gyrores/design/design.hpp>
+#include <gyrores/design/tolerance.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/model/pair.hpp>
 #include <gyrores/report/coupling_report.hpp>
@@ -37,5 +41,24 @@ json band_first_below_json(const band_first_below& b, unsigned digits, const jso
 
 // A horizon minimum's place, for "at": {"h_min", "lobe", "at_horizon_end", "t_min"}.
 json horizon_place_json(const horizon_minimum_report& r);
+
+// `gyrores design --json`: `tmax` and `beat` as given ("" for none); "chosen" and "candidates"
+// are ranked[i] with values[i].
+json design_json(const design_options& o, const std::string& tmax, const std::string& beat, const design_result& r,
+                 const std::vector<pair_report>& values, bool chosen_exceeds_tmax, unsigned digits);
+
+// Its "tolerance" object; the tolerance and level as given.
+json tolerance_json(design_problem problem, const tolerance_result& r, const std::string& percent, const std::string& level);
+
+// "absorb orientation: lower r_res and lower time are better", or the contain one.
+std::string pareto_orientation_text(pareto_orientation o);
+
+// `gyrores pareto --json`; `files` (the CLI's "csv" and "plot") come before "digits".
+json pareto_json(pareto_orientation o, design_time time, std::int64_t max_order, std::size_t pairs,
+                 const std::vector<design_point>& front, const std::vector<pair_report>& values, unsigned digits,
+                 const json& files = json::object());
+
+// The front as CSV (pareto --out, the report's pareto-front.csv): a header, one line per pair.
+std::string pareto_csv(const std::vector<design_point>& front, const std::vector<pair_report>& values);
 
 }  // namespace gyrores

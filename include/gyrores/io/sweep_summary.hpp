@@ -20,8 +20,6 @@ sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_exa
 // The summary of a finished sweep (a few passes over a.t_ratios for the quantiles); values_file
 // is null (a shard run's driver sets it).
 json sweep_summary_json(const sweep_accumulator& a, const json& run, double seconds);
-// What a merge must reproduce exactly: without seconds, run, values_file, values_check.
-json sweep_summary_core(json summary);
 // As `gyrores sweep` and `gyrores merge` print it.
 std::string sweep_summary_text(const json& summary);
 
