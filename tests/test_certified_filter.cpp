@@ -22,6 +22,7 @@
 #include <gyrores/theorem/paper.hpp>
 
 #include "testing/cli_run.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 using namespace gyrores::sweep_testing;

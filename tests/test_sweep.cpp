@@ -19,11 +19,9 @@
 #include <string>
 #include <vector>
 
-#include <gyrores/io/csv.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
-#include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 #include <gyrores/io/sweep_values_file.hpp>
 #include <gyrores/model/enumerate.hpp>
@@ -36,6 +34,7 @@
 
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 using gyrores::test::path_exists;

@@ -10,13 +10,13 @@
 
 #include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
-#include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 #include <gyrores/model/enumerate.hpp>
 
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_forms.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 

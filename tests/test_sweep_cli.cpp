@@ -20,6 +20,7 @@
 #include <gyrores/io/sweep_summary.hpp>
 
 #include "testing/cli_run.hpp"
+#include "sweep_summary_core.hpp"
 
 using gyrores::json;
 using namespace gyrores::test;  // cli_run.hpp: the CLI runner and temporary files

@@ -11,10 +11,10 @@
 
 #include <gyrores/app/sweep.hpp>
 #include <gyrores/io/sweep_files.hpp>
-#include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 
 #include "testing/cli_run.hpp"
+#include "sweep_summary_core.hpp"
 
 using namespace gyrores;
 using gyrores::test::read_text;

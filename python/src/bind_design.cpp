@@ -1,6 +1,6 @@
 // gyrores.design, gyrores.pareto: the application layer's requests (include/gyrores/app/design.hpp,
 // app/pareto.hpp), returned as the dicts of the matching `gyrores ... --json` commands
-// (io/design_output.hpp; the files the CLI can write beside them, CSV and plots, are left to the
+// (io/report_json.hpp; the files the CLI can write beside them, CSV and plots, are left to the
 // caller). The Python arguments become a request; the application layer checks it. design's
 // tolerance, level and horizon are `gyrores design --tolerance P% --level E [--horizon H]`: read
 // by the CLI's parsers, checked as src/cli/cmd_design.cpp checks them (named as in Python).
@@ -8,7 +8,7 @@
 #include <gyrores/app/pareto.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
-#include <gyrores/io/design_output.hpp>
+#include <gyrores/io/report_json.hpp>
 #include <gyrores/model/inputs.hpp>
 
 #include "common.hpp"

@@ -3,7 +3,7 @@
 
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/error.hpp>
-#include <gyrores/io/band_json.hpp>
+#include <gyrores/io/report_json.hpp>
 #include <gyrores/model/coupling.hpp>
 
 #include "band_checker.hpp"

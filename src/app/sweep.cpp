@@ -8,7 +8,6 @@
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/files.hpp>
-#include <gyrores/io/sweep_merge.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 
 namespace gyrores::app {

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include <gyrores/app/design.hpp>
-#include <gyrores/io/design_output.hpp>
+#include <gyrores/io/report_json.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/theorem/horizon.hpp>
 #include <gyrores/theorem/lobes.hpp>

@@ -2,12 +2,12 @@
 //                [--beat B] [--exclude-low L] [--out FILE.csv] [--plot FILE.svg|png]
 //                [--size WxH] [--digits D] [--json]
 // The non-dominated set of (r_res, time) over resonant pairs (include/gyrores/app/pareto.hpp),
-// with its CSV (io/design_output.hpp) and figure (frontend/plots.hpp).
+// with its CSV (io/report_json.hpp) and figure (frontend/plots.hpp).
 #include <optional>
 #include <sstream>
 
 #include <gyrores/app/pareto.hpp>
-#include <gyrores/io/design_output.hpp>
+#include <gyrores/io/report_json.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/json.hpp>
 

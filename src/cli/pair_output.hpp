@@ -1,6 +1,5 @@
 // How the CLI prints pairs and their proved values in its tables (design, pareto, coupling).
-// The JSON objects and the Pareto CSV are io/'s (io/report_json.hpp, io/design_output.hpp),
-// shared with Python.
+// The JSON objects and the Pareto CSV are io/'s (io/report_json.hpp), shared with Python.
 #pragma once
 #include <cstddef>
 #include <string>

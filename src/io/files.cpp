@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <gyrores/core/error.hpp>
@@ -25,21 +26,25 @@ namespace {
   throw usage_error(what + " '" + path + "': " + std::strerror(err));
 }
 
-}  // namespace
-
-namespace {
+// A descriptor closed when the scope ends, on every path out (errno is read before).
+struct fd_guard {
+  int fd;
+  ~fd_guard() {
+    if (fd >= 0) ::close(fd);
+  }
+  int release() { return std::exchange(fd, -1); }
+};
 
 // 16 hex digits from the kernel's random source: a temporary's name nobody can predict.
 std::string random_hex() {
   unsigned char b[8] = {};
   std::size_t got = 0;
-  if (int fd = ::open("/dev/urandom", O_RDONLY | O_CLOEXEC); fd >= 0) {
+  if (const fd_guard g{::open("/dev/urandom", O_RDONLY | O_CLOEXEC)}; g.fd >= 0) {
     while (got < sizeof b) {
-      const ssize_t n = ::read(fd, b + got, sizeof b - got);
+      const ssize_t n = ::read(g.fd, b + got, sizeof b - got);
       if (n <= 0) break;
       got += std::size_t(n);
     }
-    ::close(fd);
   }
   if (got < sizeof b) throw usage_error("cannot read /dev/urandom for a temporary file's name");
   static const char hex[] = "0123456789abcdef";
@@ -80,32 +85,88 @@ const char* kind_of(mode_t m) {
   return "not a regular file";
 }
 
+// The end of every atomic replacement: `fd` (open on `tmp`, closed here) gets the replaced file's
+// permission bits (a mode-600 output stays 600; a new file keeps 0666 less the umask), is
+// fsync'ed and renamed over `path`. On failure `tmp` is removed and `path` is untouched.
+void replace_with(int fd, const std::string& tmp, const std::string& path) {
+  struct stat old {};
+  int err = 0;
+  if (::stat(path.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) err = errno;
+  else if (::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err == 0 && ::rename(tmp.c_str(), path.c_str()) != 0) err = errno;
+  if (err != 0) {
+    ::unlink(tmp.c_str());
+    fail("cannot write", path, err);
+  }
+  // The rename itself durable (best effort: some file systems refuse fsync on a directory).
+  if (const fd_guard d{::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)}; d.fd >= 0)
+    ::fsync(d.fd);
+}
+
+// "dev:inode" when the file exists, else its canonical path (symbolic links of the existing
+// directories resolved): two spellings of one file, existing or not, give the same key.
+std::string file_identity(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return "inode:" + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  std::error_code ec;
+  const auto canon = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  return "path:" + (ec ? path : canon.string());
+}
+
+std::string lock_owner(int fd) {
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  std::string s(buf, n > 0 ? std::size_t(n) : 0);
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  return s.empty() || s.find_first_not_of("0123456789") != std::string::npos ? std::string() : " (pid " + s + ")";
+}
+
+std::string in_use_message(const std::string& path, int fd) {
+  return "'" + path + "' is in use by another gyrores run" + lock_owner(fd);
+}
+
+[[noreturn]] void in_use(const std::string& path, int fd) {
+  throw usage_error(in_use_message(path, fd) + "; wait for it to end or choose other files");
+}
+
+// A file already at PATH.lock is taken over only if it is what a gyrores run leaves there: a
+// regular file, empty or holding a pid line. Anything else is the user's (a rows file named
+// X.lock, say), which acquire() would otherwise truncate and remove at the end.
+bool looks_like_lock_file(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > 24) return false;
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf, 0);
+  if (n < 0) return false;
+  const std::string s(buf, std::size_t(n));
+  if (s.empty()) return true;
+  return s.back() == '\n' && s.size() >= 2 && s.find_first_not_of("0123456789") == s.size() - 1;
+}
+
 }  // namespace
 
 std::string read_file(const std::string& path, std::uint64_t max_bytes, const char* what) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) fail("cannot read", path, errno);
-  struct closer {
-    int fd;
-    ~closer() { ::close(fd); }
-  } close_at_end{fd};
+  const fd_guard g{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (g.fd < 0) fail("cannot read", path, errno);
   struct stat st {};
-  if (::fstat(fd, &st) != 0) fail("cannot read", path, errno);
+  if (::fstat(g.fd, &st) != 0) fail("cannot read", path, errno);
   if (S_ISDIR(st.st_mode)) throw usage_error("cannot read '" + path + "': it is a directory");
-  if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > max_bytes)
-    throw usage_error("'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (the limit for " + what + ")");
+  auto too_large = [&] {
+    return usage_error("'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (the limit for " + what + ")");
+  };
+  if (S_ISREG(st.st_mode) && std::uint64_t(st.st_size) > max_bytes) throw too_large();
   std::string s;
   char buf[1 << 16];
   for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
+    const ssize_t n = ::read(g.fd, buf, sizeof buf);
     if (n < 0) {
       if (errno == EINTR) continue;
       fail("cannot read", path, errno);
     }
     if (n == 0) return s;
     // A device or pipe (or a file growing while read) is held to the same cap.
-    if (s.size() + std::size_t(n) > max_bytes)
-      throw usage_error("'" + path + "' is larger than " + std::to_string(max_bytes) + " bytes (the limit for " + what + ")");
+    if (s.size() + std::size_t(n) > max_bytes) throw too_large();
     s.append(buf, std::size_t(n));
   }
 }
@@ -142,16 +203,9 @@ void write_file_atomically(const std::string& path, std::string_view content) {
 
 void write_file_atomically(const std::string& path, const std::function<void(const byte_writer&)>& fill) {
   check_output_path(path);
-  struct stat old {};
-  const bool replaces = ::stat(path.c_str(), &old) == 0;
   const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." + random_hex();
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd < 0) fail("cannot write", path, errno);
-  auto give_up = [&](int err) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    fail("cannot write", path, err);
-  };
   try {
     fill([&](std::string_view bytes) {
       if (!write_all(fd, bytes.data(), bytes.size())) fail("cannot write", path, errno);
@@ -161,25 +215,7 @@ void write_file_atomically(const std::string& path, const std::function<void(con
     ::unlink(tmp.c_str());
     throw;
   }
-  // The replaced file's permission bits (a mode-600 output stays 600); a new file gets 0666
-  // less the umask, as open() gave it.
-  if (replaces && ::fchmod(fd, old.st_mode & 07777) != 0) give_up(errno);
-  if (::fsync(fd) != 0) give_up(errno);
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    fail("cannot write", path, err);
-  }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    fail("cannot write", path, err);
-  }
-  // The rename itself durable (best effort: some file systems refuse fsync on a directory).
-  if (int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
-    ::fsync(dfd);
-    ::close(dfd);
-  }
+  replace_with(fd, tmp, path);
 }
 
 std::string make_private_directory(const std::string& near) {
@@ -196,39 +232,18 @@ void remove_private_directory(const std::string& dir) noexcept {
 }
 
 void install_file(const std::string& tmp, const std::string& path) {
-  auto give_up = [&](int err) {
-    ::unlink(tmp.c_str());
-    fail("cannot write", path, err);
-  };
+  fd_guard g{-1};
   try {
     check_output_path(path);
+    g.fd = ::open(tmp.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (g.fd < 0) fail("cannot write", path, errno);
+    struct stat st {};
+    if (::fstat(g.fd, &st) != 0 || !S_ISREG(st.st_mode)) fail("cannot write", path, EINVAL);
   } catch (...) {
     ::unlink(tmp.c_str());
     throw;
   }
-  const int fd = ::open(tmp.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) give_up(errno);
-  struct stat st {}, old {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    give_up(EINVAL);
-  }
-  if (::stat(path.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) {
-    const int err = errno;
-    ::close(fd);
-    give_up(err);
-  }
-  if (::fsync(fd) != 0) {
-    const int err = errno;
-    ::close(fd);
-    give_up(err);
-  }
-  ::close(fd);
-  if (::rename(tmp.c_str(), path.c_str()) != 0) give_up(errno);
-  if (int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
-    ::fsync(dfd);
-    ::close(dfd);
-  }
+  replace_with(g.release(), tmp, path);
 }
 
 void remove_stale_temporaries(const std::string& path) noexcept {
@@ -254,14 +269,6 @@ void remove_stale_temporaries(const std::string& path) noexcept {
   }
 }
 
-std::string file_identity(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) return "inode:" + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
-  std::error_code ec;
-  const auto canon = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
-  return "path:" + (ec ? path : canon.string());
-}
-
 void check_distinct_paths(const std::vector<named_path>& paths) {
   std::vector<std::string> ids(paths.size());
   for (std::size_t i = 0; i < paths.size(); ++i)
@@ -273,89 +280,41 @@ void check_distinct_paths(const std::vector<named_path>& paths) {
                           "' are the same file");
 }
 
-namespace {
-
-std::string lock_owner(int fd) {
-  char buf[32] = {};
-  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
-  std::string s(buf, n > 0 ? std::size_t(n) : 0);
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  return s.empty() || s.find_first_not_of("0123456789") != std::string::npos ? std::string() : " (pid " + s + ")";
-}
-
-std::string in_use_message(const std::string& path, int fd) {
-  return "'" + path + "' is in use by another gyrores run" + lock_owner(fd);
-}
-
-[[noreturn]] void in_use(const std::string& path, int fd) {
-  const std::string msg = in_use_message(path, fd);
-  ::close(fd);
-  throw usage_error(msg + "; wait for it to end or choose other files");
-}
-
-}  // namespace
-
 std::string path_lock_file(const std::string& path) { return path + ".lock"; }
-
-namespace {
-
-// A file already at PATH.lock is taken over only if it is what a gyrores run leaves there: a
-// regular file, empty or holding a pid line. Anything else is the user's (a rows file named
-// X.lock, say), which acquire() would otherwise truncate and remove at the end.
-bool looks_like_lock_file(int fd) {
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > 24) return false;
-  char buf[32] = {};
-  const ssize_t n = ::pread(fd, buf, sizeof buf, 0);
-  if (n < 0) return false;
-  const std::string s(buf, std::size_t(n));
-  if (s.empty()) return true;
-  return s.back() == '\n' && s.size() >= 2 && s.find_first_not_of("0123456789") == s.size() - 1;
-}
-
-}  // namespace
 
 path_lock path_lock::acquire(const std::string& path, const std::function<void(const std::string&)>& on_busy) {
   const std::string lp = path_lock_file(path);
   bool told = false;
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const int fd = ::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);
-    if (fd < 0) fail("cannot create the lock file", lp, errno);
-    if (!looks_like_lock_file(fd)) {
-      ::close(fd);
+    fd_guard g{::open(lp.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666)};
+    if (g.fd < 0) fail("cannot create the lock file", lp, errno);
+    if (!looks_like_lock_file(g.fd))
       throw usage_error("'" + lp + "' (the lock file of '" + path +
                         "') exists and is not a gyrores lock file: move it away or choose other files");
-    }
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    if (::flock(g.fd, LOCK_EX | LOCK_NB) != 0) {
       int err = errno;
       if (err == EWOULDBLOCK) {
-        if (!on_busy) in_use(path, fd);
-        if (!told) on_busy(in_use_message(path, fd));
+        if (!on_busy) in_use(path, g.fd);
+        if (!told) on_busy(in_use_message(path, g.fd));
         told = true;
-        while ((err = ::flock(fd, LOCK_EX) == 0 ? 0 : errno) == EINTR) {
+        while ((err = ::flock(g.fd, LOCK_EX) == 0 ? 0 : errno) == EINTR) {
         }
       }
-      if (err != 0) {
-        ::close(fd);
-        fail("cannot lock", lp, err);
-      }
+      if (err != 0) fail("cannot lock", lp, err);
     }
     // The holder before us may have removed the file after we opened it (it unlinks, then
     // unlocks): our lock is then on a name nobody else sees. Retry on the current file.
     struct stat a {}, b {};
-    if (::fstat(fd, &a) != 0 || ::stat(lp.c_str(), &b) != 0 || a.st_dev != b.st_dev || a.st_ino != b.st_ino) {
-      ::close(fd);
+    if (::fstat(g.fd, &a) != 0 || ::stat(lp.c_str(), &b) != 0 || a.st_dev != b.st_dev || a.st_ino != b.st_ino)
       continue;
-    }
     const std::string pid = std::to_string(::getpid()) + "\n";
-    if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
+    if (::ftruncate(g.fd, 0) != 0 || ::pwrite(g.fd, pid.data(), pid.size(), 0) != ssize_t(pid.size())) {
       const int err = errno;
       ::unlink(lp.c_str());
-      ::close(fd);
       fail("cannot write the lock file", lp, err);
     }
     path_lock l;
-    l.fd_ = fd;
+    l.fd_ = g.release();
     l.lock_path_ = lp;
     return l;
   }
@@ -363,12 +322,10 @@ path_lock path_lock::acquire(const std::string& path, const std::function<void(c
 }
 
 void path_lock::check_not_written(const std::string& path) {
-  const std::string lp = path + ".lock";
-  const int fd = ::open(lp.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) return;  // no lock file: nobody writes it now
-  if (::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) in_use(path, fd);
-  ::close(fd);  // releases the shared lock
-}
+  const fd_guard g{::open(path_lock_file(path).c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC)};
+  if (g.fd < 0) return;  // no lock file: nobody writes it now
+  if (::flock(g.fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) in_use(path, g.fd);
+}  // closing releases the shared lock
 
 path_lock::~path_lock() {
   if (fd_ < 0) return;
@@ -376,18 +333,12 @@ path_lock::~path_lock() {
   ::close(fd_);
 }
 
-path_lock::path_lock(path_lock&& o) noexcept : fd_(o.fd_), lock_path_(std::move(o.lock_path_)) { o.fd_ = -1; }
+path_lock::path_lock(path_lock&& o) noexcept : fd_(std::exchange(o.fd_, -1)), lock_path_(std::move(o.lock_path_)) {}
 
+// The lock held before goes with `o`.
 path_lock& path_lock::operator=(path_lock&& o) noexcept {
-  if (this != &o) {
-    if (fd_ >= 0) {
-      ::unlink(lock_path_.c_str());
-      ::close(fd_);
-    }
-    fd_ = o.fd_;
-    lock_path_ = std::move(o.lock_path_);
-    o.fd_ = -1;
-  }
+  std::swap(fd_, o.fd_);
+  std::swap(lock_path_, o.lock_path_);
   return *this;
 }
 
@@ -399,19 +350,15 @@ std::uint64_t file_size(const std::string& path) {
 
 void read_file_range(const std::string& path, std::uint64_t offset, std::uint64_t length, std::size_t piece,
                      const std::function<void(const void*, std::size_t)>& fn) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) fail("cannot read", path, errno);
-  struct closer {
-    std::FILE* f;
-    ~closer() { std::fclose(f); }
-  } close_at_end{f};
-  if (::fseeko(f, off_t(offset), SEEK_SET) != 0) fail("cannot read", path, errno);
+  if (::fseeko(f.get(), off_t(offset), SEEK_SET) != 0) fail("cannot read", path, errno);
   if (piece == 0) piece = 1;
   std::unique_ptr<std::max_align_t[]> buf(new std::max_align_t[(piece + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t)]);
   while (length > 0) {
     const std::size_t n = std::size_t(std::min<std::uint64_t>(length, piece));
-    if (std::fread(buf.get(), 1, n, f) != n) {
-      if (std::ferror(f)) fail("cannot read", path, errno);
+    if (std::fread(buf.get(), 1, n, f.get()) != n) {
+      if (std::ferror(f.get())) fail("cannot read", path, errno);
       throw usage_error("cannot read '" + path + "': shorter than expected");
     }
     fn(buf.get(), n);
@@ -428,29 +375,23 @@ void ensure_directory(const std::string& dir) {
 }
 
 void truncate_file(const std::string& path, std::uint64_t size) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) fail("cannot truncate", path, errno);
+  const fd_guard g{::open(path.c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC)};
+  if (g.fd < 0) fail("cannot truncate", path, errno);
   struct stat st {};
-  const bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
-  const int err = ok ? 0 : errno ? errno : EINVAL;
-  if (!ok || ::ftruncate(fd, off_t(size)) != 0) {
-    const int e = ok ? errno : err;
-    ::close(fd);
-    fail("cannot truncate", path, e);
-  }
-  ::close(fd);
+  if (::fstat(g.fd, &st) != 0) fail("cannot truncate", path, errno);
+  if (!S_ISREG(st.st_mode)) fail("cannot truncate", path, EINVAL);
+  if (::ftruncate(g.fd, off_t(size)) != 0) fail("cannot truncate", path, errno);
 }
 
 void keep_mode_of(const std::string& replaced, const std::string& path) {
   struct stat old {};
   if (::lstat(replaced.c_str(), &old) != 0 || !S_ISREG(old.st_mode)) return;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) fail("cannot change the mode of", path, errno);
+  const fd_guard g{::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC)};
+  if (g.fd < 0) fail("cannot change the mode of", path, errno);
   struct stat st {};
-  const bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::fchmod(fd, old.st_mode & 07777) == 0;
-  const int err = errno;
-  ::close(fd);
-  if (!ok) fail("cannot change the mode of", path, err ? err : EINVAL);
+  if (::fstat(g.fd, &st) != 0) fail("cannot change the mode of", path, errno);
+  if (!S_ISREG(st.st_mode)) fail("cannot change the mode of", path, EINVAL);
+  if (::fchmod(g.fd, old.st_mode & 07777) != 0) fail("cannot change the mode of", path, errno);
 }
 
 void rename_file(const std::string& from, const std::string& to) {
@@ -464,34 +405,26 @@ append_file::append_file(const std::string& path, mode m) : path_(path) {
   const int flags = O_WRONLY | O_NOFOLLOW | O_CLOEXEC | (m == mode::create ? O_CREAT | O_TRUNC : O_CREAT | O_APPEND);
   const char* what = m == mode::create ? "cannot create" : "cannot open";
   // O_NONBLOCK: a FIFO planted there must not block the open; cleared for the regular file.
-  const int fd = ::open(path.c_str(), flags | O_NONBLOCK, 0666);
-  if (fd < 0) fail(what, path, errno);
+  fd_guard g{::open(path.c_str(), flags | O_NONBLOCK, 0666)};
+  if (g.fd < 0) fail(what, path, errno);
   struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || ::fcntl(fd, F_SETFL, flags & O_APPEND) != 0) {
-    ::close(fd);
+  if (::fstat(g.fd, &st) != 0 || !S_ISREG(st.st_mode) || ::fcntl(g.fd, F_SETFL, flags & O_APPEND) != 0)
     throw usage_error(std::string(what) + " '" + path + "': not a regular file");
-  }
-  f_ = ::fdopen(fd, m == mode::create ? "wb" : "ab");
-  if (!f_) {
-    const int err = errno;
-    ::close(fd);
-    fail(what, path, err);
-  }
+  f_ = ::fdopen(g.fd, m == mode::create ? "wb" : "ab");
+  if (!f_) fail(what, path, errno);
+  g.release();
 }
 
 append_file::~append_file() {
   if (f_) std::fclose(f_);
 }
 
-append_file::append_file(append_file&& o) noexcept : f_(o.f_), path_(std::move(o.path_)) { o.f_ = nullptr; }
+append_file::append_file(append_file&& o) noexcept : f_(std::exchange(o.f_, nullptr)), path_(std::move(o.path_)) {}
 
+// The file open before goes with `o`.
 append_file& append_file::operator=(append_file&& o) noexcept {
-  if (this != &o) {
-    if (f_) std::fclose(f_);
-    f_ = o.f_;
-    path_ = std::move(o.path_);
-    o.f_ = nullptr;
-  }
+  std::swap(f_, o.f_);
+  std::swap(path_, o.path_);
   return *this;
 }
 

@@ -1,14 +1,18 @@
-// The JSON forms of the pair and coupling reports (io/report_json.hpp).
+// include/gyrores/io/report_json.hpp: the pair, coupling, band, design and Pareto outputs.
 #include <gyrores/io/report_json.hpp>
 
 #include <utility>
 
 #include <gyrores/core/rational.hpp>
+#include <gyrores/theorem/horizon.hpp>
 #include <gyrores/theorem/lobes.hpp>
 
 namespace gyrores {
-
 namespace {
+
+// The version of the pair object; "/2": every real proved (the output before the lattice
+// theorem, without this field, printed verified estimates).
+constexpr const char* pair_report_format = "gyrores-pair/2";
 
 json real_json(const proved_real& r) { return r.value; }
 json enclosure_json(const proved_real& r) { return json::array({r.enclosure.first, r.enclosure.second}); }
@@ -25,6 +29,25 @@ json lobe_json(const paper_lobe_report& l, bool enclosures) {
     lo[name] = enclosures ? enclosure_json(*value) : real_json(*value);
   if (!enclosures) lo["holds_global_min"] = l.holds_global_min;
   return lo;
+}
+
+// {"tau": ..., "sigma": ...}.
+json pair_json(const resonant_pair<big_int>& p) {
+  json j;
+  j["tau"] = json_integer(p.tau().str());
+  j["sigma"] = json_integer(p.sigma().str());
+  return j;
+}
+
+// The "asymptotic" object of `gyrores pair --json`: applicable, reason, lobes.
+json asymptotic_json(const pair_report& r) {
+  json asy;
+  asy["applicable"] = r.asymptotic_applicable;
+  asy["reason"] = r.asymptotic_reason;
+  json lobes = json::array();
+  for (const auto& l : r.lobes) lobes.push_back(lobe_json(l, false));
+  asy["lobes"] = lobes;
+  return asy;
 }
 
 // Every real of the report by its key, as value strings or as enclosures.
@@ -65,14 +88,31 @@ json coupling_convergents_json(const std::vector<coupling_convergent>& rows) {
   return arr;
 }
 
-}  // namespace
-
-json pair_json(const resonant_pair<big_int>& p) {
-  json j;
-  j["tau"] = json_integer(p.tau().str());
-  j["sigma"] = json_integer(p.sigma().str());
-  return j;
+json rounded_or_null(const enclosure& e, unsigned digits, bool settled) {
+  if (!settled) return nullptr;
+  const auto v = e.rounded(digits);
+  return v ? json(*v) : json(nullptr);
 }
+
+json outward_json(const enclosure& e, unsigned digits) {
+  const auto [lo, hi] = e.outward(digits + 3);
+  return json::array({lo, hi});
+}
+
+// pair_values_json of pairs[i] and values[i] for i in [from, to).
+json listed_json(const std::vector<design_point>& pairs, const std::vector<pair_report>& values, std::size_t from,
+                 std::size_t to) {
+  json a = json::array();
+  for (std::size_t i = from; i < to; ++i)
+    a.push_back(pair_values_json(resonant_pair<big_int>(big_int(pairs[i].tau), big_int(pairs[i].sigma)), values[i]));
+  return a;
+}
+
+json optional_text(const std::string& text) { return text.empty() ? json(nullptr) : json(text); }
+
+constexpr const char* pareto_csv_header = "tau,sigma,order,delta,degenerate,n,r_res,t_first,t_min_paper\n";
+
+}  // namespace
 
 json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
   json j = pair_json(p);
@@ -81,16 +121,6 @@ json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
     j[key] = value->value;
   j["degenerate"] = v.degenerate;
   return j;
-}
-
-json asymptotic_json(const pair_report& r) {
-  json asy;
-  asy["applicable"] = r.asymptotic_applicable;
-  asy["reason"] = r.asymptotic_reason;
-  json lobes = json::array();
-  for (const auto& l : r.lobes) lobes.push_back(lobe_json(l, false));
-  asy["lobes"] = lobes;
-  return asy;
 }
 
 json pair_report_json(const resonant_pair<big_int>& p, const pair_report& r, bool enclosures) {
@@ -143,9 +173,9 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["cut_lobe"] = json_integer(h.proof.cut_lobe);
   j["cut_lobe_reached"] = h.proof.cut_lobe_reached;
   json enc;
-  enc["h_min_horizon"] = {h.h_min.enclosure.first, h.h_min.enclosure.second};
-  enc["t_min_horizon"] = {h.t_min.enclosure.first, h.t_min.enclosure.second};
-  enc["r_min_horizon"] = {h.r_min.enclosure.first, h.r_min.enclosure.second};
+  enc["h_min_horizon"] = enclosure_json(h.h_min);
+  enc["t_min_horizon"] = enclosure_json(h.t_min);
+  enc["r_min_horizon"] = enclosure_json(h.r_min);
   if (r.below) {
     const first_below_report& b = *r.below;
     json jb;
@@ -156,7 +186,7 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
     jb["t_below"] = b.never ? json(nullptr) : json(b.t_below.value);
     j["below"] = jb;
     j["t_below"] = jb["t_below"];
-    if (!b.never) enc["t_below"] = {b.t_below.enclosure.first, b.t_below.enclosure.second};
+    if (!b.never) enc["t_below"] = enclosure_json(b.t_below);
   }
   j["enclosures"] = enc;
   j["inf_all_time"] = r.inf_all_time;
@@ -165,6 +195,113 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["convergents"] = coupling_convergents_json(r.convergents);
   j["digits"] = digits;
   return j;
+}
+
+json band_coupling_json(const band_coupling& c, const std::optional<resonant_pair<big_int>>& pair) {
+  return json{{"n2", rational_str(c.spec.n2)},
+              {"x", c.x.str()},
+              {"pair", pair ? pair_json(*pair) : json(nullptr)}};
+}
+
+json horizon_place_json(const horizon_minimum_report& r) {
+  return json{{"h_min", r.h_min.value},
+              {"lobe", r.lobe ? json(json_integer(r.lobe->k)) : json(nullptr)},
+              {"at_horizon_end", r.proof.at_horizon_end},
+              {"t_min", r.t_min.value}};
+}
+
+json band_extreme_json(const band_extreme& e, unsigned digits, const json& at) {
+  return json{{"h_min", rounded_or_null(e.value, digits, e.settled)},
+              {"enclosure", outward_json(e.value, digits)},
+              {"settled", e.settled},
+              {"interrupted", e.interrupted},
+              {"reason", e.unsettled_reason.empty() ? json(nullptr) : json(e.unsettled_reason)},
+              {"at", at},
+              {"intervals", e.intervals},
+              {"couplings", e.couplings}};
+}
+
+json band_first_below_json(const band_first_below& b, unsigned digits, const json& at) {
+  return json{{"level", rational_str(b.level)},
+              {"never", b.never},
+              {"reason", b.reason},
+              {"t_below", b.never ? json(nullptr) : rounded_or_null(b.time, digits, b.settled)},
+              {"enclosure", b.never ? json(nullptr) : outward_json(b.time, digits)},
+              {"settled", b.settled},
+              {"interrupted", b.interrupted},
+              {"at", at},
+              {"intervals", b.intervals},
+              {"couplings", b.couplings}};
+}
+
+json design_json(const design_options& o, const std::string& tmax, const std::string& beat, const design_result& r,
+                 const std::vector<pair_report>& values, bool chosen_exceeds_tmax, unsigned digits) {
+  json j;
+  j["problem"] = design_problem_name(o.problem);
+  j["tmax"] = tmax;
+  j["time"] = design_time_name(o.time);
+  j["beat"] = optional_text(beat);
+  j["max_order"] = o.max_order;
+  j["exclude_low"] = o.filter.exclude_low;
+  j["delta"] = o.filter.delta ? json(*o.filter.delta) : json(nullptr);
+  j["examined"] = r.examined;
+  j["feasible"] = r.feasible;
+  j["chosen"] = listed_json(r.ranked, values, 0, 1).at(0);
+  j["chosen_t_first_exceeds_tmax"] = chosen_exceeds_tmax;
+  j["candidates"] = listed_json(r.ranked, values, 1, values.size());
+  j["digits"] = digits;
+  return j;
+}
+
+json tolerance_json(design_problem problem, const tolerance_result& r, const std::string& percent, const std::string& level) {
+  json checked = json::array();
+  for (const auto& c : r.checked) {
+    const auto [lo, hi] = c.guarantee.value.outward(8);
+    checked.push_back({{"tau", c.point.tau}, {"sigma", c.point.sigma},
+                       {"band", {rational_str(c.n1), rational_str(c.n2)}},
+                       {problem == design_problem::absorb ? "absorption" : "containment", {lo, hi}},
+                       {"at_n2", rational_str(c.guarantee.at.spec.n2)},
+                       {"verdict", c.guarantee.interrupted ? "interrupted" : tolerance_verdict_name(c.verdict)}});
+  }
+  json j{{"checked", checked}, {"theorem", band_theorem_id}};
+  j["chosen"] = r.chosen ? json{{"tau", r.checked[*r.chosen].point.tau}, {"sigma", r.checked[*r.chosen].point.sigma}}
+                         : json(nullptr);
+  j["interrupted"] = r.interrupted;
+  j["percent"] = percent;
+  j["level"] = level;
+  return j;
+}
+
+std::string pareto_orientation_text(pareto_orientation o) {
+  return o == pareto_orientation::absorb ? "absorb orientation: lower r_res and lower time are better"
+                                         : "contain orientation: higher r_res and lower time are better";
+}
+
+json pareto_json(pareto_orientation o, design_time time, std::int64_t max_order, std::size_t pairs,
+                 const std::vector<design_point>& front, const std::vector<pair_report>& values, unsigned digits,
+                 const json& files) {
+  json j;
+  j["orientation"] = o == pareto_orientation::absorb ? "absorb" : "contain";
+  j["orientation_meaning"] = pareto_orientation_text(o);
+  j["time"] = design_time_name(time);
+  j["max_order"] = max_order;
+  j["pairs"] = pairs;
+  j["front"] = listed_json(front, values, 0, values.size());
+  for (const auto& [key, value] : files.items()) j[key] = value;
+  j["digits"] = digits;
+  return j;
+}
+
+std::string pareto_csv(const std::vector<design_point>& front, const std::vector<pair_report>& values) {
+  std::string c = pareto_csv_header;
+  for (std::size_t i = 0; i < front.size() && i < values.size(); ++i) {
+    const design_point& p = front[i];
+    const pair_report& v = values[i];
+    c += std::to_string(p.tau) + "," + std::to_string(p.sigma) + "," + std::to_string(p.order()) + "," +
+         std::to_string(p.delta()) + "," + (p.degenerate ? "true" : "false") + "," + v.n.value + "," + v.r_res.value +
+         "," + v.t_first.value + "," + v.t_min_paper.value + "\n";
+  }
+  return c;
 }
 
 }  // namespace gyrores

@@ -20,7 +20,6 @@ namespace {
 
 const char* const state_format = "gyrores-sweep-state";
 
-
 // The state file's content, parsed and checked against this sweep's run description.
 json read_state(const std::string& state, const json& run_files) {
   if (!file_exists(state))

@@ -1,16 +1,24 @@
-// include/gyrores/io/sweep_merge.hpp: reading shard outputs, checking they belong together, merging.
-#include <gyrores/io/sweep_merge.hpp>
-
+// The merge of include/gyrores/io/sweep_summary.hpp: shard outputs read, checked to belong
+// together, merged.
 #include <fstream>
 #include <set>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/files.hpp>
-#include <gyrores/io/sweep_rows.hpp>
 #include <gyrores/io/sweep_summary.hpp>
 
 namespace gyrores {
 namespace {
+
+// The run description without what differs between the shards of one sweep or between a run
+// and its merge.
+json sweep_run_identity(json run) {
+  run.erase("shard");
+  run.erase("threads");
+  run.erase("complete");
+  run.erase("merged_shards");
+  return run;
+}
 
 std::int64_t shard_index(const sweep_input& x) { return json_to_int64(x.run.at("shard").at(0), "the shard index"); }
 std::int64_t shard_count(const sweep_input& x) { return json_to_int64(x.run.at("shard").at(1), "the shard count"); }
@@ -82,8 +90,7 @@ json merge_inputs(const std::vector<sweep_input>& in) {
   return sweep_summary_json(acc, run, seconds);
 }
 
-}  // namespace
-
+// A rows file or a shard summary, told apart by its first line.
 sweep_input sweep_read_output(const std::string& path) {
   check_input_path(path);
   path_lock::check_not_written(path);
@@ -108,6 +115,8 @@ sweep_input sweep_read_output(const std::string& path) {
     throw usage_error("'" + path + "' is malformed: " + e.what());
   }
 }
+
+}  // namespace
 
 json sweep_merge(const std::vector<std::string>& paths) {
   if (paths.empty()) throw usage_error("merge needs at least one file");

@@ -13,6 +13,12 @@
 namespace gyrores {
 namespace {
 
+sweep_check_set sweep_checks_of_run(const json& run) {
+  sweep_check_set checks = 0;
+  for (auto& n : run.at("checks")) checks |= sweep_parse_checks(n.get<std::string>());
+  return checks;
+}
+
 json pairs_json(const std::vector<sweep_pair_id>& v) {
   json a = json::array();
   for (auto& p : v) a.push_back({p.first, p.second});
@@ -223,14 +229,6 @@ json sweep_summary_json(const sweep_accumulator& a, const json& run, double seco
   j["seconds"] = seconds;
   j["run"] = run;
   j["values_file"] = nullptr;
-  return j;
-}
-
-json sweep_summary_core(json j) {
-  j.erase("seconds");
-  j.erase("run");
-  j.erase("values_file");
-  j.erase("values_check");
   return j;
 }
 

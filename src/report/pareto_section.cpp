@@ -2,7 +2,7 @@
 #include <sstream>
 
 #include <gyrores/app/pareto.hpp>
-#include <gyrores/io/design_output.hpp>
+#include <gyrores/io/report_json.hpp>
 #include <gyrores/io/files.hpp>
 
 #include "report/sections.hpp"

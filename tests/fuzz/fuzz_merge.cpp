@@ -1,10 +1,10 @@
-// Fuzz target: the inputs of `gyrores merge` (io/sweep_merge.hpp): up to four shard outputs,
+// Fuzz target: the inputs of `gyrores merge` (io/sweep_summary.hpp): up to four shard outputs,
 // each a rows file or a shard summary with its values file. The input holds the files in the
 // order p0, p0.values, p1, p1.values, ... separated by fuzz_support.hpp's file_separator; they
 // are written as p<k>.json and p<k>.json.values in the scratch directory and merged. Anything
 // that does not fit together must give usage_error.
 #include <gyrores/core/error.hpp>
-#include <gyrores/io/sweep_merge.hpp>
+#include <gyrores/io/sweep_summary.hpp>
 
 #include "fuzz_support.hpp"
 

@@ -1,7 +1,7 @@
 // The application layer (include/gyrores/app/pair.hpp): `gyrores sweep`, `gyrores merge` and
 // gyrores.sweep. A sweep runs the engine (sweep/engine.hpp) in the working type its digits
 // choose, with its files and resume state (io/sweep_files.hpp: what is written when), or in
-// memory for Python; a merge reads shard outputs (io/sweep_merge.hpp) into one summary.
+// memory for Python; a merge reads shard outputs (io/sweep_summary.hpp) into one summary.
 #pragma once
 #include <atomic>
 #include <cstdint>

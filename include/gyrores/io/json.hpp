@@ -1,13 +1,7 @@
 // JSON for gyrores' files and CLI output (nlohmann-json, insertion-ordered objects).
-//
-// Integers of any size: nlohmann-json holds 64 bits, so a big_int is emitted through a marker
-// string that json_dump() replaces by the bare digits (a JSON number of any length). Reading
-// them back needs the number's text, not nlohmann's double (as tests/reference/certificate_json.cpp
-// does for the retired /1 certificates).
 #pragma once
 #include <nlohmann/json.hpp>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <string_view>
 
@@ -18,22 +12,21 @@ namespace gyrores {
 
 using json = nlohmann::ordered_json;
 
-// A JSON number with the exact decimal digits of v, whatever its size (see json_dump).
+// A JSON number with the exact digits of v, whatever its size: nlohmann-json holds 64 bits, so
+// this is a marker string that json_dump() replaces by the bare digits.
 json json_integer(const big_int& v);
 json json_integer(const std::string& decimal);
 
-// Parses a whole JSON text like json::parse, but an object with the same key twice is refused
-// (json_value_error naming the key) instead of keeping the last one: every file gyrores reads
-// goes through it (docs/formats.md). Syntax errors throw json::parse_error as json::parse does.
+// json::parse, but an object with the same key twice is refused (json_value_error naming the
+// key) instead of keeping the last one: every file gyrores reads goes through it.
 json json_parse_strict(std::string_view text);
 
 // j.dump(indent) with every json_integer marker replaced by its digits.
 std::string json_dump(const json& j, int indent = 2);
 
 // An integer field of a file being read. nlohmann's get<> converts a floating value (which an
-// integer beyond 64 bits parses as) with undefined behaviour and wraps a large one into a
-// narrower type: both are refused, with json_value_error (a usage_error) naming `what` and the value.
-// (J: json or nlohmann::json.) Readers catch json_value_error to name the file.
+// integer beyond 64 bits parses as) with undefined behaviour and wraps a large one: both are
+// refused with json_value_error naming `what` and the value. Readers catch it to name the file.
 struct json_value_error : usage_error {
   using usage_error::usage_error;
 };
@@ -45,12 +38,6 @@ template <class J> std::int64_t json_to_int64(const J& j, const char* what) {
 template <class J> std::uint64_t json_to_uint64(const J& j, const char* what) {
   if (!j.is_number_unsigned()) throw json_value_error(std::string(what) + " must be an integer in [0, 2^64), got " + j.dump());
   return j.template get<std::uint64_t>();
-}
-template <class J> unsigned json_to_unsigned(const J& j, const char* what) {
-  const std::uint64_t v = json_to_uint64(j, what);
-  if (v > std::numeric_limits<unsigned>::max())
-    throw json_value_error(std::string(what) + " must be an integer in [0, 2^32), got " + j.dump());
-  return unsigned(v);
 }
 
 }  // namespace gyrores

@@ -1,8 +1,6 @@
-// The files of a sweep: the rows file (written as FILE.part, renamed when complete), the summary
-// (and the values file of a shard run), and the resume state written at checkpoints and
-// restored by `resume`. What each file holds and when it is written: docs/formats.md (sweep
-// rows, sweep summary, values file, resume state, atomicity). The run that feeds them is
-// app/sweep.hpp's.
+// The files of one sweep run: the rows file (FILE.part, renamed when complete), the summary (and
+// a shard run's values file), and the resume state written at checkpoints. What each holds and
+// when it is written: docs/formats.md. The run that feeds them is app/sweep.hpp's.
 #pragma once
 #include <chrono>
 #include <cstddef>
@@ -15,7 +13,6 @@
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/sweep_rows.hpp>
-#include <gyrores/io/sweep_run.hpp>
 #include <gyrores/sweep/sweep.hpp>
 
 namespace gyrores {
@@ -29,12 +26,10 @@ struct sweep_files {
   // Without resume, a saved state is refused ("a saved run exists") unless fresh discards it.
   bool fresh = false;
   // Set: the state's lock, when another run holds it, is waited for (this is called once with
-  // the reason) instead of refused. For a state path nobody named (./gyrores-sweep.resume of two
-  // sweeps without files in one directory): the runs then take turns instead of failing.
+  // the reason) instead of refused, for a state path nobody named (./gyrores-sweep.resume).
   std::function<void(const std::string&)> on_lock_wait;
   double checkpoint_seconds = 300;  // periodic checkpoints (0: only when stopping early)
-  // t_first/proxy values held in memory before they go to the state's values file (8 MB; the
-  // file is read back for the quantiles). Tests make it small.
+  // t_first/proxy values held in memory before they go to the state's values file (8 MB).
   std::size_t values_in_memory = std::size_t(1) << 20;
 };
 
@@ -59,11 +54,10 @@ struct sweep_report {
 // gyrores-sweep.resume.
 std::string sweep_default_state_path(const sweep_files& f);
 
-// The files of one sweep run, from opening (fresh, or restored from the resume state) through the
-// blocks and checkpoints to the end: the run itself (the engine in its working type) is the
-// application layer's (app/sweep.hpp). `cfg` is validated, min_order >= 3; `run` is its run
-// description (sweep_run_json). usage_error for a file that cannot be written or read, or a
-// resume state that is missing, for another sweep or inconsistent (docs/formats.md).
+// From opening (fresh, or restored from the resume state) through the blocks and checkpoints to
+// the end. `cfg` is validated, min_order >= 3; `run` is sweep_run_json's. usage_error for a file
+// that cannot be written or read, or a resume state that is missing, for another sweep or
+// inconsistent.
 class sweep_file_session {
  public:
   sweep_file_session(const sweep_config& cfg, const sweep_files& files, const json& run, const sweep_progress& progress);

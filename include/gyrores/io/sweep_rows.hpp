@@ -1,93 +1,72 @@
-// The rows file of a sweep (`gyrores sweep --out FILE`): one row per pair in CSV or JSON Lines,
-// between a first line carrying the run description and an end line. Columns, kinds and the
-// framing lines are documented in docs/formats.md (sweep rows); a merge reads rows back into
-// the records the summary needs.
+// The run description of a sweep, which its rows file, summary and resume state carry, and the
+// rows file (`gyrores sweep --out FILE`) written and read back for a merge. Keys, columns and
+// framing lines: docs/formats.md (sweep rows, `{run}`, sweep format versions).
 #pragma once
-#include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include <gyrores/core/real.hpp>
 #include <gyrores/io/json.hpp>
-#include <gyrores/io/sweep_run.hpp>
 #include <gyrores/sweep/sweep.hpp>
 
 namespace gyrores {
 
-enum class sweep_format { csv, jsonl };
-
-// "csv" or "jsonl"; usage_error otherwise.
-sweep_format sweep_parse_format(const std::string& s);
-const char* sweep_format_name(sweep_format f);
-
-// The columns of a row, in order.
-const std::vector<std::string>& sweep_row_columns();
-
-// Appends the fields of one row in order: integers and booleans bare, text quoted (CSV: only
-// when needed; JSON: always), null = not applicable (empty CSV field, JSON null).
-class sweep_row_writer {
- public:
-  sweep_row_writer(std::string& out, sweep_format fmt) : out_(out), fmt_(fmt) {}
-  void integer(std::int64_t v);
-  void boolean(bool v);
-  void tri(int v);  // -1: null, else a boolean
-  void text(const std::string& v);
-  void null();
-  // The status columns, `failed`, `note`, and the end of the line (what every row ends with).
-  void finish(const std::array<sweep_status, sweep_check_count>& status, bool failed, const std::string& note);
-
- private:
-  void next_key();
-  std::string& out_;
-  sweep_format fmt_;
-  std::size_t col_ = 0;
-};
-
-// Appends one row (with its newline) in the given format; reals with sweep_real_text(v, digits).
-template <class T> void sweep_format_row(std::string& out, const sweep_row<T>& r, sweep_format fmt, unsigned digits) {
-  sweep_row_writer w(out, fmt);
-  auto real = [&](bool have, const T& v) {
-    if (have) w.text(sweep_real_text(v, digits));
-    else w.null();
-  };
-  const bool ok = !r.failed;
-  w.integer(r.tau);
-  w.integer(r.sigma);
-  w.integer(r.tau + r.sigma);
-  w.integer(r.delta_mod4);
-  real(ok, r.r_res);
-  real(ok, r.theta_first);
-  real(ok, r.t_first);
-  real(ok, r.t_min_paper);
-  real(ok && r.has_ratio, r.t_ratio);
-  w.tri(ok ? r.first_at_paper_node : -1);
-  w.tri(ok ? r.paper_lobe_min : -1);
-  real(ok && r.has_asy, r.asy_error);
-  real(ok && r.has_asy, r.asy_bound);
-  real(ok && r.has_asy, r.asy_ratio);
-  real(ok && r.has_asy, r.asy_constant);
-  if (ok) w.integer(r.minimiser_count);
-  else w.null();
-  w.integer(r.strand_offset);
-  w.finish(r.status, r.failed, r.note);
+// {min_order (at least 3), max_order, shard, checks, max_examples, type, digits, method[,
+// certified: true]}; `digits` is that of the rows' reals (17 for double).
+json sweep_run_json(const sweep_config& c, const std::string& type, unsigned digits);
+template <class T> json sweep_run_json(const sweep_config& c) {
+  return sweep_run_json(c, sweep_type_name<T>(c), std::is_same_v<T, double> ? 17u : c.digits);
 }
 
-// Compiled once in src/io/sweep_rows.cpp for the compiled reals (core/real.hpp).
-#define GYRORES_SWEEP_ROWS_INSTANCES(PREFIX, T) \
-  PREFIX template void sweep_format_row<T>(std::string&, const sweep_row<T>&, sweep_format, unsigned);
-GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_ROWS_INSTANCES, extern)
+// Version 1 (the rows' first line had no version) had the check cross-check, its rows column and
+// the run's cross_check_max_order.
+inline constexpr int sweep_format_version = 2;
 
-// The first line(s): CSV "# gyrores-sweep-rows/2 {run}" and the column header; JSONL
-// {"gyrores_sweep_rows": run, "version": 2} (2: sweep_format_version).
+// A run description read from a file of format `version` (1 or 2), as this version writes it:
+// version 1's cross_check_max_order dropped (its rows' values are the same). usage_error naming
+// `path` for a version-1 run that checked cross-check, whose verdicts this version cannot carry.
+json sweep_run_of_version(json run, std::int64_t version, const std::string& path);
+
+// The rows come from the lattice theorem's root (sweep/evaluate.hpp). Files of earlier versions
+// have no `method`: a resume or a merge refuses to mix them with these.
+inline constexpr const char* sweep_rows_method = "lattice-theorem/1";
+
+// Why a file described by `found` cannot continue or join the sweep described by `wanted`: one
+// clause without a full stop.
+std::string sweep_run_mismatch(const json& found, const json& wanted);
+
+// A finished sweep output read back (rows file or shard summary), for a merge.
+struct sweep_input {
+  std::string path;
+  json run;               // shard included
+  sweep_accumulator acc;  // with every t_first/proxy value
+  double seconds = 0;
+};
+
+// One CSV field, quoted (quotes doubled) only if it holds a comma, a quote or a line break; and
+// the fields of one line read back (RFC 4180, no line breaks inside fields).
+void csv_append_field(std::string& out, std::string_view v);
+std::vector<std::string> csv_split_line(std::string_view line);
+
+enum class sweep_format { csv, jsonl };
+sweep_format sweep_parse_format(const std::string& s);  // "csv" or "jsonl"
+const char* sweep_format_name(sweep_format f);
+const std::vector<std::string>& sweep_row_columns();
+
+// Appends one row (with its newline); reals as sweep_real_text(v, digits). Compiled for the
+// compiled reals (core/real.hpp).
+template <class T> void sweep_format_row(std::string& out, const sweep_row<T>& r, sweep_format fmt, unsigned digits);
+
+// The first line(s), carrying `run`, and the end line.
 std::string sweep_rows_header(const json& run, sweep_format fmt);
-// The end line: {"pairs", "seconds"} after "# end " (CSV) or as {"gyrores_sweep_end": ...}.
 std::string sweep_rows_trailer(std::uint64_t pairs, double seconds, sweep_format fmt);
 
-// A rows file (CSV or JSONL, detected from its first line) read back: the run description (of
-// this version: sweep_run_of_version) and the accumulator of its rows (exact text of the extremes
-// kept for types wider than double). usage_error if the file cannot be read, is not a rows file,
-// is malformed, has no end line (the sweep that wrote it did not finish), or is of a version
-// sweep_run_of_version refuses.
+// A rows file read back, its reals' exact text kept for types wider than double. usage_error if
+// it is not a rows file, is malformed, has no end line (its sweep did not finish) or is of a
+// version sweep_run_of_version refuses.
 sweep_input sweep_read_rows(const std::string& path);
 
 }  // namespace gyrores
