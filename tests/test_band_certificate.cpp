@@ -343,6 +343,60 @@ TEST_CASE("band certificates: each kind tampered", "[band][certificate]") {
   }
 }
 
+TEST_CASE("band certificates: a bogus value in every field a kind leaves unused is refused", "[band][certificate]") {
+  // Each case (the claim's side, the interval's kind and flags; the first interval of each in four
+  // bands) leaves some fields unused: the line's k (0 unless a line kind), unreached in absorption,
+  // reached in containment (false); `at.below` (null: the band reads only the minimum). A plausible
+  // bogus value planted there must be refused, naming the interval and the field.
+  const auto around2 = parse_tolerance_band(big_rational(2), "1%", "--tolerance");
+  std::map<std::string, std::size_t> unused_of;  // case -> unused fields planted
+  std::size_t planted = 0;
+  for (const auto& [n1, n2, T] : {std::tuple<std::string, std::string, std::string>{rational_str(around2.first), rational_str(around2.second), "1000000"},
+                                  {"2", "12/5", "4"}, {"3/10", "3", "5"}, {"38/5", "42/5", "3"}}) {
+    const checker_json& good = certificate(n1, n2, T);
+    REQUIRE(check(good).status == 0);
+    for (const std::string side : {"absorption", "containment"}) {
+      const bool absorption = side == "absorption";
+      // at.below: a true statement (E = 1/2 is reached at t = 0 by every coupling), but unused.
+      checker_json j = good;
+      j[side]["at"]["below"] = checker_json{{"level", "1/2"}, {"case", "start"}, {"lobe", nullptr}, {"level_root", nullptr},
+                                            {"delta", nullptr}, {"root", nullptr}, {"crossing", nullptr}, {"t_below", {"0", "0"}}};
+      refused(j, side + ".at.below must be null", 2);
+      unused_of[side + " at"] = 1;
+      const checker_json& cover = good[side]["cover"];
+      for (std::size_t i = 0; i < cover.size(); ++i) {
+        const checker_json& J = cover[i];
+        const std::string kind = J["kind"].get<std::string>(), name = side + " " + kind + (J["reached"].get<bool>() ? " reached" : "") +
+                                                                   (J["unreached"].get<bool>() ? " unreached" : "");
+        if (unused_of.count(name)) continue;
+        std::vector<std::pair<std::string, checker_json>> plants;
+        const bool line = kind.rfind("line_", 0) == 0;
+        CHECK(J["k"] == (line ? J["k"] : checker_json("0")));  // the producer writes the unused k as 0
+        if (!line) plants.push_back({"k", "1"}), plants.push_back({"k", J["K"].get<std::string>() == "0" ? "2" : J["K"]});
+        if (absorption) plants.push_back({"unreached", true});
+        else plants.push_back({"reached", true});
+        const std::string where = side + ".cover[" + std::to_string(i) + "]";
+        std::set<std::string> fields;
+        for (const auto& [key, value] : plants) {
+          checker_json t = good;
+          t[side]["cover"][i][key] = value;
+          const auto v = check(t);
+          INFO(name << ": " << where << "." << key << " = " << value.dump() << " -> " << v.message);
+          CHECK(v.status == 1);
+          CHECK(v.message.find(where + ": " + key + " must be") != std::string::npos);
+          fields.insert(key);
+        }
+        unused_of[name] = fields.size();
+      }
+    }
+  }
+  for (const auto& [name, n] : unused_of) planted += n;
+  WARN("band certificate unused-field pass: " << planted << " fields over " << unused_of.size() << " cases");
+  // The nine cases of the kinds test above, and at.below on both sides.
+  CHECK(unused_of.size() == 9 + 2);
+  CHECK(planted == 2 + 2 + 4 + 2 + 2 + 2 + 2);
+}
+
 TEST_CASE("gyrores coupling --band --certificate, then gyrores check", "[cli][band][certificate]") {
   if (!test::cli_available()) return;
   test::temp_dir dir("band_certificate");

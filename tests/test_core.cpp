@@ -13,6 +13,7 @@
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/real.hpp>
+#include <gyrores/model/inputs.hpp>
 
 using gyrores::mpfr_real;
 
@@ -175,4 +176,27 @@ TEST_CASE("enclosure: outward decimals as text and as exact rationals agree", "[
         std::pair<big_rational, big_rational>{big_rational(3, 10), big_rational(3, 10)});
   CHECK(enclosure::exact(big_rational(1, 3)).report(3)->value == "3.33e-01");
   CHECK(enclosure().report(4)->enclosure == std::pair<std::string, std::string>{"0.000000e+00", "0.000000e+00"});
+}
+
+TEST_CASE("an input quoted in a usage_error is shown on one line", "[core]") {
+  // Found by the fuzz target coupling_inputs (tests/fuzz/corpus/coupling_inputs/regression-newline-in-n):
+  // a newline inside an argument made the refusal two lines.
+  const auto message = [](auto f) {
+    try {
+      f();
+    } catch (const gyrores::usage_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  for (const std::string m : {message([] { gyrores::parse_rational(".2\n4", "N"); }),
+                              message([] { gyrores::parse_rational("1/2\n", "--n2"); }),
+                              message([] { gyrores::parse_big_int("12\x01", "tau"); }),
+                              message([] { gyrores::parse_band("1\n2", "--band"); }),
+                              message([] { gyrores::parse_tolerance_band(2, "5\n", "--tolerance"); })}) {
+    INFO(m);
+    CHECK(m != "accepted");
+    CHECK(m.find('\n') == std::string::npos);
+    CHECK((m.find("\\n") != std::string::npos || m.find("\\x01") != std::string::npos));
+  }
 }

@@ -46,3 +46,40 @@ TEST_CASE("gyrores check dispatches coupling certificates to their checker", "[c
   CHECK(r.status == 0);
   CHECK(r.out.find("lattice-theorem/1") != std::string::npos);
 }
+
+TEST_CASE("gyrores check refuses a never certificate with its unused fields filled in", "[cli][certificate][horizon]") {
+  // The forgery of issue 36: the (6, 5) coupling (n^2 = 1/30) never goes below 1e-4 (its minimum
+  // is 0.0012876...); its certificate says "never", and t_below, crossing and root are unused.
+  if (!test::cli_available()) return;
+  test::temp_dir dir("coupling_certificate_forged");
+  const std::string good = dir / "c.json", forged = dir / "forged.json", wrapped = dir / "wrapped.json";
+  auto r = test::cli_run("coupling --n2 1/30 --horizon 100 --below 1e-4 --certificate " + good);
+  REQUIRE(r.status == 0);
+  std::ifstream in(good);
+  json j = json::parse(in);
+  REQUIRE(j["below"]["case"] == "never");
+  REQUIRE(test::cli_run("check " + good).status == 0);
+  json f = j;
+  f["below"]["t_below"] = json::array({"4.5", "4.6"});
+  f["below"]["crossing"] = json::array({"1", "1.1"});
+  f["below"]["root"] = json::array({"0.5", "0.6"});
+  std::ofstream(forged) << json_dump(f);
+  r = test::cli_run("check " + forged);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("must be null: case never does not use it") != std::string::npos);
+  CHECK(test::count_lines(r.err) == 1);
+  // Only t_below planted (the issue's first step): refused too, naming it.
+  f = j;
+  f["below"]["t_below"] = json::array({"4.5", "4.6"});
+  std::ofstream(forged) << json_dump(f);
+  r = test::cli_run("check " + forged);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("below.t_below must be null") != std::string::npos);
+  // A lobe side of 2^64 - 1 (not -1) in the minimum.
+  f = j;
+  f["minimum"]["lobe"]["side"] = json::parse("18446744073709551615");
+  std::ofstream(wrapped) << json_dump(f);
+  r = test::cli_run("check " + wrapped);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("lobe.side must be an integer in [-1, 1]") != std::string::npos);
+}

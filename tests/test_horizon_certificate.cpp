@@ -17,6 +17,7 @@
 
 #include <functional>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -349,7 +350,8 @@ TEST_CASE("first time below a level: every field tampered is refused, naming it"
       const big_rational level = parse_rational(j["below"]["level"].get<std::string>(), "E");
       j["below"]["level"] = rational_str(level == 0 ? big_rational(1, 1000) : level / 2);
     });
-    add("case changed", "below.case",
+    // Another case: its own checks, or a field the new case leaves unused, named with the case.
+    add("case changed", "case",
         [](json& j) { j["below"]["case"] = j["below"]["case"] == "never" ? "lobe" : "never"; });
     add("case unknown", "below.case", [](json& j) { j["below"]["case"] = "sometimes"; });
     if (!b["lobe"].is_null()) {
@@ -397,4 +399,160 @@ TEST_CASE("first time below a level: a later lobe that also reaches E is refused
   INFO("later lobe " << later << ": " << v.message);
   CHECK(v.status == 1);
   CHECK(v.message.find("below.lobe.k") != std::string::npos);
+}
+
+namespace {
+
+// ---- Every field of every case (issue 36): for each case of the format, each of its fields
+// changed in turn. A field the case leaves unused (null, docs/formats.md) gets plausible bogus
+// values planted (the issue's ["4.5", "4.6"], a genuine bracket or lobe copied from elsewhere in
+// the certificate); a used field is moved off its true value; integers get values that would wrap
+// a machine integer. Each tamper must be refused, and a planted unused field named.
+struct format_case {
+  std::string name;
+  json cert;
+  std::set<std::string> unused;  // "minimum.lobe", "below.t_below", ...: null in this case
+};
+
+std::vector<format_case> format_cases() {
+  const auto minimum = [](const std::string& n2, const std::string& T) {
+    return certificate_json(coupling_spec::from_n2(parse_rational(n2, "n2")), parse_rational(T, "T"), 20);
+  };
+  return {
+      {"minimum in a lobe (n^2 = 4, T = 37)", minimum("4", "37"), {}},
+      {"minimum at the end, a lobe admissible (n^2 = 4, T = 2.2)", minimum("4", "2.2"), {}},
+      {"minimum at the end, no lobe admissible (n^2 = 4, T = 0.5)", minimum("4", "0.5"), {"minimum.lobe", "minimum.root"}},
+      {"below start (n^2 = 4, E = 1/2)", below_json("4", "1/2", 20),
+       {"below.lobe", "below.level_root", "below.delta", "below.root", "below.crossing"}},
+      {"below zero (n^2 = 4/99, E = 0)", below_json("4/99", "0", 20),
+       {"below.level_root", "below.delta", "below.root", "below.crossing"}},
+      {"below never, E = 0 (n^2 = 4)", below_json("4", "0", 20),
+       {"below.lobe", "below.level_root", "below.delta", "below.root", "below.crossing", "below.t_below"}},
+      {"below never, E > 0 (n^2 = 1/30, E = 1e-4)", below_json("1/30", "1e-4", 20),
+       {"below.lobe", "below.root", "below.crossing", "below.t_below"}},
+      {"below lobe 0 (n^2 = 4, E = 0.3)", below_json("4", "0.3", 20), {"below.level_root", "below.delta"}},
+      {"below crossing in lobe k >= 1 (n^2 = 4, E = 1e-6)", below_json("4", "1e-6", 20), {}},
+  };
+}
+
+// A decimal end moved off its value: v -> 1.01 v + 10^-3 (an exact 0 becomes 10^-3).
+json moved(const json& bracket) {
+  json out = json::array();
+  for (const auto& end : bracket)
+    out.push_back(format_rational_scientific(parse_rational(end.get<std::string>(), "end") * big_rational(101, 100) +
+                                                 big_rational(1, 1000), 30));
+  return out;
+}
+
+// The tampers of one field of `cert`, each a replacement of the field's value.
+std::vector<std::pair<std::string, json>> tampers(const json& cert, const std::string& section, const std::string& key) {
+  const json& v = section.empty() ? cert[key] : cert[section][key];
+  const std::string wrap = "18446744073709551615";  // 2^64 - 1: -1 in a 64-bit signed integer
+  std::vector<std::pair<std::string, json>> t;
+  if (v.is_null()) {  // unused: plausible bogus values
+    if (key == "lobe") {
+      const json& genuine = cert["minimum"]["lobe"];
+      t.push_back({"a genuine-looking lobe", genuine.is_null() ? json{{"k", "1"}, {"j", "0"}, {"side", 1}} : genuine});
+      t.push_back({"lobe 0", json{{"k", "0"}, {"j", "0"}, {"side", 1}}});
+    } else {
+      t.push_back({"[\"4.5\", \"4.6\"]", json::array({"4.5", "4.6"})});
+      t.push_back({"a genuine bracket (cut_root)", cert["minimum"]["cut_root"]});
+      t.push_back({"[\"0\", \"0\"]", json::array({"0", "0"})});
+    }
+    return t;
+  }
+  if (v.is_boolean()) t.push_back({"flipped", !v.get<bool>()});
+  else if (v.is_number()) {
+    t.push_back({"+ 8", v.get<long>() + 8});
+    t.push_back({"2^64 - 1", json::parse(wrap)});
+    t.push_back({"-1", -1});
+  } else if (v.is_array()) t.push_back({"moved", moved(v)});
+  else if (v.is_object()) {  // a lobe
+    for (const std::string f : {"k", "j"}) {
+      json l = v;
+      l[f] = (big_int(v[f].get<std::string>()) + 1).str();
+      t.push_back({f + " + 1", l});
+      l[f] = "-1";
+      t.push_back({f + " = -1", l});
+      l[f] = wrap;
+      t.push_back({f + " = 2^64 - 1", l});
+    }
+    for (const json side : {json(v["side"].get<int>() == 1 ? -1 : 1), json::parse(wrap), json(2), json(-2)}) {
+      json l = v;
+      l["side"] = side;
+      t.push_back({"side " + side.dump(), l});
+    }
+  } else if (key == "format") t.push_back({"another format", "gyrores-coupling-certificate/2"});
+  else if (key == "theorem") t.push_back({"another theorem", "horizon-theorem/2"});
+  else if (key == "case") {
+    for (const std::string k : {"start", "zero", "never", "lobe"})
+      if (k != v.get<std::string>()) t.push_back({"case " + k, k});
+  } else if (key == "cut_lobe") {
+    t.push_back({"+ 1", plus_one(v)});
+    t.push_back({"-1", "-1"});
+  } else {  // the rationals n2, horizon, level (a level raised from 1/2 would still be case start)
+    const big_rational q = parse_rational(v.get<std::string>(), key);
+    if (key == "n2") t.push_back({"x 1.000001", rational_str(q * big_rational(1000001, 1000000))});
+    if (key == "horizon") t.push_back({"x 2", rational_str(q * 2)});
+    t.push_back({"/ 2", rational_str(q == 0 ? big_rational(1, 1000) : q / 2)});
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("every field of every case, changed or planted where unused, is refused", "[certificate][horizon]") {
+  std::size_t fields = 0, unused = 0, checks = 0;
+  const std::vector<std::string> top{"format", "theorem", "n2", "horizon", "digits"},
+      minimum{"cut_lobe", "cut_lobe_reached", "cut_root", "lobe", "root", "at_horizon_end", "h_min", "t_min"},
+      below{"level", "case", "lobe", "level_root", "delta", "root", "crossing", "t_below"};
+  const auto cases = format_cases();
+  for (const auto& fc : cases) {
+    INFO(fc.name);
+    REQUIRE(check(fc.cert).status == 0);
+    std::vector<std::pair<std::string, std::string>> keys;  // (section, key)
+    for (const auto& k : top) keys.push_back({"", k});
+    for (const auto& k : minimum) keys.push_back({"minimum", k});
+    if (!fc.cert["below"].is_null())
+      for (const auto& k : below) keys.push_back({"below", k});
+    for (const auto& [section, key] : keys) {
+      const std::string path = section.empty() ? key : section + "." + key;
+      const json& genuine = section.empty() ? fc.cert[key] : fc.cert[section][key];
+      // The producer writes null exactly in the fields this case leaves unused (docs/formats.md).
+      INFO(path);
+      CHECK(genuine.is_null() == (fc.unused.count(path) == 1));
+      ++fields;
+      unused += genuine.is_null();
+      for (const auto& [what, value] : tampers(fc.cert, section, key)) {
+        json j = fc.cert;
+        (section.empty() ? j[key] : j[section][key]) = value;
+        const auto v = check(j);
+        INFO(path << " " << what << ": " << v.message);
+        CHECK(v.status != 0);
+        CHECK(v.message.find('\n') == std::string::npos);
+        if (genuine.is_null()) CHECK(v.message.find(key) != std::string::npos);
+        ++checks;
+      }
+    }
+  }
+  // 3 minimum cases x 13 fields, 6 below cases x 21 fields; 23 of them unused by their case.
+  WARN("coupling certificate tamper pass: " << fields << " fields over " << cases.size() << " cases, " << unused
+                                            << " unused fields planted, " << checks << " tampers");
+  CHECK(cases.size() == 9);
+  CHECK(fields == 3 * 13 + 6 * 21);
+  CHECK(unused == 2 + 5 + 4 + 6 + 4 + 2);
+}
+
+TEST_CASE("the issue's forgery: a never certificate with t_below, crossing, root planted", "[certificate][horizon]") {
+  // n^2 = 1/30: the (6, 5) coupling, resonant, never below 1e-4 (its minimum is 0.0012876...).
+  json cert = json::parse(certificate_text(coupling_spec::from_n2(big_rational(1, 30)), 100, parse_rational("1e-4", "E"), 12));
+  REQUIRE(cert["below"]["case"] == "never");
+  REQUIRE(check(cert).status == 0);
+  cert["below"]["t_below"] = json::array({"4.5", "4.6"});
+  cert["below"]["crossing"] = json::array({"1", "1.1"});
+  cert["below"]["root"] = json::array({"0.5", "0.6"});
+  const auto v = check(cert);
+  INFO(v.message);
+  CHECK(v.status == 2);
+  CHECK(v.message.find("must be null") != std::string::npos);
 }

@@ -638,10 +638,10 @@ void check_interval(const ctx& C, const interval& J, bool absorption, const std:
       if (!reached_on(C, K, a, b, A, Bb)) throw fails(where + ": reached is true, but lobe k_c(a) is not proved reached on the interval");
     }
     if (!fmpz_equal(K.v, J.K.v)) throw fails(where + ": K is not " + std::string(J.reached ? "k_c(a)" : "k_c(a) - 1") + " = " + text_of(K));
+    if ((J.kind == "end_point" || J.kind == "lobes") && !fmpz_is_zero(J.k.v)) throw fails(where + ": k must be 0 for kind " + J.kind);
     if (J.kind == "end_point") return end_point_bound(C, a, b, printed, true, 0, where);
     if (fmpz_sgn(K.v) < 0) throw fails(where + ": kind " + J.kind + " needs K >= 0 (no lobe is admissible)");
     if (J.kind == "lobes") {
-      if (!fmpz_is_zero(J.k.v)) throw fails(where + ": k must be 0 for kind lobes");
       if (fmpz_is_zero(K.v)) return against(V(C, A, C.half, +1), printed, true, where);
       B top = ball_qd(a.F, F_of(a, K), C.prec), fb = ball_qd(b.F, F_of(b, K), C.prec);
       arb_max(top.v, top.v, fb.v, C.prec);
@@ -739,6 +739,7 @@ void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, c
   const json& at = j["at"];
   if (!at.is_object() || !at.contains("n2") || !at.contains("horizon") || !at.contains("minimum"))
     throw malformed(which + ".at must be a coupling certificate");
+  if (!at.contains("below") || !at["below"].is_null()) throw malformed(which + ".at.below must be null: the band does not use it");
   const Qr at2 = rational_of(at["n2"], which + ".at.n2");
   if (fmpq_cmp(at2.v, n1sq.v) < 0 || fmpq_cmp(at2.v, n2sq.v) > 0) throw fails(which + ".at: the coupling is not in the band");
   if (at["horizon"] != horizon_text) throw fails(which + ".at: its horizon is not the certificate's");
@@ -820,9 +821,7 @@ verdict check_band_certificate(const std::string& json_text) {
     exact_keys(j, {"format", "theorem", "n1", "n2", "horizon", "digits", "absorption", "containment"}, "the certificate");
     if (j["format"] != band_certificate_format) throw malformed(std::string("format is not ") + band_certificate_format);
     if (j["theorem"] != "band-theorem/1") throw fails("theorem is not band-theorem/1 (the one this checker knows)");
-    if (!j["digits"].is_number_integer()) throw malformed("digits must be an integer");
-    const long digits = j["digits"].get<long>();
-    if (digits < 1) throw malformed("digits must be >= 1");
+    const long digits = integer_in(j["digits"], "digits", 1, 1L << 30);
     if (digits > band_max_digits) throw fails("work bound: digits above " + std::to_string(band_max_digits));
     const Qr n1 = rational_of(j["n1"], "n1"), n2 = rational_of(j["n2"], "n2"), T = rational_of(j["horizon"], "horizon");
     if (fmpq_cmp(n1.v, n2.v) >= 0) throw fails("the band needs n1 < n2");

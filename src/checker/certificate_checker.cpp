@@ -76,13 +76,10 @@ certificate read(const std::string& text) {
   certificate c;
   c.tau = integer_field(j["tau"], "tau", false);
   c.sigma = integer_field(j["sigma"], "sigma", false);
-  if (!j["digits"].is_number_integer() || !j["m_min"].is_number_integer() || !j["minimiser_count"].is_number_integer() ||
-      !j["degenerate"].is_boolean())
-    throw malformed("digits, m_min, minimiser_count must be integers and degenerate a boolean");
-  c.digits = j["digits"].get<long>();
-  if (c.digits < 1 || c.digits > 10000) throw malformed("digits must be in [1, 10000]");
-  c.m_min = j["m_min"].get<long>();
-  c.count = j["minimiser_count"].get<long>();
+  if (!j["degenerate"].is_boolean()) throw malformed("degenerate must be a boolean");
+  c.digits = integer_in(j["digits"], "digits", 1, 10000);
+  c.m_min = integer_in(j["m_min"], "m_min", 0, 2);
+  c.count = integer_in(j["minimiser_count"], "minimiser_count", 0, 4);
   c.degenerate = j["degenerate"].get<bool>();
   const auto& lobes = j["minimiser_lobes"];
   if (!lobes.is_array() || lobes.size() > 4) throw malformed("minimiser_lobes must be an array of at most 4 lobes");

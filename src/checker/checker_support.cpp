@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <set>
 #include <vector>
 
@@ -82,6 +83,14 @@ void exact_keys(const json& j, const std::set<std::string>& keys, const std::str
     if (!keys.count(it.key())) throw malformed("unknown field '" + it.key() + "' in " + where);
   for (const auto& key : keys)
     if (!j.contains(key)) throw malformed("missing field '" + key + "' in " + where);
+}
+
+long integer_in(const json& j, const std::string& name, long lo, long hi) {
+  // nlohmann reads 0..2^64-1 as unsigned, negatives as signed: compare before any conversion.
+  const bool ok = j.is_number_unsigned() ? j.get<std::uint64_t>() <= std::uint64_t(hi) && long(j.get<std::uint64_t>()) >= lo
+                  : j.is_number_integer() && j.get<std::int64_t>() >= lo && j.get<std::int64_t>() <= hi;
+  if (!ok) throw malformed(name + " must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return long(j.get<std::int64_t>());
 }
 
 B lobe_H(const B& x, const B& u, long prec) {

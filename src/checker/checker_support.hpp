@@ -78,6 +78,9 @@ std::string one_line(const std::string& s);
 // Malformed unless j is an object with exactly the fields `keys` (`where` names it in the message).
 void exact_keys(const json& j, const std::set<std::string>& keys, const std::string& where);
 
+// A JSON integer in [lo, hi] (0 <= hi), read exactly (no wrap: 2^64 - 1 is not -1), else malformed.
+long integer_in(const json& j, const std::string& name, long lo, long hi);
+
 // The lobe equations of the checkers, in balls (proofs/horizon-theorem.md, Notation):
 // H(u) = x u + atan2(x sin u, cos u) for |u| < pi/2, and
 // G(u) = (1 - x^2) x^2 sin^4 u/(cos^2 u + x^2 sin^2 u), R at a lobe minimiser (lattice-theorem.md Step C).

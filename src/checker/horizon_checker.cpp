@@ -98,8 +98,7 @@ lobe_data lobe_field(const json& j, const std::string& name) {
   lobe_data l;
   l.k = integer_field(j["k"], name + ".k");
   l.j = integer_field(j["j"], name + ".j");
-  if (!j["side"].is_number_integer()) throw malformed(name + ".side must be -1, 0 or 1");
-  l.side = j["side"].get<long>();
+  l.side = integer_in(j["side"], name + ".side", -1, 1);
   return l;
 }
 
@@ -116,9 +115,7 @@ certificate read(const std::string& text) {
   if (j["format"] != coupling_certificate_format) throw malformed(std::string("format is not ") + coupling_certificate_format);
   if (j["theorem"] != "horizon-theorem/1") throw fails("theorem is not horizon-theorem/1 (the one this checker knows)");
   certificate c;
-  if (!j["digits"].is_number_integer()) throw malformed("digits must be an integer");
-  c.digits = j["digits"].get<long>();
-  if (c.digits < 1 || c.digits > 10000) throw malformed("digits must be in [1, 10000]");
+  c.digits = integer_in(j["digits"], "digits", 1, 10000);
   rational_field(j["n2"], "n2", c.P, c.Q);
   rational_field(j["horizon"], "horizon", c.Tn, c.Td);
   const json& m = j["minimum"];
@@ -132,11 +129,7 @@ certificate read(const std::string& text) {
   c.has_lobe = !m["lobe"].is_null();
   if (c.has_lobe != !m["root"].is_null()) throw malformed("lobe and root must both be null or both be given");
   if (c.has_lobe) {
-    exact_keys(m["lobe"], {"k", "j", "side"}, "lobe");
-    c.lobe.k = integer_field(m["lobe"]["k"], "lobe.k");
-    c.lobe.j = integer_field(m["lobe"]["j"], "lobe.j");
-    if (!m["lobe"]["side"].is_number_integer()) throw malformed("lobe.side must be -1, 0 or 1");
-    c.lobe.side = m["lobe"]["side"].get<long>();
+    c.lobe = lobe_field(m["lobe"], "lobe");
     c.root = bracket_field(m["root"], "root", max_len);
   }
   c.h_min = bracket_field(m["h_min"], "h_min", max_len);
@@ -152,6 +145,17 @@ certificate read(const std::string& text) {
       throw malformed("below.case must be start, lobe, zero or never");
     c.below_has_lobe = !b["lobe"].is_null();
     if (c.below_has_lobe) c.below_lobe = lobe_field(b["lobe"], "below.lobe");
+    // The fields each case uses (docs/formats.md); any other must be null, never an unread claim.
+    const std::string& k = c.below_case;
+    const bool lobe0 = k == "lobe" && c.below_has_lobe && fmpz_is_zero(c.below_lobe.k.v);
+    std::set<std::string> used{"level", "case"};
+    if (k != "never") used.insert("t_below");
+    if (k == "zero" || k == "lobe") used.insert("lobe");
+    if (k == "lobe") used.insert({"root", "crossing"});
+    if ((k == "lobe" && !lobe0) || (k == "never" && !fmpz_is_zero(c.En.v))) used.insert({"level_root", "delta"});
+    for (auto it = b.begin(); it != b.end(); ++it)
+      if (!used.count(it.key()) && !it.value().is_null())
+        throw malformed("below." + it.key() + " must be null: case " + k + (lobe0 ? " (lobe 0)" : "") + " does not use it");
     c.level_root = optional_bracket(b["level_root"], "below.level_root", max_len);
     c.delta = optional_bracket(b["delta"], "below.delta", max_len);
     c.below_root = optional_bracket(b["root"], "below.root", max_len);

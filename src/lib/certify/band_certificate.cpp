@@ -47,7 +47,10 @@ band_certificate_claim claim_of(const band_extreme& e, const horizon_time& T, un
     I.b = J.b.spec.n2;
     I.kind = band_bound_kind_name(J.kind);
     I.K = J.K;
-    I.k = J.k;
+    // The line's lobe; 0 for the kinds that have none (the checker refuses any other value there:
+    // docs/formats.md, a field a kind leaves unused is at its fixed value).
+    const bool line = J.kind != band_bound_kind::lobes && J.kind != band_bound_kind::end_point;
+    I.k = line ? J.k : big_int(0);
     I.reached = J.reached;
     I.unreached = J.unreached;
     const big_rational b = bound_out(J.bound, digits, absorption);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/quote.hpp>
 
 namespace gyrores {
 
@@ -172,9 +173,9 @@ bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digit
 big_int parse_big_int(const std::string& text, const std::string& what) {
   std::size_t i = 0;
   if (!text.empty() && (text[0] == '+' || text[0] == '-')) i = 1;
-  if (i == text.size()) throw usage_error(what + " must be an integer, got '" + text + "'");
+  if (i == text.size()) throw usage_error(what + " must be an integer, got '" + shown_input(text) + "'");
   for (std::size_t k = i; k < text.size(); ++k)
-    if (text[k] < '0' || text[k] > '9') throw usage_error(what + " must be an integer, got '" + text + "'");
+    if (text[k] < '0' || text[k] > '9') throw usage_error(what + " must be an integer, got '" + shown_input(text) + "'");
   // Strip leading zeros: GMP would read "011" as octal.
   const std::size_t first = text.find_first_not_of('0', i);
   const std::string digits = first == std::string::npos ? "0" : text.substr(first);

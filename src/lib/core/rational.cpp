@@ -5,13 +5,14 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/quote.hpp>
 
 namespace gyrores {
 namespace {
 
 // The value of a decimal "[+-]digits[.digits][(e|E)[+-]digits]" as p/10^k, exactly.
 big_rational parse_decimal_exact(const std::string& text, const std::string& what) {
-  auto bad = [&]() { return usage_error(what + " must be a decimal or a fraction P/Q, got '" + text + "'"); };
+  auto bad = [&]() { return usage_error(what + " must be a decimal or a fraction P/Q, got '" + shown_input(text) + "'"); };
   std::size_t i = 0;
   bool neg = false;
   if (text[i] == '+' || text[i] == '-') neg = text[i++] == '-';
@@ -40,7 +41,7 @@ big_rational parse_decimal_exact(const std::string& text, const std::string& wha
     exp10 = std::stol(e);
   }
   const long shift = exp10 - frac;
-  if (shift > 100000 || shift < -100000) throw usage_error(what + ": exponent out of range in '" + text + "'");
+  if (shift > 100000 || shift < -100000) throw usage_error(what + ": exponent out of range in '" + shown_input(text) + "'");
   big_int num = parse_big_int(digits, what), den(1);
   const big_int ten_pow = boost::multiprecision::pow(big_int(10), unsigned(shift < 0 ? -shift : shift));
   if (shift >= 0) num *= ten_pow;
@@ -58,9 +59,9 @@ big_rational parse_rational(const std::string& text, const std::string& what) {
   const std::string p = text.substr(0, slash), q = text.substr(slash + 1);
   const big_int num = parse_big_int(p, what + " (numerator)");
   if (q.empty() || q[0] == '+' || q[0] == '-')
-    throw usage_error(what + " must be a decimal or a fraction P/Q, got '" + text + "'");
+    throw usage_error(what + " must be a decimal or a fraction P/Q, got '" + shown_input(text) + "'");
   const big_int den = parse_big_int(q, what + " (denominator)");
-  if (den == 0) throw usage_error(what + ": denominator is zero in '" + text + "'");
+  if (den == 0) throw usage_error(what + ": denominator is zero in '" + shown_input(text) + "'");
   return big_rational(num, den);
 }
 
