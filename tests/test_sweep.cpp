@@ -457,9 +457,7 @@ TEST_CASE("sweep: 4 shards merged equal the single run (rows, jsonl and shard su
 
   std::vector<std::string> csv, jsonl, summaries;
   for (int i = 0; i < 4; ++i) {
-    sweep_config c = config(M);
-    c.shard_index = i;
-    c.shard_count = 4;
+    const sweep_config c = shard_of(config(M), i, 4);
     sweep_files f;
     f.rows_path = d / ("shard" + std::to_string(i) + ".csv");
     f.summary_path = d / ("shard" + std::to_string(i) + ".json");

@@ -288,9 +288,7 @@ TEST_CASE("certified sweep: shards merge to the single run, and the summary keep
   CHECK(want.at("proved").size() == 3);
   std::vector<std::string> rows;
   for (int i = 0; i < 3; ++i) {
-    sweep_config c = certified_config(M);
-    c.shard_index = i;
-    c.shard_count = 3;
+    const sweep_config c = shard_of(certified_config(M), i, 3);
     sweep_files f;
     f.rows_path = d / ("shard" + std::to_string(i) + ".csv");
     REQUIRE(app::sweep_to_files<double>(c, f, engine(1)).complete);
