@@ -9,6 +9,11 @@ import numbers as _numbers
 import operator as _operator
 
 from ._gyrores import UsageError
+from ._numbers import int_text as _int_text
+
+# An mpf or float is given exactly, as P/Q: beyond this many binary digits (about 100,000 decimal
+# digits, the library's own bound on a decimal exponent, core/rational.hpp) its text is refused.
+_MAX_EXACT_BITS = 332200
 
 
 def _describe(value):
@@ -58,13 +63,13 @@ def rational(value, function, name):
     if isinstance(value, str):
         return value.strip()
     if isinstance(value, _fractions.Fraction):
-        return f"{value.numerator}/{value.denominator}"
+        return f"{_int_text(value.numerator)}/{_int_text(value.denominator)}"
     if isinstance(value, _decimal.Decimal):
         if not value.is_finite():
             raise UsageError(f"{function}(): {name} must be finite, got {value}")
         return str(value)
     if hasattr(value, "__index__"):
-        return str(integer(value, function, name))
+        return _int_text(integer(value, function, name))
     if isinstance(value, _numbers.Real) and hasattr(value, "as_integer_ratio"):  # float, NumPy floats
         f = float(value)
         if f != f or f in (float("inf"), float("-inf")):
@@ -73,8 +78,13 @@ def rational(value, function, name):
     try:
         import mpmath
         if isinstance(value, mpmath.mpf):
+            if not mpmath.isfinite(value):
+                raise UsageError(f"{function}(): {name} must be finite, got {value}")
             man, exp = value.man_exp
-            return f"{man * 2**exp}" if exp >= 0 else f"{man}/{2**-exp}"
+            if abs(exp) + int(man).bit_length() > _MAX_EXACT_BITS:
+                raise UsageError(f"{function}(): {name} = {mpmath.nstr(value, 5)} is beyond the range gyrores "
+                                 f"reads exactly (about 1e-100000 to 1e100000)")
+            return _int_text(man * 2**exp) if exp >= 0 else f"{_int_text(man)}/{_int_text(2**-exp)}"
     except ImportError:  # pragma: no cover - mpmath is a dependency
         pass
     raise UsageError(f"{function}(): {name} must be a number (int, float, Fraction, Decimal, mpf or text), "

@@ -39,8 +39,8 @@ unsigned checked_digits(long long digits, long long lo, long long hi);
 // A decimal or fraction given as a Python int, float or str, as text for parse_rational.
 std::string rational_text(const py::handle& value);
 
-// A JSON value as Python objects (dict in key order, list, int of any size, str, bool, None),
-// through json_dump so that big integers keep every digit.
+// A JSON value as Python objects (dict in key order, list, int of any size, str, bool, float,
+// None), built directly from the value (no text), big integers (json_integer) with every digit.
 py::object to_python(const json& j);
 
 // The module's areas, one file each.

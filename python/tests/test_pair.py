@@ -120,7 +120,7 @@ def test_lazy_asymptotics_equal_the_eager_ones(tau, sigma, digits, qdot0):
     import copy
     import json
     import pickle
-    eager, _ = gyrores._proved_pair(tau, sigma, digits, qdot0, False, "pair")
+    eager, _ = gyrores._proved_pair(*gyrores._pair_arguments(tau, sigma, digits, qdot0, False, "pair"), "pair")
     r = gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0)
     # Reading the values most callers read computes nothing more.
     assert (r.r_res, r["theta_first"], r.get("t_first"), r.minimisers) == (
