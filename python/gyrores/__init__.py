@@ -351,7 +351,8 @@ def _proved_pair(t, s, d, q, enclosures, function, asymptotics=True):
             break
         except _Undecided:
             if asked >= 10000:
-                raise ComputeError(f"{function}(): a double of pair ({t}, {s}) is not decided at 10000 digits") from None
+                raise ComputeError(f"{function}(): a double of pair ({_args._show(t)}, {_args._show(s)}) is not "
+                                   "decided at 10000 digits") from None
             asked = min(10000, 2 * asked)
     out.pop("enclosures", None)
     out["digits"] = d
@@ -970,7 +971,8 @@ def _proved_pairs(taus, sigmas, digits, threads):
             try:
                 results.append(f.result())
             except UsageError as e:
-                raise UsageError(f"pairs(): (taus[{i}], sigmas[{i}]) = ({t[i]}, {s[i]}): {e}") from None
+                raise UsageError(f"pairs(): (taus[{i}], sigmas[{i}]) = ({_args._show(t[i])}, {_args._show(s[i])}): "
+                                 f"{e}") from None
     finally:  # on Ctrl-C or an error: drop the pairs not started
         pool.shutdown(wait=False, cancel_futures=True)
     small = all(-2**63 <= v < 2**63 for v in t + s)
@@ -997,7 +999,7 @@ def _int64_column(values, name):
     items = [_args.integer(v, "pairs", f"{name}[{i}]") for i, v in enumerate(values)]
     for i, v in enumerate(items):
         if not -2**62 < v < 2**62:
-            raise UsageError(f"pairs(): {name}[{i}] = {v} is above 2^40 (use pair() beyond)")
+            raise UsageError(f"pairs(): {name}[{i}] = {_args._show(v)} is above 2^40 (use pair() beyond)")
     return np.array(items, dtype=np.int64)
 
 

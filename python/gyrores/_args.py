@@ -16,11 +16,20 @@ from ._numbers import int_text as _int_text
 _MAX_EXACT_BITS = 332200
 
 
+def _show(value):
+    """repr of a value for a message, at most 60 characters; an int too long for Python's int ->
+    text conversion (4300 digits) by its size."""
+    if isinstance(value, int) and value.bit_length() > 200:
+        return f"an integer of about {int(value.bit_length() * 0.30103) + 1} digits"
+    try:
+        text = repr(value)
+    except ValueError:  # a container holding such an int, an mpf of a huge exponent...
+        text = f"<{type(value).__name__}>"
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
 def _describe(value):
-    text = repr(value)
-    if len(text) > 60:
-        text = text[:57] + "..."
-    return f"{text} ({type(value).__name__})"
+    return f"{_show(value)} ({type(value).__name__})"
 
 
 def integer(value, function, name):
@@ -37,7 +46,7 @@ def bounded(value, function, name, lo, hi):
     """An integer in [lo, hi]."""
     v = integer(value, function, name)
     if not lo <= v <= hi:
-        raise UsageError(f"{function}(): {name} must be in [{lo}, {hi}], got {v}")
+        raise UsageError(f"{function}(): {name} must be in [{lo}, {hi}], got {_show(v)}")
     return v
 
 
@@ -67,7 +76,7 @@ def rational(value, function, name):
     if isinstance(value, _decimal.Decimal):
         if not value.is_finite():
             raise UsageError(f"{function}(): {name} must be finite, got {value}")
-        return str(value)
+        return str(value)  # Decimal's text has no digit limit
     if hasattr(value, "__index__"):
         return _int_text(integer(value, function, name))
     if isinstance(value, _numbers.Real) and hasattr(value, "as_integer_ratio"):  # float, NumPy floats
