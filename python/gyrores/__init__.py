@@ -33,6 +33,12 @@ import os as _os
 import re as _re
 import stat as _stat
 
+try:  # every real of more than 15 digits is an mpmath number: one line, not a traceback, without it
+    import mpmath as _mpmath  # noqa: F401
+except ImportError:
+    raise ImportError("gyrores needs mpmath (its reals beyond 15 digits are mpmath numbers): "
+                      "pip install mpmath, or on Debian apt-get install python3-mpmath") from None
+
 from . import _args, _numbers
 from . import _gyrores
 from ._gyrores import ComputeError, UsageError
@@ -100,7 +106,10 @@ class PairResult(Result):
         pending = self.__dict__.get("_pending")
         if pending is not None and key in pending[1]:
             pending[1].discard(key)
-            value = _convert_item(key, dict.__getitem__(self, key), pending[0])
+            value = dict.__getitem__(self, key)
+            # The reals (most reads) straight to their conversion; the rest as _convert does.
+            value = pending[0](value) if type(value) is str and key not in _ECHO_KEYS and \
+                _numbers.is_real_text(value) else _convert_item(key, value, pending[0])
             dict.__setitem__(self, key, value)
             return value
         return dict.__getitem__(self, key)
@@ -393,11 +402,13 @@ def pair(tau, sigma, digits=17, qdot0=1, enclosures=False):
         result.__dict__["_pending"] = (_real(d), set(raw))
         result.__dict__["_raw_source"] = lambda: _gyrores._pair(t, s, d, q, False)
     else:
-        out, raw = _proved_pair(t, s, d, q, False, "pair", asymptotics=False)
+        # Floats decided in the compiled module (as _pair_floats does for enclosures=True).
+        out = _prefixed("pair", _gyrores._pair_doubles, t, s, d, q, False)
         for key in _LAZY_PAIR_KEYS:
             out.pop(key, None)
+        out["minimisers"] = tuple(out["minimisers"])
         result = PairResult(out)
-        result.__dict__["_raw_source"] = raw
+        result.__dict__["_raw_source"] = lambda: _gyrores._pair(t, s, d, q, False)
     result.__dict__["_lazy"] = lambda: _proved_pair(t, s, d, q, False, "pair")[0]
     return result
 

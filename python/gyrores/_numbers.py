@@ -15,7 +15,10 @@ import re as _re
 import mpmath as _mpmath
 from mpmath import libmp as _libmp
 
+from . import _gyrores
 from ._types import _real_of_text
+
+_PYTHON_BACKEND = _libmp.BACKEND == "python"  # mantissas are ints (else gmpy's mpz)
 
 mpf_type = _mpmath.mpf  # what every real of more than 15 digits is (a Real, its subclass)
 
@@ -87,18 +90,11 @@ def _fraction_of(text):
 
 
 def mpf_of_text(text, prec, rounding="n"):
-    """The mpf of `prec` bits nearest to `text` ('n'), below ('f') or above ('c'): one rounding.
-    A Real (an mpf that prints as `text`, every digit): the library's decimal is the number."""
-    sign, man, exp10 = _fraction_of(text)
-    if man == 0:
-        return _real_of_text(text, _libmp.fzero)
-    if sign:
-        man = -man
-    if exp10 >= 0:
-        raw = _libmp.from_int(man * 10**exp10, prec, rounding)
-    else:
-        raw = _libmp.mpf_div(_libmp.from_int(man), _libmp.from_int(10 ** (-exp10)), prec, rounding)
-    return _real_of_text(text, raw)  # the tuple keeps `prec` bits whatever mpmath.mp.dps is
+    """The mpf of `prec` bits nearest to `text` ('n'), below ('f') or above ('c'): one rounding
+    (MPFR's, in the compiled module). A Real (an mpf that prints as `text`, every digit): the
+    library's decimal is the number."""
+    sign, man, exp, bc = _gyrores._mpf_parts(text, prec, rounding)  # UsageError for other text
+    return _real_of_text(text, (sign, man if _PYTHON_BACKEND else _libmp.MPZ(man), exp, bc))
 
 
 def float_of_text(text, rounding="n"):

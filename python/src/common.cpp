@@ -6,6 +6,8 @@
 
 #include <string_view>
 
+#include <mpfr.h>
+
 namespace gyrores::python {
 
 big_int big_int_of(const py::handle& value, const std::string& what) {
@@ -60,6 +62,40 @@ py::object int_of_decimal(const std::string& text) {
 }
 
 }  // namespace
+
+py::object python_int(const big_int& v) {
+  const mpz_srcptr z = v.backend().data();
+  if (mpz_fits_slong_p(z)) return py::reinterpret_steal<py::object>(PyLong_FromLong(mpz_get_si(z)));
+  const std::string hex = v.str(0, std::ios_base::hex);  // "-1f" for negatives
+  PyObject* r = PyLong_FromString(hex.c_str(), nullptr, 16);
+  if (r == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::object>(r);
+}
+
+py::tuple mpf_parts(const std::string& text, long prec, const std::string& rounding) {
+  if (prec < 2 || prec > (1L << 26)) throw usage_error("mpf_parts: prec out of range");
+  const mpfr_rnd_t rnd = rounding == "f" ? MPFR_RNDD : rounding == "c" ? MPFR_RNDU : MPFR_RNDN;
+  struct holder {
+    mpfr_t x;
+    mpz_t z;
+    explicit holder(long p) { mpfr_init2(x, p), mpz_init(z); }
+    ~holder() { mpfr_clear(x), mpz_clear(z); }
+  } h(prec);
+  if (mpfr_set_str(h.x, text.c_str(), 10, rnd) != 0 || !mpfr_number_p(h.x))
+    throw usage_error("not a decimal real of the library: " + text.substr(0, 40));
+  if (mpfr_zero_p(h.x)) return py::make_tuple(0, 0, 0, 0);
+  // x = z 2^e exactly; mpmath's normal form has an odd mantissa and its bit count.
+  long e = long(mpfr_get_z_2exp(h.z, h.x));
+  const int sign = mpz_sgn(h.z) < 0 ? 1 : 0;
+  mpz_abs(h.z, h.z);
+  const mp_bitcnt_t zeros = mpz_scan1(h.z, 0);
+  mpz_tdiv_q_2exp(h.z, h.z, zeros);
+  e += long(zeros);
+  const auto bits = long(mpz_sizeinbase(h.z, 2));
+  big_int man;
+  mpz_swap(man.backend().data(), h.z);
+  return py::make_tuple(sign, python_int(man), e, bits);
+}
 
 py::object to_python(const json& j) {
   // Walks the value (no JSON text in between): objects in key order, big integers (json_integer's

@@ -15,7 +15,7 @@ namespace {
 std::atomic<bool> g_stop{false};
 struct sigaction g_chained {};
 int g_depth = 0;  // calls in progress on the main thread (nested ones from progress callbacks)
-bool g_installed = false;
+bool g_outer_active = false;  // whether the outermost call's flag is set by SIGINT
 
 extern "C" void on_sigint(int sig, siginfo_t* info, void* context) {
   g_stop.store(true, std::memory_order_relaxed);
@@ -49,6 +49,28 @@ bool python_handler_is_default() {
   return is_default;
 }
 
+// Whether SIGINT will set the flag: our handler chained in front of the interpreter's (installed
+// now if the interpreter's was put back since, e.g. by signal.signal), and the Python handler the
+// default one. Main thread, GIL held. One sigaction call when nothing changed.
+bool chain_sigint() {
+  // A Python handler of the user's (signal.signal) decides what SIGINT does: the call is not
+  // stopped for it, and the handler runs when the call ends, as after any call into C.
+  if (!python_handler_is_default()) return false;
+  struct sigaction current {};
+  if (sigaction(SIGINT, nullptr, &current) != 0) return false;
+  if (is_ours(current)) return true;
+  const bool chainable = (current.sa_flags & SA_SIGINFO) != 0
+                             ? current.sa_sigaction != nullptr
+                             : current.sa_handler != SIG_DFL && current.sa_handler != SIG_IGN;
+  if (!chainable) return false;  // SIG_IGN: Ctrl-C is ignored; SIG_DFL: it ends the process anyway
+  // Our handler is not installed: g_chained can be written without a race with it.
+  g_chained = current;
+  struct sigaction ours = current;  // the same mask, and SA_RESTART as the interpreter set it
+  ours.sa_flags = (current.sa_flags | SA_SIGINFO) & ~SA_RESETHAND;
+  ours.sa_sigaction = on_sigint;
+  return sigaction(SIGINT, &ours, nullptr) == 0;
+}
+
 struct cache_releaser {
   ~cache_releaser() { release_thread_caches(); }
 };
@@ -57,7 +79,8 @@ struct cache_releaser {
 
 void init_interruptible() {
   g_main_ident = py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
-  const py::module_ signal_module = py::module_::import("signal");
+  // _signal's own getsignal: signal.getsignal wraps it in an enum conversion (microseconds a call).
+  const py::module_ signal_module = py::module_::import("_signal");
   g_getsignal = py::object(signal_module.attr("getsignal")).release().ptr();
   g_default_int_handler = py::object(signal_module.attr("default_int_handler")).release().ptr();
 }
@@ -65,35 +88,17 @@ void init_interruptible() {
 bool on_main_thread() { return PyThread_get_thread_ident() == g_main_ident; }
 
 signal_scope::signal_scope() {
-  if (g_depth++ > 0) return;
-  outermost_ = true;
+  if (g_depth++ > 0) {
+    active_ = g_outer_active;  // nested in a callback: the outer call's flag
+    return;
+  }
   g_stop.store(false, std::memory_order_relaxed);
-  struct sigaction current {};
-  if (sigaction(SIGINT, nullptr, &current) != 0 || is_ours(current)) return;
-  const bool chainable = (current.sa_flags & SA_SIGINFO) != 0
-                             ? current.sa_sigaction != nullptr
-                             : current.sa_handler != SIG_DFL && current.sa_handler != SIG_IGN;
-  if (!chainable) return;  // SIG_IGN: Ctrl-C is ignored; SIG_DFL: it ends the process anyway
-  // A Python handler of the user's (signal.signal) decides what SIGINT does: the call is not
-  // stopped for it, and the handler runs when the call ends, as after any call into C.
-  if (!python_handler_is_default()) return;
-  g_chained = current;
-  struct sigaction ours = current;  // the same mask, and SA_RESTART as the interpreter set it
-  ours.sa_flags = (current.sa_flags | SA_SIGINFO) & ~SA_RESETHAND;
-  ours.sa_sigaction = on_sigint;
-  g_installed = sigaction(SIGINT, &ours, nullptr) == 0;
+  g_outer_active = active_ = chain_sigint();
 }
 
-signal_scope::~signal_scope() {
-  --g_depth;
-  if (!outermost_ || !g_installed) return;
-  g_installed = false;
-  struct sigaction current {};
-  // Only our own handler is replaced: one set meanwhile (signal.signal in a callback) stays.
-  if (sigaction(SIGINT, nullptr, &current) == 0 && is_ours(current)) sigaction(SIGINT, &g_chained, nullptr);
-}
+signal_scope::~signal_scope() { --g_depth; }
 
-const std::atomic<bool>* signal_scope::flag() { return &g_stop; }
+const std::atomic<bool>* signal_scope::flag() const { return active_ ? &g_stop : nullptr; }
 
 void raise_signals(bool interrupted_work) {
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();

@@ -6,18 +6,19 @@
 // left running detached. Here the work runs where it was called, its caches stay, and it stops:
 //
 // On the interpreter's main thread (the only one where Python runs signal handlers, so the only
-// one where KeyboardInterrupt is raised), the outermost call chains a handler in front of the
-// interpreter's own C-level SIGINT handler for its duration (signal_scope): the signal sets the
-// stop flag handed to the work (core/stop.hpp) and then runs the interpreter's handler as before
-// (it marks the signal for Python, writes the wakeup fd). The library's long loops look at the
-// flag and throw `interrupted`; with the GIL back, PyErr_CheckSignals runs the Python handler,
-// which raises KeyboardInterrupt (or whatever the user's handler does). Calls nested in a progress
-// callback share the outer call's flag. Only while SIGINT's Python handler is the default one
-// (KeyboardInterrupt): with a handler of the user's (signal.signal), SIG_IGN or SIG_DFL nothing
-// is chained, the call runs to its end and the handler runs then, as after any call into C. A
-// handler installed during a call (from a callback) replaces the chained one and is never
-// overwritten when the call ends. On another thread the work runs without a flag, as Python
-// never delivers KeyboardInterrupt there.
+// one where KeyboardInterrupt is raised), a handler is chained in front of the interpreter's own
+// C-level SIGINT handler (signal_scope, at the first call; again whenever the interpreter's was put
+// back, as signal.signal does): the signal sets the stop flag handed to the work (core/stop.hpp)
+// and then runs the interpreter's handler exactly as before (it marks the signal for Python,
+// writes the wakeup fd), so that SIGINT outside a call does what it always did. It stays
+// installed between calls: putting it in and out costs two system calls a call. The library's
+// long loops look at the flag and throw `interrupted`; with the GIL back, PyErr_CheckSignals runs
+// the Python handler, which raises KeyboardInterrupt. Calls nested in a progress callback share
+// the outer call's flag. Only while SIGINT's Python handler is the default one
+// (KeyboardInterrupt) does a call get the flag: with a handler of the user's (signal.signal),
+// SIG_IGN or SIG_DFL the call runs to its end and the handler runs then, as after any call into
+// C. On another thread the work runs without a flag, as Python never delivers KeyboardInterrupt
+// there.
 #pragma once
 #include <pybind11/pybind11.h>
 
@@ -41,18 +42,19 @@ namespace detail {
 void init_interruptible();
 // Whether this thread is the interpreter's main thread (the GIL held).
 bool on_main_thread();
-// Installs the chained SIGINT handler for the outermost call on the main thread and clears the
-// flag; restores the interpreter's handler when that call ends. Main thread only, GIL held.
+// For the outermost call on the main thread: chains the SIGINT handler if needed and clears the
+// flag. Main thread only, GIL held.
 class signal_scope {
  public:
   signal_scope();
   ~signal_scope();
   signal_scope(const signal_scope&) = delete;
   signal_scope& operator=(const signal_scope&) = delete;
-  static const std::atomic<bool>* flag();
+  // The flag SIGINT sets, or nullptr when SIGINT is not to stop the call (a user's handler).
+  const std::atomic<bool>* flag() const;
 
  private:
-  bool outermost_ = false;
+  bool active_ = false;
 };
 // After the work (GIL held): raises a pending Python signal's exception; if the work was
 // interrupted and no handler raised, KeyboardInterrupt.
@@ -80,7 +82,7 @@ template <class R, class Work> R run_interruptible(Work work, on_stop = on_stop:
   {
     py::gil_scoped_release release;
     try {
-      result.emplace(work(main ? stop_token(detail::signal_scope::flag()) : stop_token()));
+      result.emplace(work(main ? stop_token(scope->flag()) : stop_token()));
     } catch (const interrupted&) {
       stopped = true;
       error = std::current_exception();

@@ -20,5 +20,7 @@ PYBIND11_MODULE(_gyrores, m) {
   gp::bind_sweep(m);
   gp::bind_pairs(m);
   gp::bind_figures(m);
+  m.def("_mpf_parts", &gp::mpf_parts, pybind11::arg("text"), pybind11::arg("prec"), pybind11::arg("rounding"),
+        "mpmath's (sign, man, exp, bc) of a decimal rounded to prec bits ('n', 'f' down, 'c' up).");
   m.attr("__version__") = GYRORES_VERSION;  // the project version (python/CMakeLists.txt)
 }

@@ -53,3 +53,18 @@ def test_rationals_of_any_length_in_and_out():
     assert gyrores.coupling(n=mpmath.mpf(2) ** -20000, horizon=1, convergents=0).n2 == Fraction(1, 2**40000)
     # Must fail: a value off by one in its last digit is not read back as equal.
     assert c.n2 != Fraction(1, BIG + 1)
+
+
+def test_import_without_mpmath_says_so_in_one_line(tmp_path):
+    import os
+    import subprocess
+    fake = tmp_path / "mpmath"
+    fake.mkdir()
+    (fake / "__init__.py").write_text("raise ImportError('No module named mpmath')\n")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]))
+    out = subprocess.run([sys.executable, "-c", "import gyrores"], env=env, capture_output=True, text=True)
+    assert out.returncode != 0
+    assert out.stderr.strip().splitlines()[-1] == (
+        "ImportError: gyrores needs mpmath (its reals beyond 15 digits are mpmath numbers): "
+        "pip install mpmath, or on Debian apt-get install python3-mpmath")
+    assert "During handling" not in out.stderr  # the message, not a chain of tracebacks
