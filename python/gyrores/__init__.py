@@ -28,6 +28,7 @@ GIL and stop within a fraction of a second on Ctrl-C (``KeyboardInterrupt``).
 
 import copy as _copy
 import fractions as _fractions
+import functools as _functools
 import json as _json
 import os as _os
 import re as _re
@@ -108,8 +109,13 @@ class PairResult(Result):
             pending[1].discard(key)
             value = dict.__getitem__(self, key)
             # The reals (most reads) straight to their conversion; the rest as _convert does.
-            value = pending[0](value) if type(value) is str and key not in _ECHO_KEYS and \
-                _numbers.is_real_text(value) else _convert_item(key, value, pending[0])
+            if type(value) is str and key not in _ECHO_KEYS:  # the reals (most reads), straight
+                try:
+                    value = pending[0](value)
+                except UsageError:  # text that is not a real stays text, as _convert leaves it
+                    pass
+            else:
+                value = _convert_item(key, value, pending[0])
             dict.__setitem__(self, key, value)
             return value
         return dict.__getitem__(self, key)
@@ -221,8 +227,7 @@ def _real(digits):
     """The conversion of a real of `digits` digits: float, or mpf of as many digits."""
     if digits <= _DOUBLE_DIGITS:
         return _numbers.float_of_text
-    bits = _numbers.bits_of_digits(digits)
-    return lambda text: _numbers.mpf_of_text(text, bits)
+    return _functools.partial(_numbers.mpf_of_text, prec=_numbers.bits_of_digits(digits))
 
 
 def _enclosure_path(path):
