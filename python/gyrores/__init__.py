@@ -28,9 +28,17 @@ GIL and stop within a fraction of a second on Ctrl-C (``KeyboardInterrupt``).
 
 import copy as _copy
 import fractions as _fractions
+import functools as _functools
 import json as _json
 import os as _os
 import re as _re
+import stat as _stat
+
+try:  # every real of more than 15 digits is an mpmath number: one line, not a traceback, without it
+    import mpmath as _mpmath  # noqa: F401
+except ImportError:
+    raise ImportError("gyrores needs mpmath (its reals beyond 15 digits are mpmath numbers): "
+                      "pip install mpmath, or on Debian apt-get install python3-mpmath") from None
 
 from . import _args, _numbers
 from . import _gyrores
@@ -74,25 +82,49 @@ class PairResult(Result):
     """
 
     def _complete(self):
-        """Fill the lazy keys (once): the report with the asymptotics, in the CLI's key order."""
+        """Fill the lazy keys (once): the report with the asymptotics, in the CLI's key order; and
+        convert every value still held as the library's text."""
         fill = self.__dict__.pop("_lazy", None)
-        if fill is None:
-            return
-        full = fill()
-        have = dict(dict.items(self))
-        dict.clear(self)
-        for k, v in full.items():  # the returned objects of the eager keys stay the same objects
-            dict.__setitem__(self, k, v if k in _LAZY_PAIR_KEYS or k not in have else have[k])
+        if fill is not None:
+            full = fill()
+            have = dict(dict.items(self))
+            dict.clear(self)
+            for k, v in full.items():  # the returned objects of the eager keys stay the same objects
+                dict.__setitem__(self, k, v if k in _LAZY_PAIR_KEYS or k not in have else have[k])
+        pending = self.__dict__.pop("_pending", None)
+        if pending is not None:
+            real, keys = pending
+            for k in keys:
+                if dict.__contains__(self, k):
+                    dict.__setitem__(self, k, _convert_item(k, dict.__getitem__(self, k), real))
 
     def __getitem__(self, key):
         if key in _LAZY_PAIR_KEYS:
             self._complete()
+            return dict.__getitem__(self, key)
+        # A value still held as text is converted on its first access (most callers read r_res,
+        # theta_first, t_first of the fifteen or so reals).
+        pending = self.__dict__.get("_pending")
+        if pending is not None and key in pending[1]:
+            pending[1].discard(key)
+            value = dict.__getitem__(self, key)
+            # The reals (most reads) straight to their conversion; the rest as _convert does.
+            if type(value) is str and key not in _ECHO_KEYS:  # the reals (most reads), straight
+                try:
+                    value = pending[0](value)
+                except UsageError:  # text that is not a real stays text, as _convert leaves it
+                    pass
+            else:
+                value = _convert_item(key, value, pending[0])
+            dict.__setitem__(self, key, value)
+            return value
         return dict.__getitem__(self, key)
 
     def get(self, key, default=None):
-        if key in _LAZY_PAIR_KEYS:
-            self._complete()
-        return dict.get(self, key, default)
+        try:
+            return self[key]
+        except KeyError:
+            return default
 
     def __contains__(self, key):
         return (key in _LAZY_PAIR_KEYS and "_lazy" in self.__dict__) or dict.__contains__(self, key)
@@ -181,17 +213,21 @@ def _convert(value, real, key=None):
     return value
 
 
+def _convert_item(key, value, real):
+    """The value of `key` of the library's JSON converted as _convert converts it in a dict."""
+    return _rational(value) if key in _RATIONAL_KEYS else value if key in _ECHO_KEYS else _convert(value, real, key)
+
+
 def _rational(value):
     """An exact rational of the library's JSON ("1/12", "17", "0.25") as a Fraction."""
-    return _fractions.Fraction(value) if isinstance(value, str) else value
+    return _numbers.fraction_of_text(value) if isinstance(value, str) else value
 
 
 def _real(digits):
     """The conversion of a real of `digits` digits: float, or mpf of as many digits."""
     if digits <= _DOUBLE_DIGITS:
         return _numbers.float_of_text
-    bits = _numbers.bits_of_digits(digits)
-    return lambda text: _numbers.mpf_of_text(text, bits)
+    return _functools.partial(_numbers.mpf_of_text, prec=_numbers.bits_of_digits(digits))
 
 
 def _enclosure_path(path):
@@ -221,7 +257,7 @@ def _real_paths(value, path=()):
     elif isinstance(value, tuple):
         for i, v in enumerate(value):
             yield from _real_paths(v, path + (i,))
-    elif isinstance(value, float) or type(value).__name__ == "mpf":
+    elif isinstance(value, float) or isinstance(value, _numbers.mpf_type):
         yield path, value
 
 
@@ -300,15 +336,19 @@ def _intervals(enclosures, digits):
     return walk(enclosures)
 
 
-def _proved_pair(tau, sigma, digits, qdot0, enclosures, function, asymptotics=True):
-    """The JSON of `gyrores pair` converted: floats decided by enclosures, or mpf. Without the
-    asymptotics (asymptotics=False) its `asymptotic`, `r_res_asy`, `r_res_asy_rel_error` and
-    `bits` are not the CLI's; the raw source computes them."""
-    t = _args.integer(tau, function, "tau")
-    s = _args.integer(sigma, function, "sigma")
-    d = _args.bounded(digits, function, "digits", 1, 10000)
-    q = _args.rational(qdot0, function, "qdot0")
-    enclosures = _args.flag(enclosures, function, "enclosures")
+def _pair_arguments(tau, sigma, digits, qdot0, enclosures, function):
+    """(tau, sigma, digits, qdot0 text, enclosures) checked; plain ints take the short way."""
+    t = tau if type(tau) is int else _args.integer(tau, function, "tau")
+    s = sigma if type(sigma) is int else _args.integer(sigma, function, "sigma")
+    d = digits if type(digits) is int and 1 <= digits <= 10000 else _args.bounded(digits, function, "digits", 1, 10000)
+    q = "1" if type(qdot0) is int and qdot0 == 1 else _args.rational(qdot0, function, "qdot0")
+    return t, s, d, q, _args.flag(enclosures, function, "enclosures")
+
+
+def _proved_pair(t, s, d, q, enclosures, function, asymptotics=True):
+    """The JSON of `gyrores pair` converted: floats decided by enclosures, or mpf (arguments as
+    _pair_arguments gives them). Without the asymptotics (asymptotics=False) its `asymptotic`,
+    `r_res_asy`, `r_res_asy_rel_error` and `bits` are not the CLI's; the raw source computes them."""
     if d > _DOUBLE_DIGITS:
         raw = _gyrores._pair(t, s, d, q, enclosures, asymptotics)
         out = _convert({k: v for k, v in raw.items() if k != "enclosures"}, _real(d))
@@ -325,7 +365,8 @@ def _proved_pair(tau, sigma, digits, qdot0, enclosures, function, asymptotics=Tr
             break
         except _Undecided:
             if asked >= 10000:
-                raise ComputeError(f"{function}(): a double of pair ({t}, {s}) is not decided at 10000 digits") from None
+                raise ComputeError(f"{function}(): a double of pair ({_args._show(t)}, {_args._show(s)}) is not "
+                                   "decided at 10000 digits") from None
             asked = min(10000, 2 * asked)
     out.pop("enclosures", None)
     out["digits"] = d
@@ -341,26 +382,39 @@ def pair(tau, sigma, digits=17, qdot0=1, enclosures=False):
 
     tau, sigma: integers of any size (anything with __index__), coprime, tau > sigma >= 1.
     digits: 1..10000; every real is proved: for digits <= 15 a float, the correctly rounded
-    double of the exact value; beyond, an mpmath.mpf, the correct rounding to `digits` digits.
+    double of the exact value; beyond, a Real (an mpmath.mpf that prints all its digits), the
+    correct rounding to `digits` digits.
     qdot0: the impulse amplitude > 0 (a rational: int, float, Fraction, Decimal, mpf, "1/4").
     enclosures: also ``r.enclosures``, an Interval holding each real (outward).
     Returns a PairResult; raises UsageError / ComputeError; Ctrl-C stops it. The paper's
     asymptotics (``asymptotic``, ``r_res_asy``, ``r_res_asy_rel_error``) and ``bits`` are computed
     when first read (at once with ``enclosures=True``), with the same values.
     """
-    if (isinstance(enclosures, bool) or type(enclosures).__name__ == "bool_") and enclosures:
+    t, s, d, q, enclosures = _pair_arguments(tau, sigma, digits, qdot0, enclosures, "pair")
+    if enclosures:
         # Eager: the enclosures of every real depend on the precision, which the asymptotics'
         # guard bits raise; with them asked for, the report is computed once, as the CLI's.
-        out, raw = _proved_pair(tau, sigma, digits, qdot0, enclosures, "pair")
+        out, raw = _proved_pair(t, s, d, q, True, "pair")
         result = PairResult(out)
         result.__dict__["_raw_source"] = raw
         return result
-    out, raw = _proved_pair(tau, sigma, digits, qdot0, enclosures, "pair", asymptotics=False)
-    for key in _LAZY_PAIR_KEYS:
-        out.pop(key, None)
-    result = PairResult(out)
-    result.__dict__["_raw_source"] = raw
-    result.__dict__["_lazy"] = lambda: _proved_pair(tau, sigma, digits, qdot0, False, "pair")[0]
+    if d > _DOUBLE_DIGITS:
+        # The library's dict as it is; each value converted on first access (PairResult).
+        raw = _gyrores._pair(t, s, d, q, False, False)
+        for key in _LAZY_PAIR_KEYS:
+            raw.pop(key, None)
+        result = PairResult(raw)
+        result.__dict__["_pending"] = (_real(d), set(raw))
+        result.__dict__["_raw_source"] = lambda: _gyrores._pair(t, s, d, q, False)
+    else:
+        # Floats decided in the compiled module (as _pair_floats does for enclosures=True).
+        out = _prefixed("pair", _gyrores._pair_doubles, t, s, d, q, False)
+        for key in _LAZY_PAIR_KEYS:
+            out.pop(key, None)
+        out["minimisers"] = tuple(out["minimisers"])
+        result = PairResult(out)
+        result.__dict__["_raw_source"] = lambda: _gyrores._pair(t, s, d, q, False)
+    result.__dict__["_lazy"] = lambda: _proved_pair(t, s, d, q, False, "pair")[0]
     return result
 
 
@@ -371,7 +425,7 @@ def asymptotics(tau, sigma, digits=17):
     theta_c, error, bound pi^3 x^2/a, ratio, holds_global_min), r_res_asy (the x -> 0 limit form)
     and r_res_asy_rel_error (None when not applicable), digits; qdot0 = 1. Reals as in pair().
     """
-    out, _ = _proved_pair(tau, sigma, digits, 1, False, "asymptotics")
+    out, _ = _proved_pair(*_pair_arguments(tau, sigma, digits, 1, False, "asymptotics"), "asymptotics")
     d = out["digits"]
     result = Result(out["asymptotic"])
     for key in ("r_res_asy", "r_res_asy_rel_error"):
@@ -393,27 +447,79 @@ def certify(tau, sigma, digits=30):
     return _gyrores._certify(t, s, d)
 
 
+# What `gyrores check` reads of a certificate file at most (io/files.hpp, certificate_read_limit).
+_CERTIFICATE_READ_LIMIT = 4 << 20
+
+
+def _too_large(what):
+    return UsageError(f"check(): {what} is larger than {_CERTIFICATE_READ_LIMIT} bytes (the limit for a certificate)")
+
+
+def _read_certificate(path):
+    """The bytes of a certificate file, as `gyrores check` reads it: at most 4 MiB (a device such
+    as /dev/zero is refused, never read to its end); a FIFO, socket or device is refused at once
+    (opened without blocking: no writer is waited for)."""
+    name = _os.fspath(path)
+    if isinstance(name, bytes):
+        name = _os.fsdecode(name)
+    try:
+        fd = _os.open(name, _os.O_RDONLY | getattr(_os, "O_NONBLOCK", 0) | getattr(_os, "O_CLOEXEC", 0))
+    except OSError as e:
+        raise UsageError(f"check(): cannot read certificate '{name}': {e.strerror}") from None
+    try:
+        mode = _os.fstat(fd)
+        if _stat.S_ISDIR(mode.st_mode):
+            raise UsageError(f"check(): cannot read certificate '{name}': it is a directory")
+        if not _stat.S_ISREG(mode.st_mode):
+            kind = ("a FIFO" if _stat.S_ISFIFO(mode.st_mode) else "a socket" if _stat.S_ISSOCK(mode.st_mode)
+                    else "a device" if _stat.S_ISCHR(mode.st_mode) or _stat.S_ISBLK(mode.st_mode) else "special")
+            raise UsageError(f"check(): cannot read certificate '{name}': it is {kind}, not a regular file")
+        if mode.st_size > _CERTIFICATE_READ_LIMIT:
+            raise _too_large(f"'{name}'")
+        chunks, size = [], 0
+        while True:  # a file growing while read is held to the same cap
+            try:
+                chunk = _os.read(fd, 1 << 16)
+            except OSError as e:
+                raise UsageError(f"check(): cannot read certificate '{name}': {e.strerror}") from None
+            if not chunk:
+                return b"".join(chunks)
+            size += len(chunk)
+            if size > _CERTIFICATE_READ_LIMIT:
+                raise _too_large(f"'{name}'")
+            chunks.append(chunk)
+    finally:
+        _os.close(fd)
+
+
 def check(cert):
     """Re-prove a certificate independently; returns a CheckResult {holds, failure}.
 
-    cert: the dict of certify(), its JSON text, or the path of a certificate file. ``failure``
-    names the first claim or fact that does not hold ("" when it holds); ``bool(result)`` is
-    ``holds``. Malformed content, and a certificate of the retired format
-    "gyrores-certificate/1", raise UsageError at once (``gyrores check`` exits 2 there).
+    cert: a certificate of any format `gyrores check` reads (``gyrores-certificate/2`` of
+    certify(), ``gyrores-coupling-certificate/1`` and ``gyrores-band-certificate/1`` of
+    ``gyrores coupling --certificate``; docs/formats.md) as a dict (json.load of the file), its
+    JSON text (str or bytes), or the path of the file (str or os.PathLike; a regular file of at
+    most 4 MiB, as the CLI reads). ``failure`` names the first claim or fact that does not hold
+    ("" when it holds); ``bool(result)`` is ``holds``. Malformed content, a file that cannot be
+    read (missing, a directory, a FIFO or device, larger than 4 MiB), and a certificate of the
+    retired format "gyrores-certificate/1" raise UsageError at once (``gyrores check`` exits 2
+    there).
     """
     if isinstance(cert, dict):
-        text = _json.dumps(cert)
-    elif isinstance(cert, str) and cert.lstrip().startswith("{"):
-        text = cert
-    elif isinstance(cert, (str, _os.PathLike)):
-        try:
-            with open(cert, encoding="utf-8") as f:
-                text = f.read()
-        except OSError as e:
-            raise UsageError(f"check(): cannot read certificate '{_os.fspath(cert)}': {e.strerror}") from None
+        # Written by the library (integers of any size, whatever sys.get_int_max_str_digits is).
+        holds, failure = _prefixed("check", _gyrores._check_object, cert)
     else:
-        raise UsageError(f"check(): cert must be a dict, JSON text or a path, got {type(cert).__name__}")
-    holds, failure = _gyrores._check_text(text)
+        if isinstance(cert, (bytes, bytearray)) and cert.lstrip().startswith(b"{"):
+            text = bytes(cert)
+        elif isinstance(cert, str) and cert.lstrip().startswith("{"):
+            text = cert.encode("utf-8", "surrogatepass")
+        elif isinstance(cert, (str, bytes, _os.PathLike)):
+            text = _read_certificate(cert)
+        else:
+            raise UsageError(f"check(): cert must be a dict, JSON text or a path, got {type(cert).__name__}")
+        if len(text) > _CERTIFICATE_READ_LIMIT:
+            raise _too_large("the certificate text")
+        holds, failure = _prefixed("check", _gyrores._check_text, text)
     return CheckResult(holds=bool(holds), failure=failure)
 
 
@@ -463,8 +569,8 @@ def _energy(text):
     """A level as the library reads it, an energy ("1/200", "1e-6") or a percentage of
     H_q(0) = 1/2 ("1%"), as the exact energy (a Fraction)."""
     if text.endswith("%"):
-        return _fractions.Fraction(text[:-1].strip()) / 200
-    return _fractions.Fraction(text)
+        return _numbers.fraction_of_text(text[:-1].strip()) / 200
+    return _numbers.fraction_of_text(text)
 
 
 def _design_tolerance(raw, digits):
@@ -472,8 +578,8 @@ def _design_tolerance(raw, digits):
     enclosure an Interval of the call's type, the level the energy E; keys in the CLI's order."""
     def checked(c):
         out = Result(c)
-        out["band"] = tuple(_fractions.Fraction(t) for t in c["band"])
-        out["at_n2"] = _fractions.Fraction(c["at_n2"])
+        out["band"] = tuple(_numbers.fraction_of_text(t) for t in c["band"])
+        out["at_n2"] = _numbers.fraction_of_text(c["at_n2"])
         for key in ("absorption", "containment"):
             if key in c:
                 out[key] = _intervals(c[key], digits)
@@ -540,8 +646,9 @@ def _tolerance_text(tolerance, function):
         return None
     if isinstance(tolerance, str):
         return tolerance.strip()
-    p = _fractions.Fraction(_args.rational(tolerance, function, "tolerance")) * 100
-    return f"{p}%"
+    p = _numbers.fraction_of_text(_args.rational(tolerance, function, "tolerance")) * 100
+    return (_numbers.int_text(p.numerator) if p.denominator == 1
+            else f"{_numbers.int_text(p.numerator)}/{_numbers.int_text(p.denominator)}") + "%"
 
 
 def _band_interval(texts, value, digits):
@@ -577,8 +684,8 @@ def _band(raw, digits, band_digits):
     first_below (the latest first time H_q <= E) by _band_part. Reals are of the call's type
     (`digits`), holding all of the `band_digits` digits the library rounded them to when mpf."""
     precision = digits if digits <= _DOUBLE_DIGITS else max(digits, band_digits)
-    out = Result(format=raw["format"], theorem=raw["theorem"], n1=_fractions.Fraction(raw["n1"]),
-                 n2=_fractions.Fraction(raw["n2"]), horizon=_horizon_value(raw["horizon"]), digits=band_digits,
+    out = Result(format=raw["format"], theorem=raw["theorem"], n1=_numbers.fraction_of_text(raw["n1"]),
+                 n2=_numbers.fraction_of_text(raw["n2"]), horizon=_horizon_value(raw["horizon"]), digits=band_digits,
                  interrupted=raw["interrupted"])
     out["absorption"] = _band_part(raw["absorption"], precision, "h_min")
     out["containment"] = _band_part(raw["containment"], precision, "h_min")
@@ -589,7 +696,7 @@ def _band(raw, digits, band_digits):
 def _horizon_value(text):
     """The horizon as given back: a Fraction, or the text of a multiple of pi ("100pi")."""
     try:
-        return _fractions.Fraction(text)
+        return _numbers.fraction_of_text(text)
     except ValueError:
         return text
 
@@ -655,9 +762,10 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
 
 
 def _input_texts(values, function, name):
-    """A NumPy array (any shape) of the exact texts of `values`: floats as their exact binary
-    values ("0.1" the float is 3602879701896397/36028797018963968), strings as the CLI reads them,
-    other numbers as in coupling()."""
+    """Two NumPy arrays (any shape) of `values`: their exact texts (floats as their exact binary
+    values: the float 0.1 is 3602879701896397/36028797018963968; strings as the CLI reads them;
+    other numbers as in coupling()) and their doubles for the table (_double_of_text). A value
+    the table's float64 column cannot hold is refused (UsageError naming it), before any work."""
     import numpy as np
     if isinstance(values, np.ndarray):
         arr = values
@@ -670,6 +778,7 @@ def _input_texts(values, function, name):
         except ValueError:
             raise UsageError(f"{function}(): {name} is ragged (nested sequences of different lengths)") from None
     texts = np.empty(arr.shape, dtype=object)
+    doubles = np.empty(arr.shape, dtype=np.float64)
     for i, (index, v) in enumerate(zip(np.ndindex(arr.shape), arr.flat)):
         where = f"{name}[{i}]" if arr.ndim else name
         if isinstance(v, (bool, np.bool_)):
@@ -678,22 +787,45 @@ def _input_texts(values, function, name):
             if not np.isfinite(v):
                 raise UsageError(f"{function}(): {where} must be finite, got {v}")
             p, q = v.as_integer_ratio()
-            texts[index] = f"{p}/{q}"
+            text = f"{p}/{q}"
         elif isinstance(v, str):
-            texts[index] = v.strip()
+            text = v.strip()
+        elif isinstance(v, bytes):
+            raise UsageError(f"{function}(): {where} must be a number or text, got bytes")
         else:
-            texts[index] = _args.rational(v, function, where)
-    return texts
+            text = _args.rational(v, function, where)
+        texts[index] = text
+        doubles[index] = _double_of_text(text, function, where)
+    return texts, doubles
 
 
-def _double_of_text(text):
-    """The double of an exact input text: a rational (correctly rounded), or a multiple of pi."""
-    if text.endswith("pi"):
-        import mpmath
-        with mpmath.workdps(40):
-            v = _fractions.Fraction(text[:-2].rstrip(" *"))
-            return float(mpmath.mpf(v.numerator) / v.denominator * mpmath.pi)
-    return float(_fractions.Fraction(text))
+def _double_of_text(text, function, where):
+    """The double of an exact input text: a rational (correctly rounded), or a multiple of pi;
+    NaN for text the library will refuse (it names the argument). UsageError when the value lies
+    beyond the doubles (overflow) or is nonzero and rounds to 0 (underflow)."""
+    pi = text.endswith("pi")
+    try:
+        q = _numbers.fraction_of_text(text[:-2].rstrip(" *") if pi else text)
+    except (ValueError, ZeroDivisionError):
+        return float("nan")
+    try:
+        if pi:
+            import mpmath
+            with mpmath.workdps(40):
+                x = float(mpmath.mpf(q.numerator) / q.denominator * mpmath.pi)
+        else:
+            x = float(q)  # int / int: correctly rounded, OverflowError beyond the doubles
+        overflow = x in (float("inf"), float("-inf"))
+    except OverflowError:
+        overflow = True
+    shown = text if len(text) <= 40 else text[:37] + "..."
+    if overflow:
+        raise UsageError(f"{function}(): {where} = {shown} is beyond the largest double (1.8e308), which the "
+                         f"table's float64 column holds: use coupling() for it")
+    if x == 0 and q != 0:
+        raise UsageError(f"{function}(): {where} = {shown} is below the smallest double (4.9e-324), which the "
+                         f"table's float64 column holds: use coupling() for it")
+    return x
 
 
 def couplings(n=None, n2=None, horizon=100, below=None, progress=None):
@@ -719,10 +851,10 @@ def couplings(n=None, n2=None, horizon=100, below=None, progress=None):
     if progress is not None and not callable(progress):
         raise UsageError(f"{f}(): progress must be callable, got {type(progress).__name__}")
     name = "n" if n2 is None else "n2"
-    coupling_texts = _input_texts(n if n2 is None else n2, f, name)
-    horizon_texts = _input_texts(horizon, f, "horizon")
+    coupling_texts, coupling_doubles = _input_texts(n if n2 is None else n2, f, name)
+    horizon_texts, horizon_doubles = _input_texts(horizon, f, "horizon")
     try:
-        cb, hb = np.broadcast_arrays(coupling_texts, horizon_texts)
+        cb, hb, cd, hd = np.broadcast_arrays(coupling_texts, horizon_texts, coupling_doubles, horizon_doubles)
     except ValueError:
         raise UsageError(f"{f}(): {name} of shape {coupling_texts.shape} and horizon of shape {horizon_texts.shape} "
                          "do not broadcast") from None
@@ -733,8 +865,8 @@ def couplings(n=None, n2=None, horizon=100, below=None, progress=None):
                                       ("t_min_horizon", np.float64), ("min_at_horizon_end", bool),
                                       ("t_below", np.float64), ("resonant", bool)])
     flat = table.reshape(-1)
-    flat[name] = [_double_of_text(t) for t in cs]
-    flat["horizon"] = [_double_of_text(t) for t in hs]
+    flat[name] = cd.reshape(-1)
+    flat["horizon"] = hd.reshape(-1)
     flat["h_min_horizon"] = h_min
     flat["t_min_horizon"] = t_min
     flat["min_at_horizon_end"] = at_end
@@ -753,20 +885,33 @@ def enumerate_pairs(max_order, min_order=3):
                                      _args.bounded(min_order, f, "min_order", 0, 2**40))
 
 
-def _table(columns):
-    """The row columns of the library as one NumPy structured array."""
+def _row_table(count):
+    """An empty table of `count` sweep rows (the library's row fields), notes "" (one character wide)."""
     import numpy as np
-    columns["failed"] = columns["failed"].astype(bool)
-    columns["note"] = np.array(columns["note"], dtype=str)  # "<U1" when no row has a note
-    table = np.empty(len(columns["tau"]), dtype=[(name, col.dtype) for name, col in columns.items()])
-    for name, col in columns.items():
-        table[name] = col
+    table = np.empty(count, dtype=np.dtype(_gyrores._row_fields()))
+    table["note"] = ""
     return table
 
 
-# The memory the rows of sweep() take at their peak (the library's columns, growing, then NumPy's
-# copies), per pair, and what sweep() accepts without allow_large=True.
-_SWEEP_ROW_BYTES = 300
+def _with_notes(table, notes):
+    """The table with its rows' notes [(index, text)]: the note field widened to the longest
+    (rare: rows that failed); the table itself when there is none."""
+    if not notes:
+        return table
+    import numpy as np
+    width = max(len(text) for _, text in notes)
+    wide = np.empty(len(table), dtype=[(n, f if n != "note" else f"<U{width}") for n, f in _gyrores._row_fields()])
+    for name in table.dtype.names:
+        wide[name] = table[name]
+    for i, text in notes:
+        wide["note"][i] = text
+    return wide
+
+
+# The memory the rows of sweep() take at their peak per pair (the table's record, written in place,
+# and the library's rows of the blocks not yet taken), and what sweep() accepts without
+# allow_large=True.
+_SWEEP_ROW_BYTES = 160
 _SWEEP_ROWS_LIMIT = 4 * 2**30
 
 
@@ -781,8 +926,8 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
     (0: every core) with the GIL released; progress, if given, is called as progress(done, total)
     after every block of pairs (it may call gyrores itself), and an exception it raises (or
     Ctrl-C) stops the sweep. checks: "default" or "all" (the paper's four claims) or a
-    comma-separated list (degeneracy, paper-node, asy-bound, structure). The rows take about 300
-    bytes a pair at their peak: beyond 4 GiB (about 14 million pairs, max_order 9700) sweep()
+    comma-separated list (degeneracy, paper-node, asy-bound, structure). The rows take about 160
+    bytes a pair at their peak: beyond 4 GiB (about 27 million pairs, max_order 13400) sweep()
     refuses with the estimate unless allow_large=True (rows=False needs no such memory).
     """
     f = "sweep"
@@ -791,17 +936,19 @@ def sweep(max_order, min_order=3, rows=True, progress=None, checks="default", th
     if not isinstance(checks, str):
         raise UsageError(f"sweep(): checks must be text, got {type(checks).__name__}")
     top, bottom = _args.bounded(max_order, f, "max_order", 0, 2**40), _args.bounded(min_order, f, "min_order", 0, 2**40)
-    if _args.flag(rows, f, "rows") and not _args.flag(allow_large, f, "allow_large") and max(bottom, 3) <= top:
-        count = _gyrores._sweep_pairs(max(bottom, 3), top)
+    table = None
+    allow_large = _args.flag(allow_large, f, "allow_large")
+    if _args.flag(rows, f, "rows"):
+        count = _gyrores._sweep_pairs(max(bottom, 3), top) if max(bottom, 3) <= top else 0
         need = count * _SWEEP_ROW_BYTES
-        if need > _SWEEP_ROWS_LIMIT:
+        if need > _SWEEP_ROWS_LIMIT and not allow_large:
             raise UsageError(f"sweep(): the rows of {count} pairs would take about "
                              f"{need / 1e9:.3g} GB of memory: pass rows=False (the summary alone), a smaller "
                              f"max_order, or allow_large=True")
-    columns, summary = _gyrores._sweep(top, bottom, _args.flag(rows, f, "rows"),
-                                       progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
-                                       _args.bounded(examples, f, "examples", 0, 2**31))
-    return (None if columns is None else _table(columns)), _sweep_summary(summary)
+        table = _row_table(count)
+    notes, summary = _gyrores._sweep(top, bottom, table, progress, checks, _args.bounded(threads, f, "threads", 0, 4096),
+                                     _args.bounded(examples, f, "examples", 0, 2**31))
+    return (None if table is None else _with_notes(table, notes)), _sweep_summary(summary)
 
 
 def _sweep_summary(raw):
@@ -840,7 +987,8 @@ def _proved_pairs(taus, sigmas, digits, threads):
             try:
                 results.append(f.result())
             except UsageError as e:
-                raise UsageError(f"pairs(): (taus[{i}], sigmas[{i}]) = ({t[i]}, {s[i]}): {e}") from None
+                raise UsageError(f"pairs(): (taus[{i}], sigmas[{i}]) = ({_args._show(t[i])}, {_args._show(s[i])}): "
+                                 f"{e}") from None
     finally:  # on Ctrl-C or an error: drop the pairs not started
         pool.shutdown(wait=False, cancel_futures=True)
     small = all(-2**63 <= v < 2**63 for v in t + s)
@@ -867,7 +1015,7 @@ def _int64_column(values, name):
     items = [_args.integer(v, "pairs", f"{name}[{i}]") for i, v in enumerate(values)]
     for i, v in enumerate(items):
         if not -2**62 < v < 2**62:
-            raise UsageError(f"pairs(): {name}[{i}] = {v} is above 2^40 (use pair() beyond)")
+            raise UsageError(f"pairs(): {name}[{i}] = {_args._show(v)} is above 2^40 (use pair() beyond)")
     return np.array(items, dtype=np.int64)
 
 
@@ -897,15 +1045,6 @@ def pairs(taus, sigmas, digits=None, certified=False, checks="default", threads=
     import numpy as np
     certified = _args.flag(certified, "pairs", "certified")
     threads = _args.bounded(threads, "pairs", "threads", 0, 4096)
-    table = np.empty(len(t), dtype=np.dtype(_gyrores._row_fields()))
-    table["note"] = ""
+    table = _row_table(len(t))
     notes = _gyrores._pairs_into(np.ascontiguousarray(t), np.ascontiguousarray(s), checks, certified, threads, table)
-    if notes:  # rare (rows that failed): widen the note field to the longest
-        width = max(len(text) for _, text in notes)
-        wide = np.empty(len(t), dtype=[(n, f if n != "note" else f"<U{width}") for n, f in _gyrores._row_fields()])
-        for name in table.dtype.names:
-            wide[name] = table[name]
-        for i, text in notes:
-            wide["note"][i] = text
-        table = wide
-    return table
+    return _with_notes(table, notes)

@@ -9,13 +9,27 @@ import numbers as _numbers
 import operator as _operator
 
 from ._gyrores import UsageError
+from ._numbers import int_text as _int_text
+
+# An mpf or float is given exactly, as P/Q: beyond this many binary digits (about 100,000 decimal
+# digits, the library's own bound on a decimal exponent, core/rational.hpp) its text is refused.
+_MAX_EXACT_BITS = 332200
+
+
+def _show(value):
+    """repr of a value for a message, at most 60 characters; an int too long for Python's int ->
+    text conversion (4300 digits) by its size."""
+    if isinstance(value, int) and value.bit_length() > 200:
+        return f"an integer of about {int(value.bit_length() * 0.30103) + 1} digits"
+    try:
+        text = repr(value)
+    except ValueError:  # a container holding such an int, an mpf of a huge exponent...
+        text = f"<{type(value).__name__}>"
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 def _describe(value):
-    text = repr(value)
-    if len(text) > 60:
-        text = text[:57] + "..."
-    return f"{text} ({type(value).__name__})"
+    return f"{_show(value)} ({type(value).__name__})"
 
 
 def integer(value, function, name):
@@ -32,7 +46,7 @@ def bounded(value, function, name, lo, hi):
     """An integer in [lo, hi]."""
     v = integer(value, function, name)
     if not lo <= v <= hi:
-        raise UsageError(f"{function}(): {name} must be in [{lo}, {hi}], got {v}")
+        raise UsageError(f"{function}(): {name} must be in [{lo}, {hi}], got {_show(v)}")
     return v
 
 
@@ -58,13 +72,13 @@ def rational(value, function, name):
     if isinstance(value, str):
         return value.strip()
     if isinstance(value, _fractions.Fraction):
-        return f"{value.numerator}/{value.denominator}"
+        return f"{_int_text(value.numerator)}/{_int_text(value.denominator)}"
     if isinstance(value, _decimal.Decimal):
         if not value.is_finite():
             raise UsageError(f"{function}(): {name} must be finite, got {value}")
-        return str(value)
+        return str(value)  # Decimal's text has no digit limit
     if hasattr(value, "__index__"):
-        return str(integer(value, function, name))
+        return _int_text(integer(value, function, name))
     if isinstance(value, _numbers.Real) and hasattr(value, "as_integer_ratio"):  # float, NumPy floats
         f = float(value)
         if f != f or f in (float("inf"), float("-inf")):
@@ -73,8 +87,13 @@ def rational(value, function, name):
     try:
         import mpmath
         if isinstance(value, mpmath.mpf):
+            if not mpmath.isfinite(value):
+                raise UsageError(f"{function}(): {name} must be finite, got {value}")
             man, exp = value.man_exp
-            return f"{man * 2**exp}" if exp >= 0 else f"{man}/{2**-exp}"
+            if abs(exp) + int(man).bit_length() > _MAX_EXACT_BITS:
+                raise UsageError(f"{function}(): {name} = {mpmath.nstr(value, 5)} is beyond the range gyrores "
+                                 f"reads exactly (about 1e-100000 to 1e100000)")
+            return _int_text(man * 2**exp) if exp >= 0 else f"{_int_text(man)}/{_int_text(2**-exp)}"
     except ImportError:  # pragma: no cover - mpmath is a dependency
         pass
     raise UsageError(f"{function}(): {name} must be a number (int, float, Fraction, Decimal, mpf or text), "

@@ -15,6 +15,13 @@ import re as _re
 import mpmath as _mpmath
 from mpmath import libmp as _libmp
 
+from . import _gyrores
+from ._types import _real_of_text
+
+_PYTHON_BACKEND = _libmp.BACKEND == "python"  # mantissas are ints (else gmpy's mpz)
+
+mpf_type = _mpmath.mpf  # what every real of more than 15 digits is (a Real, its subclass)
+
 # The library's reals: format_scientific (core/decimal.hpp), e.g. "5.0745805e-02", "-1e+00", "0".
 _SCIENTIFIC = _re.compile(r"^(-?)(\d)(?:\.(\d+))?e([+-]\d+)$")
 _SAFE_DIGITS = 4000  # below Python's default limit (4300): int(text) is fine
@@ -24,7 +31,40 @@ def int_of_text(text):
     """The int of a decimal integer text of any length."""
     if len(text) <= _SAFE_DIGITS:
         return int(text)
-    return int(_decimal.Decimal(text))
+    with _decimal.localcontext() as ctx:  # exact: no rounding to the context's 28 digits
+        ctx.prec = _decimal.MAX_PREC
+        ctx.Emax = _decimal.MAX_EMAX
+        return int(_decimal.Decimal(text.strip()))
+
+
+def int_text(value):
+    """The decimal text of an int of any size (str(int) is limited to 4300 digits)."""
+    if value.bit_length() <= 13000:  # under 3914 digits, within Python's limit
+        return str(value)
+    with _decimal.localcontext() as ctx:  # Decimal(int) is exact; its str has no digit limit
+        ctx.prec = _decimal.MAX_PREC
+        return str(_decimal.Decimal(value))
+
+
+# An exact rational as text: "P/Q", "P", or a decimal "-1.5e-3" (the library's and the CLI's forms).
+_FRACTION_TEXT = _re.compile(r"^\s*([+-]?\d+)\s*/\s*(\d+)\s*$")
+
+
+def fraction_of_text(text):
+    """The Fraction of an exact rational text of any length (Fraction(str) goes through int(str),
+    limited to 4300 digits); ValueError for anything else."""
+    m = _FRACTION_TEXT.match(text)
+    if m:
+        return _fractions.Fraction(int_of_text(m.group(1)), int_of_text(m.group(2)))
+    if len(text) <= _SAFE_DIGITS:
+        return _fractions.Fraction(text)
+    try:
+        d = _decimal.Decimal(text.strip())
+    except _decimal.InvalidOperation:
+        raise ValueError(f"not a rational: {text[:40]!r}...") from None
+    if not d.is_finite():
+        raise ValueError(f"not a finite rational: {text[:40]!r}...")
+    return _fractions.Fraction(*d.as_integer_ratio())
 
 
 def loads(text):
@@ -50,17 +90,11 @@ def _fraction_of(text):
 
 
 def mpf_of_text(text, prec, rounding="n"):
-    """The mpf of `prec` bits nearest to `text` ('n'), below ('f') or above ('c'): one rounding."""
-    sign, man, exp10 = _fraction_of(text)
-    if man == 0:
-        return _mpmath.mp.make_mpf(_libmp.fzero)
-    if sign:
-        man = -man
-    if exp10 >= 0:
-        raw = _libmp.from_int(man * 10**exp10, prec, rounding)
-    else:
-        raw = _libmp.mpf_div(_libmp.from_int(man), _libmp.from_int(10 ** (-exp10)), prec, rounding)
-    return _mpmath.mp.make_mpf(raw)  # make_mpf keeps `prec` bits whatever mpmath.mp.dps is
+    """The mpf of `prec` bits nearest to `text` ('n'), below ('f') or above ('c'): one rounding
+    (MPFR's, in the compiled module). A Real (an mpf that prints as `text`, every digit): the
+    library's decimal is the number."""
+    sign, man, exp, bc = _gyrores._mpf_parts(text, prec, rounding)  # UsageError for other text
+    return _real_of_text(text, (sign, man if _PYTHON_BACKEND else _libmp.MPZ(man), exp, bc))
 
 
 def float_of_text(text, rounding="n"):

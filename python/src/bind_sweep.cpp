@@ -1,17 +1,19 @@
 // gyrores.enumerate_pairs (model/enumerate.hpp, lazily) and gyrores.sweep (app/sweep.hpp, a sweep
-// in double in memory, the GIL released while the workers run): the rows as NumPy columns, which
-// gyrores/__init__.py assembles into a structured array, and the summary of `gyrores sweep
-// --json`.
+// in double in memory, the GIL released while the workers run): the rows written straight into
+// the NumPy structured array gyrores/__init__.py allocates (row_record.hpp, as gyrores.pairs), and
+// the summary of `gyrores sweep --json`.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <gyrores/app/sweep.hpp>
 #include <gyrores/model/enumerate.hpp>
 
 #include "common.hpp"
-#include "row_columns.hpp"
+#include "row_record.hpp"
 
 namespace gyrores::python {
 namespace {
@@ -45,7 +47,11 @@ void report_progress(const py::object& progress, std::uint64_t done, std::uint64
   if (!progress.is_none()) progress(done, total);
 }
 
-py::tuple run_sweep(std::int64_t max_order, std::int64_t min_order, bool rows, const py::object& progress,
+// The rows go straight into `table` (a NumPy structured array of row_fields(), one record per
+// pair in enumeration order, allocated by gyrores.sweep), written on this thread as the blocks
+// arrive in order: no per-column vectors, no copies. Returns (the notes [(index, text)] of the
+// few rows that have one, or None without a table; the summary).
+py::tuple run_sweep(std::int64_t max_order, std::int64_t min_order, const py::object& table, const py::object& progress,
                     const std::string& checks, unsigned threads, std::int64_t examples) {
   app::sweep_in_memory_request r;
   r.config.max_order = max_order;
@@ -54,14 +60,40 @@ py::tuple run_sweep(std::int64_t max_order, std::int64_t min_order, bool rows, c
   if (examples < 0) throw usage_error("examples must be >= 0");
   r.config.max_examples = std::size_t(examples);
   r.threads = threads;
-  r.keep_rows = rows;
-  row_columns cols;
+  r.keep_rows = !table.is_none();
+  char* records = nullptr;
+  std::uint64_t capacity = 0;
+  row_layout layout{};
+  if (r.keep_rows) {
+    py::array t = table.cast<py::array>();
+    if (t.ndim() != 1 || !(t.flags() & py::array::c_style) || !t.writeable())
+      throw usage_error("sweep(): the table must be one-dimensional, contiguous and writeable");
+    layout = row_layout::of(t);
+    records = static_cast<char*>(t.mutable_data());
+    capacity = std::uint64_t(t.size());
+  }
+  std::vector<std::pair<std::uint64_t, std::string>> notes;
   r.on_block = [&](std::vector<sweep_row<double>>& block, std::uint64_t done, std::uint64_t total) {
-    for (const auto& row : block) cols.add(row);
+    if (records != nullptr) {
+      if (total != capacity || done > capacity || block.size() > done)
+        throw compute_error("sweep(): the table has " + std::to_string(capacity) + " records for " + std::to_string(total) + " pairs");
+      std::uint64_t i = done - block.size();  // blocks arrive in enumeration order
+      for (const auto& row : block) {
+        layout.write(records + std::ptrdiff_t(i) * layout.itemsize, row);
+        if (!row.note.empty()) notes.emplace_back(i, row.note);
+        ++i;
+      }
+    }
     report_progress(progress, done, total);
   };
   json summary = call_library([&] { return app::run_sweep_in_memory(r); });
-  return py::make_tuple(rows ? py::object(columns_dict(cols)) : py::none(), to_python(summary));
+  py::object found = py::none();
+  if (r.keep_rows) {
+    py::list l;
+    for (const auto& [index, text] : notes) l.append(py::make_tuple(index, text));
+    found = l;
+  }
+  return py::make_tuple(found, to_python(summary));
 }
 
 }  // namespace
@@ -74,9 +106,10 @@ void bind_sweep(py::module_& m) {
         py::arg("max_order"), py::arg("min_order"), "A _PairIterator. Use gyrores.enumerate_pairs.");
   m.def("_sweep_pairs", &sweep_total_pairs, py::arg("min_order"), py::arg("max_order"),
         "The number of pairs with min_order <= tau + sigma <= max_order (exact, without enumerating them).");
-  m.def("_sweep", &run_sweep, py::arg("max_order"), py::arg("min_order"), py::arg("rows"), py::arg("progress"),
+  m.def("_sweep", &run_sweep, py::arg("max_order"), py::arg("min_order"), py::arg("table"), py::arg("progress"),
         py::arg("checks"), py::arg("threads"), py::arg("examples"),
-        "(row columns or None, summary dict) of a sweep in double. Use gyrores.sweep.");
+        "(notes [(index, text)] or None, summary dict) of a sweep in double, its rows written into table "
+        "(row_fields(), one record per pair) unless it is None. Use gyrores.sweep.");
 }
 
 }  // namespace gyrores::python

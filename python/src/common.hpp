@@ -36,11 +36,16 @@ big_int big_int_of(const py::handle& value, const std::string& what);
 resonant_pair<big_int> pair_of(const py::handle& tau, const py::handle& sigma);
 // digits in [lo, hi] or usage_error "digits must be in [lo, hi], got D" (the library's wording).
 unsigned checked_digits(long long digits, long long lo, long long hi);
+// A Python int of the library's integer (any size, exactly).
+py::object python_int(const big_int& v);
+// mpmath's normal form (sign, mantissa, exponent, bit count) of the decimal `text` rounded to
+// `prec` bits: to nearest ("n"), down ("f") or up ("c"); one correct rounding (MPFR).
+py::tuple mpf_parts(const std::string& text, long prec, const std::string& rounding);
 // A decimal or fraction given as a Python int, float or str, as text for parse_rational.
 std::string rational_text(const py::handle& value);
 
-// A JSON value as Python objects (dict in key order, list, int of any size, str, bool, None),
-// through json_dump so that big integers keep every digit.
+// A JSON value as Python objects (dict in key order, list, int of any size, str, bool, float,
+// None), built directly from the value (no text), big integers (json_integer) with every digit.
 py::object to_python(const json& j);
 
 // The module's areas, one file each.

@@ -50,7 +50,7 @@ row_layout row_layout::of(const py::array& table) {
   return l;
 }
 
-// The same values as row_columns::add (row_columns.cpp): not applicable is NaN for reals, -1 for flags.
+// Not applicable is NaN for reals, -1 for flags (as the CSV rows leave them empty).
 void row_layout::write(char* rec, const sweep_row<double>& r) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const bool ok = !r.failed;

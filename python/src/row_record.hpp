@@ -1,6 +1,7 @@
 // The sweep's per-pair row (sweep/evaluate.hpp, in double) written straight into a record of a
-// NumPy structured array: gyrores.pairs fills a preallocated table from its worker threads, with
-// no intermediate copy. The fields are the columns of `gyrores sweep --out` (row_columns.hpp).
+// NumPy structured array: gyrores.pairs fills a preallocated table from its worker threads, and
+// gyrores.sweep from its calling thread as the blocks arrive, with no intermediate copy. The
+// fields are the columns of `gyrores sweep --out` (io/sweep_rows.hpp names them).
 #pragma once
 #include <pybind11/numpy.h>
 
@@ -15,7 +16,7 @@ namespace py = pybind11;
 
 // [(name, NumPy format)] of the row's fields, in the sweep's column order. The note is text of
 // one character here (a table with an object field costs more to allocate than the sweep takes);
-// row_layout::write leaves it alone and gyrores.pairs sets the few notes there are.
+// row_layout::write leaves it alone and gyrores.pairs and sweep set the few notes there are.
 py::list row_fields();
 
 // Where each field lies in a record of a table whose dtype is row_fields() (read with the GIL).

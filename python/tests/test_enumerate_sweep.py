@@ -108,13 +108,13 @@ def test_sweep_bad_input():
 
 
 def test_sweep_rows_beyond_memory_are_refused_at_once():
-    # order 20000 holds 60,795,197 pairs: ~18 GB of rows; refused before any work, naming the way out
+    # order 20000 holds 60,795,197 pairs: ~9.7 GB of rows; refused before any work, naming the way out
     # "at once": no pair is evaluated (the progress callback, called as blocks finish, never runs)
     calls = []
-    with pytest.raises(gyrores.UsageError, match=r"sweep\(\): the rows of 60795197 pairs would take about 18\.2 GB.*allow_large=True"):
+    with pytest.raises(gyrores.UsageError, match=r"sweep\(\): the rows of 60795197 pairs would take about 9\.73 GB.*allow_large=True"):
         gyrores.sweep(20000, progress=lambda done, total: calls.append(done))
     with pytest.raises(gyrores.UsageError, match="allow_large"):
-        gyrores.sweep(11000, min_order=0, progress=lambda done, total: calls.append(done))
+        gyrores.sweep(14000, min_order=0, progress=lambda done, total: calls.append(done))
     assert calls == []
     with pytest.raises(gyrores.UsageError, match="allow_large must be True or False"):
         gyrores.sweep(10, allow_large="yes")

@@ -198,3 +198,82 @@ def test_huge_python_ints_in_and_out():
     assert r.tau == big and r.sigma == 10**4400
     with pytest.raises(gyrores.UsageError, match="not coprime"):
         gyrores.pair(2 * big, 2 * 10**4400)
+
+
+def _r_res_by_mpmath(tau, sigma, dps):
+    """r_res of (tau, sigma), qdot0 = 1, independently of gyrores: every root of
+    q'(theta) = W1 cos(tau theta) + W2 cos(sigma theta) on [0, 2 pi] (sign changes on a fine grid,
+    then mpmath.findroot at `dps` digits), r = rho0 |sin(tau theta) + sin(sigma theta)|, the least."""
+    with mpmath.workdps(dps):
+        t, s = mpmath.mpf(tau), mpmath.mpf(sigma)
+        w1, w2 = mpmath.sqrt(t / s), mpmath.sqrt(s / t)
+        rho0 = 1 / (w1 + w2)
+
+        def qdot(th):
+            return w1 * mpmath.cos(t * th) + w2 * mpmath.cos(s * th)
+
+        grid = [2 * mpmath.pi * i / 2000 for i in range(2001)]
+        radii = []
+        for a, b in zip(grid, grid[1:]):
+            if qdot(a) * qdot(b) < 0:
+                th = mpmath.findroot(qdot, (a, b), solver="anderson")
+                radii.append(rho0 * abs(mpmath.sin(t * th) + mpmath.sin(s * th)))
+        return min(radii)
+
+
+def _significant_digits(text):
+    """The significant digits of a plain or e-notation decimal text ("0.0507" -> "507")."""
+    mantissa = text.lstrip("-").split("e")[0].replace(".", "")
+    return mantissa.lstrip("0")
+
+
+@pytest.mark.parametrize("digits", [16, 30, 60])
+def test_str_and_repr_show_every_digit_asked(digits):
+    r = gyrores.pair(6, 5, digits=digits)
+    shown = str(r.r_res)
+    assert len(_significant_digits(shown)) == digits, shown
+    assert repr(r.r_res) == f"mpf('{shown}')" and shown in repr(r)
+    # The digits shown are the correct rounding of the exact value: an independent 80-digit value
+    # (mpmath, the naive formulation) rounded to `digits` digits gives the same text.
+    exact = _r_res_by_mpmath(6, 5, digits + 20)
+    assert shown == mpmath.nstr(exact, digits, strip_zeros=False, min_fixed=-5, max_fixed=digits)
+    # Every other real too, and str() is not mpmath.mp.dps's: 15 digits would be shown otherwise.
+    assert all(len(_significant_digits(str(v))) == digits for v in (r.theta_first, r.t_first, r.n))
+    with mpmath.workdps(5):
+        assert str(r.r_res) == shown
+
+
+def test_str_of_thirty_digits_of_r_res():
+    # The example of the issue: str(pair(6, 5, digits=30).r_res), checked digit by digit against
+    # mpmath's own value of r_res (not against the library's text).
+    shown = str(gyrores.pair(6, 5, digits=30).r_res)
+    assert shown == "0.0507458057910333724637156511865"
+    with mpmath.workdps(60):
+        assert abs(mpmath.mpf(shown) - _r_res_by_mpmath(6, 5, 60)) <= mpmath.mpf("0.5e-31")
+    # Must fail on a value off in its last digit.
+    with mpmath.workdps(60):
+        assert abs(mpmath.mpf("0.0507458057910333724637156511866") - _r_res_by_mpmath(6, 5, 60)) > mpmath.mpf("0.5e-31")
+
+
+def test_interval_repr_shows_distinct_ends_and_the_width():
+    iv = gyrores.pair(6, 5, digits=30, enclosures=True).enclosures.r_res
+    text = repr(iv)
+    lo_text, hi_text = (part.split("'")[1] for part in text.split(", ")[:2])
+    assert lo_text != hi_text
+    with mpmath.workdps(60):  # the ends as printed are proved bounds of the exact value
+        assert mpmath.mpf(lo_text) <= _r_res_by_mpmath(6, 5, 60) <= mpmath.mpf(hi_text)
+    assert "width=" in text
+    width = float(text.split("width=")[1].rstrip(")"))
+    assert 0 < width < 1e-30
+    f = gyrores.pair(6, 5, digits=12, enclosures=True).enclosures.r_res
+    assert "width=" in repr(f) and repr(f.lo) in repr(f) and repr(f.hi) in repr(f)
+
+
+def test_reals_stay_mpf_and_compute_as_mpf():
+    r = gyrores.pair(6, 5, digits=40)
+    assert isinstance(r.r_res, mpmath.mpf)
+    assert type(r.r_res * 2) is mpmath.mpf and r.r_res * 2 == 2 * r.r_res
+    import copy
+    import pickle
+    assert pickle.loads(pickle.dumps(r.r_res)) == r.r_res and str(pickle.loads(pickle.dumps(r.r_res))) == str(r.r_res)
+    assert copy.deepcopy(r.r_res) == r.r_res

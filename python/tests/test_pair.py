@@ -12,7 +12,13 @@ R_RES_6_5 = "5.074580579103337246371565118651053368385e-02"
 def test_pair_matches_cli_json(cli_json):
     for tau, sigma, digits in [(6, 5, 30), (11, 9, 20), (9, 4, 17), (2, 1, 12)]:
         expected = cli_json("pair", str(tau), str(sigma), "--digits", str(digits))
-        assert gyrores.pair(tau, sigma, digits=digits).to_dict(raw=True) == expected
+        raw = gyrores.pair(tau, sigma, digits=digits).to_dict(raw=True)
+        assert raw == expected
+        # The same keys in the same order (the dict is built directly, not from the JSON text),
+        # and pair() keeps that order once its lazy keys are filled.
+        assert list(raw) == list(expected) and list(raw["asymptotic"]) == list(expected["asymptotic"])
+        assert list(gyrores.pair(tau, sigma, digits=digits)) == list(expected)
+        assert list(gyrores.pair(tau, sigma, digits=min(digits, 15))) == list(expected)
 
 
 def test_big_pair_matches_cli_json(cli_json):
@@ -120,7 +126,7 @@ def test_lazy_asymptotics_equal_the_eager_ones(tau, sigma, digits, qdot0):
     import copy
     import json
     import pickle
-    eager, _ = gyrores._proved_pair(tau, sigma, digits, qdot0, False, "pair")
+    eager, _ = gyrores._proved_pair(*gyrores._pair_arguments(tau, sigma, digits, qdot0, False, "pair"), "pair")
     r = gyrores.pair(tau, sigma, digits=digits, qdot0=qdot0)
     # Reading the values most callers read computes nothing more.
     assert (r.r_res, r["theta_first"], r.get("t_first"), r.minimisers) == (
