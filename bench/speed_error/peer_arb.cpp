@@ -21,6 +21,7 @@
 #include <cmath>
 #include <memory>
 
+#include "arb_types.hpp"
 #include "case_support.hpp"
 #include "reference.hpp"
 #include "theorem_path.hpp"
@@ -40,25 +41,6 @@ bool arb_available() { return true; }
 std::string arb_library_version() { return std::string("Arb ") + arb_version + " on FLINT " + FLINT_VERSION; }
 
 namespace {
-
-struct arb_ball {
-  arb_t v;
-  arb_ball() { arb_init(v); }
-  ~arb_ball() { arb_clear(v); }
-  arb_ball(const arb_ball&) = delete;
-  arb_ball& operator=(const arb_ball&) = delete;
-};
-
-struct fmpz_int {
-  fmpz_t v;
-  explicit fmpz_int(const big_int& z) {
-    fmpz_init(v);
-    fmpz_set_mpz(v, z.backend().data());
-  }
-  ~fmpz_int() { fmpz_clear(v); }
-  fmpz_int(const fmpz_int&) = delete;
-  fmpz_int& operator=(const fmpz_int&) = delete;
-};
 
 // The lobe problem: x = b/a, mu = pi m/(2a); evaluations counted.
 struct lobe_problem {

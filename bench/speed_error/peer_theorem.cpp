@@ -32,6 +32,8 @@
 #include <mpfr.h>
 
 #include <algorithm>
+
+#include "arb_types.hpp"
 #endif
 
 namespace gyrores::bench {
@@ -72,26 +74,8 @@ std::string skip_peer_newton(const bench_pair& bp, const precision& pr) {
 
 // ---- the Arb peers: shared parts --------------------------------------------------------------
 
-struct ball {
-  arb_t v;
-  ball() { arb_init(v); }
-  ~ball() { arb_clear(v); }
-  ball(const ball&) = delete;
-  ball& operator=(const ball&) = delete;
-  operator arb_ptr() { return v; }
-  operator arb_srcptr() const { return v; }
-};
-
-struct integer {
-  fmpz_t v;
-  integer() { fmpz_init(v); }
-  explicit integer(const big_int& z) : integer() { fmpz_set_mpz(v, z.backend().data()); }
-  ~integer() { fmpz_clear(v); }
-  integer(const integer&) = delete;
-  integer& operator=(const integer&) = delete;
-  operator fmpz*() { return v; }
-  operator const fmpz*() const { return v; }
-};
+using ball = arb_ball;
+using integer = fmpz_int;
 
 // The pair's integers and constants: x = b/a, mu = pi m_min/(2a), 1 - x^2 = 4 tau sigma/a^2,
 // sqrt(tau sigma), pi; the first minimiser's lobe: theta_first = 2 (key pi + sign u*)/a.

@@ -1,5 +1,5 @@
 # Type stubs of the package gyrores (PEP 561: py.typed beside them). The signatures are those
-# of gyrores/__init__.py; python/tests/test_signatures.py compares them, and the README's.
+# of gyrores/__init__.py; python/tests/test_signatures.py compares them, and docs/python.md's list.
 from decimal import Decimal
 from fractions import Fraction
 from os import PathLike

@@ -5,7 +5,7 @@ import pytest
 
 import gyrores
 
-# r_res of (6, 5) to 40 digits (the certificate's enclosure, docs: README "Certificates").
+# r_res of (6, 5) to 40 digits (the certificate's enclosure, docs/usage.md "Certificates").
 R_RES_6_5 = "5.074580579103337246371565118651053368385e-02"
 
 

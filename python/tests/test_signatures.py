@@ -1,4 +1,4 @@
-# The README's Python section says exactly what the code does: its list of signatures equals the
+# docs/python.md says exactly what the code does: its list of signatures equals the
 # functions' own (inspect.signature), and so do the type stubs (gyrores/__init__.pyi).
 import ast
 import inspect
@@ -14,10 +14,10 @@ PUBLIC = ["pair", "pairs", "asymptotics", "certify", "check", "design", "pareto"
 PLOTS = ["phase", "energy", "pareto", "coupling_floor"]
 
 
-def _readme_signatures():
-    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as f:
+def _documented_signatures():
+    with open(os.path.join(ROOT, "docs", "python.md"), encoding="utf-8") as f:
         text = f.read()
-    section = text[text.index("## Python\n"):]
+    section = text[text.index("## Getting started\n"):]
     section = section[:section.index("\n## ", 1)]
     block = section[section.index("The public functions"):]
     block = block[block.index("```python\n") + len("```python\n"):]
@@ -33,8 +33,8 @@ def _code_signatures():
     return sigs
 
 
-def test_readme_lists_every_public_function_with_its_signature():
-    assert _readme_signatures() == _code_signatures()
+def test_docs_list_every_public_function_with_its_signature():
+    assert _documented_signatures() == _code_signatures()
 
 
 def test_type_stubs_match_the_code():
