@@ -52,6 +52,14 @@ struct ratio_target {
   std::string suffix;
 };
 
+// A headline with no values yet.
+headline new_headline(std::string id, std::string target) {
+  headline h;
+  h.id = std::move(id);
+  h.target = std::move(target);
+  return h;
+}
+
 // The theorem's double row of a pair (the numerator or reference of most headlines).
 const measurement* theorem_row(const std::vector<measurement>& rows, const bench_pair& bp) {
   return find_row(rows, "theorem_double", "double", bp.name);
@@ -95,9 +103,9 @@ std::string h1_remark(const std::vector<measurement>& rows, const std::vector<be
 }
 
 headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  headline h{"H1",
+  headline h = new_headline("H1",
              "The theorem's r_res in double (theorem_minimum_double) costs at most 1.5x the paper's asymptotic "
-             "theta_asy alone, for every pair size"};
+             "theta_asy alone, for every pair size");
   for (const auto& bp : pairs) {
     const auto* e = theorem_row(rows, bp);
     const auto* t = find_row(rows, "theta_asy", "double", bp.name);
@@ -126,7 +134,7 @@ headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
 template <class Describe>
 headline ratio_headline(const char* id, const char* target, const std::vector<measurement>& rows,
                         const std::vector<bench_pair>& pairs, const ratio_target& t, Describe describe) {
-  headline h{id, target};
+  headline h = new_headline(id, target);
   add_ratios(h, rows, pairs, t, describe);
   return h;
 }
@@ -157,9 +165,9 @@ const measurement* fastest_simulation(const std::vector<measurement>& rows, cons
 }
 
 headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  headline h{"H3",
+  headline h = new_headline("H3",
              "Against time-domain simulation reaching 1e-8 relative error in r_res, the theorem in double "
-             "(theorem_minimum_double) is at least 1000x faster and reaches full precision"};
+             "(theorem_minimum_double) is at least 1000x faster and reaches full precision");
   for (const auto& bp : pairs) {
     const auto* e = theorem_row(rows, bp);
     if (!e) continue;
@@ -227,9 +235,9 @@ std::string h5_remark(const std::vector<measurement>& rows, const std::vector<be
 }
 
 headline h5(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  headline h{"H5",
+  headline h = new_headline("H5",
              "At 1000 and 10000 digits, the theorem's proved enclosures of theta and r_res (prove_minimum) take at "
-             "most 1.5x the time Arb takes to refine the root alone"};
+             "most 1.5x the time Arb takes to refine the root alone");
   for (const char* prec : {"mp1000", "mp10000"})
     add_ratios(h, rows, pairs, {prec, "theorem_proved", "arb_newton", true, 1.5, std::string(" ") + prec},
                times_of("proved", "Arb"));
@@ -250,9 +258,9 @@ std::string with_digits(const std::string& label, const measurement& m) {
 // (order >= 2^120) have no double path: their row is the proved minimum at 16 digits
 // (theorem_proved at double), what gyrores offers for them, and it counts against the target.
 headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  headline h{"L1",
+  headline h = new_headline("L1",
              "Exact double: gyrores' double path (theorem_minimum_double) takes at most 1.25x the plain "
-             "theorem-aware peer (peer_newton), for every pair"};
+             "theorem-aware peer (peer_newton), for every pair");
   for (const auto& bp : pairs) {
     const auto* d = find_row(rows, "peer_newton", "double", bp.name);
     const auto* e = theorem_row(rows, bp);
@@ -286,9 +294,9 @@ std::string ratio_of(const std::vector<measurement>& rows, const std::string& nu
 // L2: the certificate against peer_arb_ball, which proves the same claims and writes them (and
 // rounds them); prove_minimum, prove_pair and peer_arb_calc against the same peer, for context.
 headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  headline h{"L2",
+  headline h = new_headline("L2",
              "Certified: a certificate (certify_by_theorem, what `gyrores certify` computes) takes at most 1.3x the "
-             "Arb ball peer (peer_arb_ball), which proves and writes the same claims, at 30, 1000 and 10000 digits"};
+             "Arb ball peer (peer_arb_ball), which proves and writes the same claims, at 30, 1000 and 10000 digits");
   for (const char* prec : {"mp30", "mp1000", "mp10000"})
     for (const auto& bp : pairs) {
       const auto* c = find_row(rows, "certificate", prec, bp.name);

@@ -12,7 +12,6 @@ namespace {
 
 // The version of the pair object; "/2": every real proved (the output before the lattice
 // theorem, without this field, printed verified estimates).
-constexpr const char* pair_report_format = "gyrores-pair/2";
 
 json real_json(const proved_real& r) { return r.value; }
 json enclosure_json(const proved_real& r) { return json::array({r.enclosure.first, r.enclosure.second}); }

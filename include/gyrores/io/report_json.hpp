@@ -23,6 +23,9 @@ namespace gyrores {
 // values as the design, Pareto and coupling outputs list them.
 json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v);
 
+// The format name of `gyrores pair --json` (the Python module builds the same dict directly).
+inline constexpr const char* pair_report_format = "gyrores-pair/2";
+
 // The object of `gyrores pair --json`; with `enclosures`, also "enclosures" holding [lo, hi] for
 // every real under the same keys (asymptotic_lobes for the lobes' reals).
 json pair_report_json(const resonant_pair<big_int>& p, const pair_report& r, bool enclosures = false);
