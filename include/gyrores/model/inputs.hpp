@@ -33,7 +33,7 @@ big_rational parse_energy_level(const std::string& text, const std::string& what
 
 // The envelope (model/limits.hpp), each a usage_error naming `what` and the limit it breaks:
 // T = 0 or 10^-1000 <= T <= 10^1000 (a pi: a within them); 10^-300 <= n^2 <= 10^300; E = 0 or
-// E >= 10^-1000; each of them, reduced, at most limits::rational_chars characters.
+// E >= 10^-100; each of them, reduced, at most limits::rational_chars characters.
 void check_horizon_limits(const horizon_time& T, const std::string& what);
 void check_coupling_limits(const big_rational& n2, const std::string& what);
 void check_level_limits(const big_rational& E, const std::string& what);

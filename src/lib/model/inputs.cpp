@@ -31,7 +31,6 @@ void check_chars(const big_rational& v, const std::string& what) {
 
 void check_horizon_limits(const horizon_time& T, const std::string& what) {
   if (T.value < 0) throw usage_error(what + " must be >= 0, got " + T.str());
-  check_chars(T.value, what);
   if (T.value == 0) return;
   const long e = limits::horizon_exponent;
   if (T.value > big_rational(pow10(e)))
@@ -40,25 +39,26 @@ void check_horizon_limits(const horizon_time& T, const std::string& what) {
   if (T.value < big_rational(big_int(1), pow10(e)))
     throw usage_error(what + " must be 0 or at least " + power_text(-e) + " (the limit of the coupling inputs), got " +
                       magnitude_text(T.value));
+  check_chars(T.value, what);
 }
 
 void check_coupling_limits(const big_rational& n2, const std::string& what) {
   if (!(n2 > 0)) throw usage_error(what + " must be > 0, got " + rational_str(n2));
-  check_chars(n2, what);
   const long e = limits::n2_exponent;
   if (n2 > big_rational(pow10(e)) || n2 < big_rational(big_int(1), pow10(e)))
     throw usage_error(what + " must lie in [" + power_text(-e) + ", " + power_text(e) +
                       "] (the limit of the coupling inputs; |n| in [10^-" + std::to_string(e / 2) + ", 10^" +
                       std::to_string(e / 2) + "]), got " + magnitude_text(n2));
+  check_chars(n2, what);
 }
 
 void check_level_limits(const big_rational& E, const std::string& what) {
   if (E < 0) throw usage_error(what + " must be >= 0, got " + rational_str(E));
-  check_chars(E, what);
   const long e = limits::level_exponent;
   if (E != 0 && E < big_rational(big_int(1), pow10(e)))
     throw usage_error(what + " must be 0 or at least " + power_text(-e) + " (the limit of the coupling inputs), got " +
                       magnitude_text(E));
+  check_chars(E, what);
 }
 
 horizon_time parse_horizon_time(const std::string& given, const std::string& what) {
