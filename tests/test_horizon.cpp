@@ -196,3 +196,32 @@ TEST_CASE("horizon: levels that are never reached, and E >= 1/2", "[horizon]") {
   CHECK_THROWS_AS(report_first_below(two, big_rational(-1), 12), usage_error);
   CHECK_THROWS_AS(report_horizon_minimum(two, big_rational(-1), 12), usage_error);
 }
+
+TEST_CASE("horizon: levels at the supremum 1 - x^2 of the lobe values are decided exactly", "[horizon]") {
+  // n = 2: x^2 = 1/2, so 2E = 1 - x^2 at E = 1/4 (the level "50%"). The comparison with the
+  // supremum is exact (a rational), so the level itself, and levels 10^-30 above and below it,
+  // answer: lobe 0 reaches each of them, at a time that does not decrease as the level falls
+  // (H_q decreases on lobe 0's descending branch).
+  const coupling_spec two = coupling_spec::from_n(big_rational(2));
+  const big_rational sup(1, 4), eps(1, boost::multiprecision::pow(big_int(10), 30));
+  const first_below_report at = report_first_below(two, sup, 20);
+  const first_below_report above = report_first_below(two, sup + eps, 20);
+  const first_below_report below = report_first_below(two, sup - eps, 20);
+  for (const first_below_report* r : {&at, &above, &below}) {
+    REQUIRE_FALSE(r->never);
+    REQUIRE(r->proof.lobe);
+    CHECK(r->proof.lobe->lobe.k == 0);
+    CHECK(r->proof.kase == below_case::lobe);
+  }
+  // The crossing times are ordered (the times differ by about 10^-30 relative: equal to 20 digits
+  // is allowed, the order of the enclosures' ends is not).
+  CHECK(above.proof.t_below.lo_rational() <= at.proof.t_below.hi_rational());
+  CHECK(at.proof.t_below.lo_rational() <= below.proof.t_below.hi_rational());
+  CHECK(at.proof.t_below.lo_rational() > 0);
+  // An independent value: the model's impulse response (model.hpp, 60 digits) has H_q = 1/4 at
+  // the printed time (to its 20 digits) and H_q > 1/4 a little before it.
+  const ref_real t = ref_real(at.t_below.value);
+  const auto hq = [](const ref_real& s) { return energy_q(impulse_response(ref_real(2), ref_real(1), s)); };
+  CHECK(abs(hq(t) - ref_real("0.25")) < ref_real("1e-17"));
+  CHECK(hq(t * ref_real("0.999")) > ref_real("0.25"));
+}

@@ -194,3 +194,27 @@ TEST_CASE("rotation: K with a hundred digits takes a few hundred steps", "[rotat
   // The first hit of that value is that k; of a slightly larger one, no later.
   CHECK(first_distance_to_half_at_most(x, m.value, K) == m.k);
 }
+
+TEST_CASE("rotation: K with 2000 digits runs as a loop (no stack depth grows with K)", "[rotation]") {
+  // n = 2 over K = 10^2000: about 6600 levels of the recursion of rotation.hpp (10^5000, 16600
+  // levels as calls, overflowed the stack; its cost, quadratic in the levels, is minutes of a
+  // test). The answer obeys the identities above; a value just below the minimum is not hit.
+  const quadratic_number x = coupling_rotation_number(coupling_spec::from_n(big_rational(2)));
+  const big_int K = boost::multiprecision::pow(big_int(10), 2000);
+  const rotation_minimum m = min_distance_to_half(x, K);
+  CHECK(m.k <= K);
+  CHECK(distance_to_half(x, m.k) == m.value);
+  CHECK(first_distance_to_half_at_most(x, m.value, K) == m.k);
+  CHECK_FALSE(first_distance_to_half_at_most(x, m.value * quadratic_number(999, 1000), K).has_value());
+}
+
+TEST_CASE("rotation: a stop request reaches the loop", "[rotation]") {
+  std::atomic<bool> flag{true};
+  const stop_token stop(&flag);
+  const quadratic_number x = coupling_rotation_number(coupling_spec::from_n(big_rational(2)));
+  const big_int K = boost::multiprecision::pow(big_int(10), 100);
+  CHECK_THROWS_AS(min_distance_to_half(x, K, stop), interrupted);
+  CHECK_THROWS_AS(first_distance_to_half_at_most(x, quadratic_number(1, 1000000), K, stop), interrupted);
+  flag = false;
+  CHECK_NOTHROW(min_distance_to_half(x, K, stop));
+}

@@ -4,6 +4,7 @@
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/report_json.hpp>
+#include <gyrores/model/inputs.hpp>
 #include <gyrores/model/coupling.hpp>
 
 #include "band_checker.hpp"
@@ -21,7 +22,11 @@ band_attained attained(const band_coupling& c) {
 band_result run_band(const band_request& request) {
   check_band(request.n1, request.n2, "the band");
   check_report_digits(request.digits);
-  if (request.horizon.value < 0) throw usage_error("the horizon must be >= 0, got " + request.horizon.str());
+  // The envelope of the inputs (model/limits.hpp), before any work.
+  check_coupling_limits(request.n1 * request.n1, "the band's lower end squared");
+  check_coupling_limits(request.n2 * request.n2, "the band's upper end squared");
+  check_horizon_limits(request.horizon, "the horizon");
+  if (request.below) check_level_limits(*request.below, "the level");
   if (request.certificate) {  // what a band certificate states, gyrores check must read
     check_band_certificate_horizon(request.horizon);
     if (request.digits > unsigned(gyrores_checker::band_max_digits))

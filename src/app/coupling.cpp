@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/model/inputs.hpp>
 
 namespace gyrores::app {
 
@@ -12,6 +13,11 @@ coupling_result run_coupling(const coupling_request& request) {
   if (opt.convergents > coupling_convergents_max)
     throw usage_error("convergents must be in [0, " + std::to_string(coupling_convergents_max) + "], got " +
                       std::to_string(opt.convergents));
+  // The envelope of the inputs (model/limits.hpp), before any work (the CLI's parsers name
+  // the flags; this is for every other caller).
+  check_coupling_limits(request.spec.n2, "the coupling's n^2");
+  check_horizon_limits(opt.horizon, "the horizon");
+  if (opt.below) check_level_limits(*opt.below, "the level");
   if (request.certificate) check_certificate_horizon(opt.horizon);
   opt.use = request.certificate ? proof_use::certificate : proof_use::report;
   coupling_result out{analyse_coupling(request.spec, opt), std::nullopt};
@@ -37,6 +43,9 @@ proof_status double_into(double& out, const enclosure& e) {
 coupling_doubles run_coupling_doubles(const coupling_spec& spec, const horizon_time& horizon,
                                       const std::optional<big_rational>& level, stop_token stop) {
   constexpr unsigned digits = 17;  // the precision to start from: a double's digits
+  check_coupling_limits(spec.n2, "the coupling's n^2");
+  check_horizon_limits(horizon, "the horizon");
+  if (level) check_level_limits(*level, "the level");
   coupling_doubles out;
   out.resonant = coupling_resonant_pair(spec).has_value();
   const auto m = prove_horizon_minimum(spec, horizon, {digits, [&](const horizon_minimum_proof& p) {

@@ -42,7 +42,7 @@ using namespace exact;
 Z integer_field(const json& j, const std::string& name) {
   if (!j.is_string()) throw malformed(name + " must be a decimal string");
   const std::string s = j.get<std::string>();
-  if (s.size() > 400 || !all_digits(s, 0) || (s[0] == '0' && s.size() > 1))
+  if (s.size() > coupling_max_integer_digits || !all_digits(s, 0) || (s[0] == '0' && s.size() > 1))
     throw malformed(name + " is not a non-negative integer: '" + s.substr(0, 40) + "'");
   Z z;
   fmpz_set_str(z.v, s.c_str(), 10);
@@ -54,7 +54,7 @@ void rational_field(const json& j, const std::string& name, Z& num, Z& den, bool
   const std::string s = j.get<std::string>();
   const auto slash = s.find('/');
   const std::string a = s.substr(0, slash), b = slash == std::string::npos ? "1" : s.substr(slash + 1);
-  if (s.size() > 801 || !all_digits(a, 0) || !all_digits(b, 0) || (a[0] == '0' && a.size() > 1) || (b[0] == '0'))
+  if (s.size() > coupling_max_rational_chars || !all_digits(a, 0) || !all_digits(b, 0) || (a[0] == '0' && a.size() > 1) || (b[0] == '0'))
     throw malformed(name + " is not a rational p/q: '" + s.substr(0, 40) + "'");
   fmpz_set_str(num.v, a.c_str(), 10);
   fmpz_set_str(den.v, b.c_str(), 10);
@@ -63,6 +63,16 @@ void rational_field(const json& j, const std::string& name, Z& num, Z& den, bool
   fmpz_gcd(g.v, num.v, den.v);
   fmpz_divexact(num.v, num.v, g.v);
   fmpz_divexact(den.v, den.v, g.v);
+}
+// 10^-e <= num/den <= 10^e (num, den > 0), else malformed: the envelope of horizon_checker.hpp.
+void within_powers(const Z& num, const Z& den, long e, const std::string& name) {
+  Z p, a, b;
+  fmpz_set_ui(p.v, 10);
+  fmpz_pow_ui(p.v, p.v, ulong(e));
+  fmpz_mul(a.v, den.v, p.v);  // num <= den 10^e
+  fmpz_mul(b.v, num.v, p.v);  // den <= num 10^e
+  if (fmpz_cmp(num.v, a.v) > 0 || fmpz_cmp(den.v, b.v) > 0)
+    throw malformed(name + " lies outside [10^-" + std::to_string(e) + ", 10^" + std::to_string(e) + "], the limits this checker reads");
 }
 bool bool_field(const json& j, const std::string& name) {
   if (!j.is_boolean()) throw malformed(name + " must be true or false");
@@ -118,6 +128,8 @@ certificate read(const std::string& text) {
   c.digits = integer_in(j["digits"], "digits", 1, 10000);
   rational_field(j["n2"], "n2", c.P, c.Q);
   rational_field(j["horizon"], "horizon", c.Tn, c.Td);
+  within_powers(c.P, c.Q, coupling_n2_exponent, "n2");
+  within_powers(c.Tn, c.Td, coupling_horizon_exponent, "horizon");
   const json& m = j["minimum"];
   exact_keys(m, {"cut_lobe", "cut_lobe_reached", "cut_root", "lobe", "root", "at_horizon_end", "h_min", "t_min"},
              "minimum");
@@ -139,6 +151,14 @@ certificate read(const std::string& text) {
   if (c.has_below) {
     exact_keys(b, {"level", "case", "lobe", "level_root", "delta", "root", "crossing", "t_below"}, "below");
     rational_field(b["level"], "below.level", c.En, c.Ed, true);
+    if (!fmpz_is_zero(c.En.v)) {  // E = 0, or 10^-e <= E (any E >= 1/2 is the case start)
+      Z p, a;
+      fmpz_set_ui(p.v, 10);
+      fmpz_pow_ui(p.v, p.v, ulong(coupling_level_exponent));
+      fmpz_mul(a.v, c.En.v, p.v);
+      if (fmpz_cmp(c.Ed.v, a.v) > 0)
+        throw malformed("below.level lies below 10^-" + std::to_string(coupling_level_exponent) + ", the limit this checker reads");
+    }
     if (!b["case"].is_string()) throw malformed("below.case must be a string");
     c.below_case = b["case"].get<std::string>();
     if (c.below_case != "start" && c.below_case != "lobe" && c.below_case != "never" && c.below_case != "zero")

@@ -244,9 +244,12 @@ std::string band_output(const coupling_args& a, app::band_request& q, const std:
     out = json_dump(*whole) + "\n";
   } else out = json_dump(json{{"horizon", a.horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(q, b)}}) + "\n";
   if (b.interrupted) throw partial_answer{out, ""};
+  // A certificate asked for and not written says so on the one stderr line.
+  const std::string no_certificate =
+      a.certificate.empty() || b.certificate ? "" : "; no certificate written to " + a.certificate;
   for (const std::string* why : {&b.absorption.unsettled_reason, b.containment ? &b.containment->unsettled_reason : nullptr,
                                  b.below ? &b.below->unsettled_reason : nullptr})
-    if (why && !why->empty()) throw partial_answer{out, *why};
+    if (why && !why->empty()) throw partial_answer{out, *why + no_certificate};
   return out;
 }
 

@@ -4,6 +4,8 @@
 //   horizons  "37", "1e30", "5/2", "100pi", "100*pi"   -> horizon_time (exact, or exact times pi)
 //   levels    "1e-3", "1/200", "1%" (of H_q(0) = 1/2)  -> an exact energy E >= 0
 //   bands     "N1:N2"; a tolerance "P%" around n        -> exact ends 0 < n1 < n2
+// Each value must also lie in the envelope of model/limits.hpp (the checks below, which the
+// parsers and the app layer call): outside it, usage_error with the limit.
 #pragma once
 #include <string>
 #include <utility>
@@ -22,16 +24,25 @@ struct horizon_time {
 };
 
 // T as text: a decimal, scientific or fraction, optionally times pi ("100pi", "100*pi", "1e30");
-// usage_error naming `what` for anything else or a negative T.
+// usage_error naming `what` for anything else, a negative T or one outside the limits.
 horizon_time parse_horizon_time(const std::string& text, const std::string& what);
 
 // E as text: an energy (H_q(0) = qdot0^2/2 = 1/2), or a percentage of the initial energy
-// ("1%" is 1/200); usage_error naming `what` for anything else or E < 0.
+// ("1%" is 1/200); usage_error naming `what` for anything else, E < 0 or E outside the limits.
 big_rational parse_energy_level(const std::string& text, const std::string& what);
 
-// "N1:N2" -> (n1, n2), the ends parsed as `what N1` and `what N2` (their order is check_band's).
+// The envelope (model/limits.hpp), each a usage_error naming `what` and the limit it breaks:
+// T = 0 or 10^-1000 <= T <= 10^1000 (a pi: a within them); 10^-300 <= n^2 <= 10^300; E = 0 or
+// E >= 10^-100; each of them, reduced, at most limits::rational_chars characters.
+void check_horizon_limits(const horizon_time& T, const std::string& what);
+void check_coupling_limits(const big_rational& n2, const std::string& what);
+void check_level_limits(const big_rational& E, const std::string& what);
+
+// "N1:N2" -> (n1, n2), the ends parsed as `what N1` and `what N2` (their order is check_band's),
+// each with n^2 within the limits.
 std::pair<big_rational, big_rational> parse_band(const std::string& text, const std::string& what);
-// A tolerance "P%" around n: the band |n| (1 -+ P/100); usage_error unless 0 < P < 100.
+// A tolerance "P%" around n: the band |n| (1 -+ P/100); usage_error unless 0 < P < 100 and both
+// ends' n^2 lie within the limits.
 std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
                                                            const std::string& what);
 // usage_error "<what> needs 0 < n1 < n2, got n1:n2" unless it holds.

@@ -7,12 +7,15 @@
 // first element when alpha <= 1/2, its last when alpha > 1/2) form again a rotation,
 // by alpha1 = {-1/alpha} or {1/(1 - alpha)}, over at most K/2 indices. So each call costs
 // O(log K) field operations, exactly (core/quadratic.hpp); K can have hundreds of digits.
-// Ties (possible only for rational alpha) give the smallest k.
+// Ties (possible only for rational alpha) give the smallest k. The recursion runs as a loop with
+// its levels on the heap (no stack depth grows with K), and looks at `stop` once per level
+// (throwing `interrupted`).
 #pragma once
 #include <optional>
 
 #include <gyrores/core/integer.hpp>
 #include <gyrores/core/quadratic.hpp>
+#include <gyrores/core/stop.hpp>
 
 namespace gyrores {
 
@@ -22,19 +25,20 @@ struct rotation_minimum {
 };
 
 // min over 0 <= k <= K of {k alpha + beta}; alpha, beta in [0, 1), K >= 0 (usage_error otherwise).
-rotation_minimum min_fractional_part(const quadratic_number& alpha, const quadratic_number& beta, const big_int& K);
+rotation_minimum min_fractional_part(const quadratic_number& alpha, const quadratic_number& beta, const big_int& K,
+                                     stop_token stop = {});
 
 // The smallest k in [0, K] with {k alpha + beta} <= w (w >= 0), or none.
 std::optional<big_int> first_fractional_part_at_most(const quadratic_number& alpha, const quadratic_number& beta,
-                                                     const quadratic_number& w, const big_int& K);
+                                                     const quadratic_number& w, const big_int& K, stop_token stop = {});
 
 // nu_k = ||k x - 1/2|| (distance to the nearest integer), x in (0, 1):
 // min over 0 <= k <= K, with the smallest k attaining it.
-rotation_minimum min_distance_to_half(const quadratic_number& x, const big_int& K);
+rotation_minimum min_distance_to_half(const quadratic_number& x, const big_int& K, stop_token stop = {});
 
 // The smallest k in [0, K] with ||k x - 1/2|| <= delta (delta >= 0), or none.
 std::optional<big_int> first_distance_to_half_at_most(const quadratic_number& x, const quadratic_number& delta,
-                                                      const big_int& K);
+                                                      const big_int& K, stop_token stop = {});
 
 // ||k x - 1/2|| itself, and the sign of mu_k = pi (1/2 - {k x}) (+1, 0 or -1): the side of its
 // lobe on which the minimiser lies.

@@ -3,8 +3,64 @@
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/quote.hpp>
+#include <gyrores/model/limits.hpp>
 
 namespace gyrores {
+
+namespace {
+
+big_int pow10(long e) { return boost::multiprecision::pow(big_int(10), unsigned(e)); }
+
+// "10^e" for the messages (a rational near the limits can have thousands of digits).
+std::string power_text(long e) { return "10^" + std::to_string(e); }
+
+// About log10 |v| (v != 0), for the messages: the difference of the digit counts.
+std::string magnitude_text(const big_rational& v) {
+  const big_int num = abs(boost::multiprecision::numerator(v)), den = boost::multiprecision::denominator(v);
+  const long e = long(num.str().size()) - long(den.str().size());
+  return "about 10^" + std::to_string(e);
+}
+
+void check_chars(const big_rational& v, const std::string& what) {
+  const std::size_t n = rational_str(v).size();
+  if (n > limits::rational_chars)
+    throw usage_error(what + " has " + std::to_string(n) + " characters as a reduced fraction p/q, more than the " +
+                      std::to_string(limits::rational_chars) + " allowed");
+}
+
+}  // namespace
+
+void check_horizon_limits(const horizon_time& T, const std::string& what) {
+  if (T.value < 0) throw usage_error(what + " must be >= 0, got " + T.str());
+  if (T.value == 0) return;
+  const long e = limits::horizon_exponent;
+  if (T.value > big_rational(pow10(e)))
+    throw usage_error(what + " must be at most " + power_text(e) + " (the limit of the coupling inputs), got " +
+                      magnitude_text(T.value));
+  if (T.value < big_rational(big_int(1), pow10(e)))
+    throw usage_error(what + " must be 0 or at least " + power_text(-e) + " (the limit of the coupling inputs), got " +
+                      magnitude_text(T.value));
+  check_chars(T.value, what);
+}
+
+void check_coupling_limits(const big_rational& n2, const std::string& what) {
+  if (!(n2 > 0)) throw usage_error(what + " must be > 0, got " + rational_str(n2));
+  const long e = limits::n2_exponent;
+  if (n2 > big_rational(pow10(e)) || n2 < big_rational(big_int(1), pow10(e)))
+    throw usage_error(what + " must lie in [" + power_text(-e) + ", " + power_text(e) +
+                      "] (the limit of the coupling inputs; |n| in [10^-" + std::to_string(e / 2) + ", 10^" +
+                      std::to_string(e / 2) + "]), got " + magnitude_text(n2));
+  check_chars(n2, what);
+}
+
+void check_level_limits(const big_rational& E, const std::string& what) {
+  if (E < 0) throw usage_error(what + " must be >= 0, got " + rational_str(E));
+  const long e = limits::level_exponent;
+  if (E != 0 && E < big_rational(big_int(1), pow10(e)))
+    throw usage_error(what + " must be 0 or at least " + power_text(-e) + " (the limit of the coupling inputs), got " +
+                      magnitude_text(E));
+  check_chars(E, what);
+}
 
 horizon_time parse_horizon_time(const std::string& given, const std::string& what) {
   std::string text = given;
@@ -16,6 +72,7 @@ horizon_time parse_horizon_time(const std::string& given, const std::string& wha
   }
   horizon_time t(parse_rational(text, what), pi);
   if (t.value < 0) throw usage_error(what + " must be >= 0, got " + shown_input(given));
+  check_horizon_limits(t, what);
   return t;
 }
 
@@ -27,6 +84,7 @@ big_rational parse_energy_level(const std::string& given, const std::string& wha
     e = parse_rational(text, what) / 200;
   } else e = parse_rational(text, what);
   if (e < 0) throw usage_error(what + " must be >= 0, got " + shown_input(given));
+  check_level_limits(e, what);
   return e;
 }
 
@@ -37,7 +95,12 @@ void check_band(const big_rational& n1, const big_rational& n2, const std::strin
 std::pair<big_rational, big_rational> parse_band(const std::string& text, const std::string& what) {
   const auto colon = text.find(':');
   if (colon == std::string::npos) throw usage_error(what + " must be N1:N2, got " + shown_input(text));
-  return {parse_rational(text.substr(0, colon), what + " N1"), parse_rational(text.substr(colon + 1), what + " N2")};
+  std::pair<big_rational, big_rational> band{parse_rational(text.substr(0, colon), what + " N1"),
+                                             parse_rational(text.substr(colon + 1), what + " N2")};
+  check_band(band.first, band.second, what);
+  check_coupling_limits(band.first * band.first, what + " N1 squared");
+  check_coupling_limits(band.second * band.second, what + " N2 squared");
+  return band;
 }
 
 std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
@@ -48,7 +111,10 @@ std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n
   const big_rational p = parse_rational(t, what) / 100;
   if (!(p > 0) || !(p < 1)) throw usage_error(what + " must be in (0%, 100%), got " + shown_input(tolerance));
   const big_rational an = n < 0 ? big_rational(-n) : n;
-  return {big_rational(an * (1 - p)), big_rational(an * (1 + p))};
+  const std::pair<big_rational, big_rational> band{big_rational(an * (1 - p)), big_rational(an * (1 + p))};
+  check_coupling_limits(band.first * band.first, what + ": the band's lower end squared");
+  check_coupling_limits(band.second * band.second, what + ": the band's upper end squared");
+  return band;
 }
 
 }  // namespace gyrores

@@ -160,11 +160,12 @@ interval search::absorption_bound(const band_coupling& a, const band_coupling& b
   if (K == 0) lobes = arith_.V_upper(a, quadratic_number(1, 2));
   else if (K >= 1) {
     J.splits = structural_splits(a, b, K);
-    const quadratic_number fa = min_distance_to_half(a.x, K).value, fb = min_distance_to_half(b.x, K).value;
+    const quadratic_number fa = min_distance_to_half(a.x, K, opt_.stop).value,
+                           fb = min_distance_to_half(b.x, K, opt_.stop).value;
     if (J.splits.empty()) {
       // One line nu_k on J (item 4): its lobe found at an interior point, its slope by the ends.
       const fraction inner = simplest_in(a.x, b.x).simplest;
-      const big_int k = min_distance_to_half(inner.value(), K).k;
+      const big_int k = min_distance_to_half(inner.value(), K, opt_.stop).k;
       const quadratic_number na = distance_to_half(a.x, k), nb = distance_to_half(b.x, k);
       J.how.k = k;
       if (!less_than(na, nb)) lobes = arith_.V_upper(a, fa), J.how.kind = band_bound_kind::line_falling;
@@ -197,8 +198,8 @@ interval search::containment_bound(const band_coupling& a, const band_coupling& 
       splits.push_back(centre);
       return big_rational(0);
     }
-    const big_rational va = arith_.V_lower(a, min_distance_to_half(a.x, K).value);
-    const big_rational vb = arith_.V_lower(b, min_distance_to_half(b.x, K).value);
+    const big_rational va = arith_.V_lower(a, min_distance_to_half(a.x, K, opt_.stop).value);
+    const big_rational vb = arith_.V_lower(b, min_distance_to_half(b.x, K, opt_.stop).value);
     return va < vb ? va : vb;
   };
   const big_int kcb = arith_.cut_lobe(b);

@@ -8,6 +8,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/refine.hpp>
+#include <gyrores/model/limits.hpp>
 #include <gyrores/model/rotation.hpp>
 #include <gyrores/theorem/root.hpp>
 
@@ -231,7 +232,7 @@ horizon_minimum_proof prove_horizon_minimum(const coupling_spec& spec, const hor
   const unsigned decimals = use == proof_use::certificate ? certificate_digits(goal.digits) : 0;
   horizon_setup h{spec, T, x, cut_lobe_of(spec, x, T, start, stop), std::nullopt, {}, decimals};
   // The best full lobe (exact), and the cut lobe.
-  if (h.cut_lobe >= 1) h.full = lobe_of(x, min_distance_to_half(x, big_int(h.cut_lobe - 1)).k);
+  if (h.cut_lobe >= 1) h.full = lobe_of(x, min_distance_to_half(x, big_int(h.cut_lobe - 1), stop).k);
   h.cut = lobe_of(x, h.cut_lobe);
   return refine(plan_of(start), stop, "horizon: the minimum over [0, " + T.str() + "]", [&](mpfr_prec_t bits, proof_status& status) {
     horizon_minimum_proof r;
@@ -264,13 +265,20 @@ lobe_root certified_lobe_root(const coupling_spec& spec, const big_int& k, unsig
 namespace {
 
 // The first lobe k with ||k x - 1/2|| <= delta: within one period for rational x (then none
-// means never), else by K = 2^10, 2^26, ... (irrational x: some k hits every delta > 0).
+// means never), else by K = 2^10, 2^26, ... (irrational x: some k hits every delta > 0) up to
+// the lobes of limits::lobe_digits digits, beyond which the proof stops with the reason (only a
+// coupling very close to a resonant one, a tiny delta, goes that far).
 std::optional<big_int> first_lobe_at_most(const quadratic_number& x, const quadratic_number& delta, const stop_token& stop) {
-  if (x.is_rational()) return first_distance_to_half_at_most(x, delta, x.r());
+  if (x.is_rational()) return first_distance_to_half_at_most(x, delta, x.r(), stop);
   if (delta.sign() == 0) return std::nullopt;
+  const big_int last = boost::multiprecision::pow(big_int(10), unsigned(limits::lobe_digits)) - 1;
   for (big_int K = 1024;; K <<= 16) {
     stop.throw_if_requested();
-    if (auto k = first_distance_to_half_at_most(x, delta, K)) return k;
+    const bool final_try = K >= last;
+    if (auto k = first_distance_to_half_at_most(x, delta, final_try ? last : K, stop)) return k;
+    if (final_try)
+      throw compute_error("horizon: the first lobe below the level lies beyond lobe 10^" +
+                          std::to_string(limits::lobe_digits) + " (the limit of the coupling inputs)");
   }
 }
 
@@ -290,15 +298,15 @@ proof_status first_lobe_within(const quadratic_number& x, const big_rational& lo
 // decimal bracket, and the lobe must be the same for every value within 2 units of the last of
 // delta's decimals about it (every decimal a certificate may write for delta lies there), or no
 // certificate can state it. Otherwise delta >= 1/2: lobe 0 reaches the level.
+// The level is compared with the supremum G(pi/2) = 1 - x^2 = 4Q/(P + 4Q) exactly (a rational),
+// before any root: at equality no precision would decide it.
 proof_status first_lobe_at_level(const coupling_balls& cb, const quadratic_number& x, const arb_t level,
-                                 unsigned decimals, const stop_token& stop, first_below_proof& r,
+                                 bool at_or_above_sup, unsigned decimals, const stop_token& stop, first_below_proof& r,
                                  std::optional<big_int>& k) {
   const slong prec = cb.prec;
-  ball gmax, half_pi;
+  ball half_pi;
   arb_mul_2exp_si(half_pi, cb.pi, -1);
-  kernels_arb::G(gmax, cb.x, half_pi, prec);
-  if (arb_ge(level, gmax)) return first_lobe_within(x, big_rational(1, 2), big_rational(1, 2), stop, k);
-  if (!arb_lt(level, gmax)) return proof_status::undecided("2E against G(pi/2) = 1 - x^2");
+  if (at_or_above_sup) return first_lobe_within(x, big_rational(1, 2), big_rational(1, 2), stop, k);
   ball zero, d, plain;
   arb_zero(zero);
   auto g = [&cb, level](arb_t o, const arb_t v) {
@@ -412,6 +420,8 @@ first_below_proof prove_first_below(const coupling_spec& spec, const big_rationa
     zero_lobe = first_lobe_at_most(x, quadratic_number(0), stop);
     if (!zero_lobe) return exact_case(below_case::never);
   }
+  // 2E against the supremum of the lobe values, G(pi/2) = 1 - x^2 = 4Q/(P + 4Q), exactly.
+  const bool at_or_above_sup = 2 * E >= big_rational(4 * spec.Q(), big_int(spec.P() + 4 * spec.Q()));
   const mpfr_prec_t start = start_bits(goal.digits, zero_lobe ? big_rational(*zero_lobe) : big_rational(1), spec);
   return refine(plan_of(start), stop, "first time below", [&](mpfr_prec_t bits, proof_status& status) {
     first_below_proof r = base;
@@ -426,7 +436,7 @@ first_below_proof prove_first_below(const coupling_spec& spec, const big_rationa
       ball level;
       set_rational(level, 2 * E, prec);
       std::optional<big_int> k;
-      status = first_lobe_at_level(cb, x, level, decimals, stop, r, k);
+      status = first_lobe_at_level(cb, x, level, at_or_above_sup, decimals, stop, r, k);
       if (status && !k) r.kase = below_case::never;
       else if (status) {
         r.kase = below_case::lobe;
