@@ -1,6 +1,6 @@
 // gyrores pareto --max-order M [--orientation absorb|contain] [--proxy] [--exclude-degenerate]
-//                [--beat B] [--exclude-low L] [--out FILE.csv] [--plot FILE.svg|png]
-//                [--size WxH] [--digits D] [--json]
+//                [--beat B] [--exclude-low L] [--out FILE.csv] [--plot FILE.svg|png|pdf|eps]
+//                [--size WxH|3.5in|8.8cm] [--font-size PT] [--digits D] [--json]
 // The non-dominated set of (r_res, time) over resonant pairs (include/gyrores/app/pareto.hpp),
 // with its CSV (io/design_output.hpp) and figure (frontend/plots.hpp).
 #include <optional>
@@ -26,7 +26,7 @@ using frontend::figure_spec;
 
 struct pareto_args {
   std::int64_t max_order = 0, exclude_low = 0;
-  std::string orientation = "absorb", beat, out, plot, size;
+  std::string orientation = "absorb", beat, out, plot, size, font_size;
   bool proxy = false, exclude_degenerate = false, json = false;
   int digits = 10;
 };
@@ -75,7 +75,7 @@ std::string run_pareto(const pareto_args& a) {
   r.filter.exclude_degenerate = a.exclude_degenerate;
   if (!a.beat.empty()) r.filter.beat_min = parse_positive_flag(a.beat, "--beat");
   std::optional<figure_spec> spec;
-  if (!a.plot.empty()) spec = frontend::figure_spec_from_out(a.plot, a.size, 900, 640);
+  if (!a.plot.empty()) spec = frontend::figure_spec_from_out(a.plot, a.size, 900, 640, a.font_size);
   const fs::path out(a.out);
   if (!a.out.empty() && out.extension() != ".csv") throw usage_error("--out must end in .csv, got '" + a.out + "'");
   r.time = a.proxy ? design_time::proxy : design_time::first_hit;
@@ -109,8 +109,8 @@ command_runner install_pareto(CLI::App& app) {
   sub.add("--beat", a->beat, "only pairs with (tau+sigma)/(tau-sigma) >= B");
   sub.add("--exclude-low", a->exclude_low, "drop the low-order set tau + sigma <= L");
   sub.add("--out", a->out, "write the front as CSV to FILE.csv");
-  sub.add("--plot", a->plot, "draw the front to FILE.svg or FILE.png (data and gnuplot script beside it)");
-  add_size_option(sub, a->size, "plot size WxH in pixels (default 900x600)");
+  sub.add("--plot", a->plot, "draw the front to FILE.svg, .png, .pdf or .eps (data and gnuplot script beside it)");
+  add_size_option(sub, a->size, a->font_size);
   add_output_options(sub, a->digits, a->json);
   return [a] { return run_pareto(*a); };
 }
