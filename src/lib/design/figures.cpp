@@ -185,10 +185,14 @@ energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v, dou
   std::vector<energy_sample> by_theta;
   refine_around(by_theta, thetas, c.pi / f0.a, theta_end, [&](double th) { return energy_sample{th, 0, 0}; });
   for (const auto& p : by_theta) e.samples.push_back(at_theta(p.t));
-  std::sort(e.samples.begin(), e.samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
-  // The sample at each minimiser carries the theorem's time, so that curve and mark meet exactly.
+  // The samples within rounding of t_first carry the theorem's time, so that curve and mark meet
+  // exactly; then one sample per time.
   for (auto& p : e.samples)
     if (std::fabs(p.t - e.t_first) <= 1e-15 * e.t_first) p.t = e.t_first;
+  std::sort(e.samples.begin(), e.samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
+  e.samples.erase(std::unique(e.samples.begin(), e.samples.end(),
+                              [](const energy_sample& x, const energy_sample& y) { return x.t == y.t; }),
+                  e.samples.end());
   return e;
 }
 
