@@ -552,7 +552,7 @@ TEST_CASE("cli plot: the energy curve touches each marked minimum", "[figures][c
     const std::string gp = read_file(dir + "/e.gp"), dat = read_file(dir + "/e.dat");
     // The lower panel's ranges: the last `set xrange` and `set yrange` of the script.
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
-    const std::regex xrange(R"(set xrange \[([^:\]]+):([^\]]+)\])"), yrange(R"(set yrange \[([^:\]]+):([^\]]+)\])");
+    const std::regex xrange(R"(set xrange \[([-+0-9.eE]+):([-+0-9.eE]+)\])"), yrange(R"(set yrange \[([-+0-9.eE]+):([-+0-9.eE]+)\])");
     for (std::sregex_iterator it(gp.begin(), gp.end(), xrange), end; it != end; ++it)
       x0 = std::stod((*it)[1]), x1 = std::stod((*it)[2]);
     for (std::sregex_iterator it(gp.begin(), gp.end(), yrange), end; it != end; ++it)
