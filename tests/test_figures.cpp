@@ -714,7 +714,7 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   std::string md = read_file(fs::path(dir) / "out" / "REPORT.md");
   REQUIRE(!md.empty());
   std::regex link(R"(\]\(([^)\s]+)\))");
-  int links = 0, pngs = 0;
+  int links = 0, pngs = 0, pdfs = 0;
   for (std::sregex_iterator it(md.begin(), md.end(), link), end; it != end; ++it) {
     std::string target = (*it)[1];
     INFO(target);
@@ -725,9 +725,14 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
       auto info = decode_png(read_file(fs::path(dir) / "out" / target));
       CHECK(info.non_background > 0.01);
     }
+    if (target.size() > 4 && target.substr(target.size() - 4) == ".pdf") {  // beside each PNG, for a paper
+      ++pdfs;
+      CHECK(read_file(fs::path(dir) / "out" / target).rfind("%PDF-", 0) == 0);
+    }
   }
   CHECK(links >= 20);
   CHECK(pngs >= 7);
+  CHECK(pdfs >= 7);
   // The paper's findings appear, with exact values.
   CHECK(md.find("(35, 29)") != std::string::npos);
   CHECK(md.find("1.635107798e+01") != std::string::npos);  // (6, 5) exact t_first, 10 digits
