@@ -35,7 +35,7 @@ from . import coupling as _coupling
 
 # A figure made here: one panel 3.5 inches wide (a journal column), two side by side 7.
 _ONE_PANEL = (3.5, 2.6)
-_TWO_PANELS = (7.0, 3.2)
+_TWO_PANELS = (7.0, 3.6)
 
 
 def _is_axes(ax):
@@ -55,8 +55,11 @@ def _shift(ax, args):
 def _new_axes(ncols=1, size=None):
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, ncols, figsize=size or (_ONE_PANEL if ncols == 1 else _TWO_PANELS),
-                             layout="constrained")
+    if ncols == 2:  # the phase figure: its keys below the panels, room made for them
+        fig, axes = plt.subplots(1, 2, figsize=size or _TWO_PANELS)
+        fig.subplots_adjust(left=0.09, right=0.98, top=0.9, bottom=0.36, wspace=0.35)
+        return axes
+    fig, axes = plt.subplots(1, ncols, figsize=size or _ONE_PANEL, layout="constrained")
     return axes
 
 
@@ -181,7 +184,7 @@ def phase(ax=None, tau=None, sigma=None, n=None, qdot0=1.0, t_span=0.0, zoom=Non
         zoom.set_title(rf"zoom: $|q|, |\dot q| \leq {w:.3g}$", fontsize="medium")
         # Both keys below their panels, off the data.
         for a in (ax, zoom):
-            a.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), borderaxespad=0.0, fontsize="small")
+            a.legend(loc="upper center", bbox_to_anchor=(0.5, -0.22), borderaxespad=0.0, fontsize="small")
     ax.gyrores_zoom = zoom
     return ax
 
