@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -83,6 +84,27 @@ TEST_CASE("figures: energy series conserve H and mark the exact first minimum", 
   auto pn = phase_portrait_of_coupling(2.0, 1.0, 200 * M_PI / 2);
   CHECK(pn.t_first > 0);
   CHECK(pn.r_inscribed < 1e-3);  // dense: small radius over the span
+}
+
+// The curve reaches its mark: the sampled H_q at the marked time is the marked minimum (the
+// samples are refined around it). Before, n = 2 over [0, 50] dipped only to ~1e-4 near a mark
+// at 1.4e-7, and (6, 5)'s samples stopped 25% above its minimum.
+TEST_CASE("figures: the sampled H_q reaches every marked minimum", "[figures]") {
+  const auto lowest_near = [](const energy_series& e, double t, double half) {
+    double lo = 1e300;
+    for (const auto& s : e.samples)
+      if (std::fabs(s.t - t) <= half) lo = std::min(lo, s.h_q);
+    return lo;
+  };
+  const auto e2 = energy_of_coupling(2.0, 1.0, 50.0);
+  REQUIRE(e2.h_min < 1e-6);
+  CHECK(lowest_near(e2, e2.t_first, 0.5) == Approx(e2.h_min).epsilon(1e-6));
+  const auto e65 = energy_of_pair(resonant_pair<std::int64_t>(6, 5));
+  CHECK(lowest_near(e65, e65.t_first, 1e-3) == Approx(e65.h_min).epsilon(1e-9));
+  // The same minimum again at t = 18.06 (the other minimiser of the period): reached too.
+  CHECK(lowest_near(e65, 18.06, 0.05) == Approx(e65.h_min).epsilon(1e-9));
+  for (const auto& s : e65.samples) CHECK(s.h_q >= e65.h_min * (1 - 1e-9));  // and never below it
+  for (std::size_t i = 1; i < e65.samples.size(); ++i) CHECK(e65.samples[i].t > e65.samples[i - 1].t);
 }
 
 // ------------------------------------------------------------------------------------ images
@@ -405,6 +427,169 @@ TEST_CASE("cli plot: readable at single-column sizes (600x400, 500x350)", "[figu
   }
 }
 
+// A tick label: a number as gnuplot prints one ("0.5", "-0.1", "10^{-3}" read as "10-3", "3·10-3").
+static bool tick_label(const std::string& t) {
+  static const std::regex number(R"(-?[0-9.]+(·10-?[0-9]+)?|10-?[0-9]+)");
+  return std::regex_match(t, number);
+}
+
+// The labelled ticks of every axis in an SVG gyrores drew: x-axis labels (centred) grouped by
+// their height and by the panel they sit under (`splits`: the figure's column boundaries as
+// fractions of its width), y-axis labels (right-aligned) by their x. Each group is one axis.
+static std::vector<std::size_t> labels_per_axis(const std::vector<svg_text>& texts, double width,
+                                                const std::vector<double>& splits) {
+  std::map<std::pair<long, int>, std::size_t> axes;
+  for (const auto& t : texts) {
+    if (t.rotated || !tick_label(t.text)) continue;
+    if (t.anchor == "middle") {
+      int column = 0;
+      for (double s : splits) column += t.x > s * width;
+      ++axes[{std::lround(t.y * 10), column}];
+    } else if (t.anchor == "end") {
+      ++axes[{std::lround(t.x * 10), -1}];
+    }
+  }
+  std::vector<std::size_t> out;
+  for (const auto& [where, count] : axes) out.push_back(count);
+  return out;
+}
+
+// Every axis of every figure has at least three labelled ticks. Before, each phase figure had
+// one per axis on its main panel (`set xtics (small ? 1 : 0.5)` is a one-tick list for
+// gnuplot), and the Pareto inset two on its time axis.
+TEST_CASE("cli plot: every axis has at least three labelled ticks", "[figures][cli]") {
+  if (!cli_available() || std::system("command -v gnuplot >/dev/null 2>&1") != 0) return;
+  gyrores::test::temp_dir tmp("plotticks");
+  const std::string dir = tmp.path();
+  struct figure {
+    std::string args;
+    std::vector<double> splits;  // column boundaries
+    std::size_t axes;            // labelled axes at least
+  };
+  const std::vector<figure> figures = {
+      {"plot phase 6 5", {0.5}, 4},          {"plot phase --n 2", {0.5}, 4},
+      {"plot phase --n2 1/12", {0.5}, 4},    {"plot phase 5 3", {0.5}, 4},  // (5, 3): r_res = 0
+      {"plot energy 6 5", {}, 3},            {"plot energy --n 2 --tmax 50", {}, 3},
+      {"plot energy 11 9", {}, 3},           {"plot pareto --max-order 200", {0.64}, 4},
+  };
+  for (const auto& [w, h] : {std::pair{0, 0}, std::pair{500, 350}}) {
+    for (const auto& f : figures) {
+      INFO(f.args << " at " << w << "x" << h);
+      const std::string size = w ? " --size " + std::to_string(w) + "x" + std::to_string(h) : "";
+      auto r = cli_run(f.args + size + " --out " + dir + "/f.svg");
+      REQUIRE(r.status == 0);
+      const std::string svg = read_file(dir + "/f.svg");
+      const double width = std::stod(svg.substr(svg.find("viewBox=\"0 0 ") + 13));
+      const auto texts = svg_texts(svg);
+      std::string labels;
+      for (const auto& t : texts)
+        if (tick_label(t.text)) labels += t.text + " (" + std::to_string(t.x) + "," + std::to_string(t.y) + ") ";
+      INFO("tick labels: " << labels);
+      const auto axes = labels_per_axis(texts, width, f.splits);
+      CHECK(axes.size() >= f.axes);
+      for (std::size_t n : axes) CHECK(n >= 3);
+    }
+  }
+}
+
+// The keys sit outside the plotted data (above, below or beside the graph), so that no key box
+// covers a curve or a marked minimum; every mark lies inside its panel's ranges. Before, the
+// energy figure's opaque keys sat inside both panels (top right, bottom right), over H_z's
+// maxima and over (6, 5)'s second minimum at t = 18.06.
+TEST_CASE("cli plot: keys off the data, marks inside their panels", "[figures][cli]") {
+  if (!cli_available()) return;
+  gyrores::test::temp_dir tmp("plotkeys");
+  const std::string dir = tmp.path();
+  for (const std::string args : {"plot phase 6 5", "plot phase --n 2", "plot energy 6 5", "plot energy --n 2",
+                                 "plot energy --n 2 --tmax 50", "plot energy 11 9", "plot pareto --max-order 100"}) {
+    INFO(args);
+    REQUIRE(cli_run(args + " --out " + dir + "/k.svg", "PATH=/nonexistent").status == 0);
+    const std::string gp = read_file(dir + "/k.gp");
+    std::istringstream lines(gp);
+    int keys = 0;
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("set key", 0) != 0) continue;
+      ++keys;
+      INFO(line);
+      CHECK(std::regex_search(line, std::regex(R"(\b(above|below|outside|[lrtb]margin|off)\b)")));
+    }
+    CHECK(keys >= 1);
+  }
+}
+
+// The rows of block `index` of a gnuplot data file (two blank lines between blocks).
+static std::vector<std::vector<double>> data_block(const std::string& dat, int index) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(dat);
+  int block = 0, blanks = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) {
+      if (++blanks == 2) ++block;
+      continue;
+    }
+    blanks = 0;
+    if (line[0] == '#' || block != index) continue;
+    std::istringstream cols(line);
+    std::vector<double> row;
+    for (std::string c; cols >> c;) row.push_back(c == "NaN" ? std::nan("") : std::strtod(c.c_str(), nullptr));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The energy figure's lower panel (H_q on a log axis) draws its curve through every mark: at the
+// marked time, the drawn curve (straight between samples, in log H_q) is within 2 pixels of the
+// mark, on a panel a third of the figure's height. Before, n = 2 over [0, 50] drew its dip down
+// to ~1e-4 under a mark at 1.4e-7, 3 decades and 100 pixels off.
+TEST_CASE("cli plot: the energy curve touches each marked minimum", "[figures][cli]") {
+  if (!cli_available()) return;
+  gyrores::test::temp_dir tmp("plottouch");
+  const std::string dir = tmp.path();
+  for (const std::string args : {"plot energy --n 2 --tmax 50", "plot energy 6 5", "plot energy 11 9", "plot energy --n 0.3",
+                                 "plot energy 35 29", "plot energy --n 2"}) {
+    INFO(args);
+    REQUIRE(cli_run(args + " --out " + dir + "/e.svg", "PATH=/nonexistent").status == 0);
+    const std::string gp = read_file(dir + "/e.gp"), dat = read_file(dir + "/e.dat");
+    // The lower panel's ranges: the last `set xrange` and `set yrange` of the script.
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    const std::regex xrange(R"(set xrange \[([-+0-9.eE]+):([-+0-9.eE]+)\])"), yrange(R"(set yrange \[([-+0-9.eE]+):([-+0-9.eE]+)\])");
+    for (std::sregex_iterator it(gp.begin(), gp.end(), xrange), end; it != end; ++it)
+      x0 = std::stod((*it)[1]), x1 = std::stod((*it)[2]);
+    for (std::sregex_iterator it(gp.begin(), gp.end(), yrange), end; it != end; ++it)
+      y0 = std::stod((*it)[1]), y1 = std::stod((*it)[2]);
+    REQUIRE(y1 > y0);
+    REQUIRE(y0 > 0);
+    const double px_per_log = (500.0 / 3) / std::log(y1 / y0);  // the default 900x500, panel about a third
+    const auto curve = data_block(dat, 0);
+    REQUIRE(curve.size() > 1000);
+    std::vector<std::vector<double>> marks = data_block(dat, 1), more = data_block(dat, 2);
+    marks.insert(marks.end(), more.begin(), more.end());
+    int checked = 0;
+    for (const auto& mark : marks) {
+      if (mark.size() < 2 || std::isnan(mark[0]) || mark[0] < x0 || mark[0] > x1) continue;
+      INFO("mark at t = " << mark[0] << ", H_q = " << mark[1]);
+      CHECK(mark[1] <= y1);
+      std::size_t i = 1;
+      while (i + 1 < curve.size() && curve[i][0] < mark[0]) ++i;
+      const auto& a = curve[i - 1];
+      const auto& b = curve[i];
+      REQUIRE(a[0] <= mark[0]);
+      REQUIRE(b[0] >= mark[0]);
+      ++checked;
+      if (mark[1] == 0) {  // r_res = 0: the mark sits on the panel's floor, the curve runs off it there
+        CHECK(std::min(a[1], b[1]) < y0);
+        continue;
+      }
+      CHECK(mark[1] >= y0);
+      const double u = b[0] > a[0] ? (mark[0] - a[0]) / (b[0] - a[0]) : 0;
+      const double drawn = std::exp((1 - u) * std::log(a[1]) + u * std::log(b[1]));
+      INFO("drawn curve there: " << drawn);
+      CHECK(std::fabs(std::log(drawn / mark[1])) * px_per_log <= 2.0);
+    }
+    CHECK(checked >= 1);
+  }
+}
+
 TEST_CASE("cli plot: PDF and EPS for journals", "[figures][cli]") {
   if (!cli_available() || std::system("command -v gnuplot >/dev/null 2>&1") != 0) return;
   gyrores::test::temp_dir tmp("plotpdf");
@@ -417,6 +602,13 @@ TEST_CASE("cli plot: PDF and EPS for journals", "[figures][cli]") {
     CHECK(pdf.find("%%EOF") != std::string::npos);
     // 500x350 pixels at 100 per inch: a 5 x 3.5 inch page (360 x 252 points).
     CHECK(pdf.find("/MediaBox [ 0 0 360 252 ]") != std::string::npos);
+    // An IEEE column, 3.5 x 2.5 inches (252 x 180 points), and 8.8 x 6 cm (249.45 x 170.08 points,
+    // which cairo writes rounded).
+    REQUIRE(cli_run(args + " --size 3.5x2.5in --out " + dir + "/c.pdf").status == 0);
+    CHECK(read_file(dir + "/c.pdf").find("/MediaBox [ 0 0 252 180 ]") != std::string::npos);
+    REQUIRE(cli_run(args + " --size 8.8cmx6cm --font-size 8 --out " + dir + "/m.pdf").status == 0);
+    const std::string cm = read_file(dir + "/m.pdf");
+    CHECK(cm.find("/MediaBox [ 0 0 249 170 ]") != std::string::npos);
     REQUIRE(cli_run(args + " --out " + dir + "/f.eps").status == 0);
     const std::string eps = read_file(dir + "/f.eps");
     CHECK(eps.rfind("%!PS-Adobe-3.0 EPSF-3.0", 0) == 0);
@@ -432,7 +624,7 @@ TEST_CASE("cli plot pareto: r_res = 0 on its own strip; large data thinned", "[f
   const std::string gp = read_file(dir + "/p.gp"), dat = read_file(dir + "/p.dat");
   CHECK(gp.find("r_floor") == std::string::npos);                   // no stand-in value on the log axis
   CHECK(gp.find("index 1 using 1:(0)") != std::string::npos);       // the zeros on the strip, at 0
-  CHECK(gp.find("# inset: the front alone") != std::string::npos);  // the front over its own ranges
+  CHECK(gp.find("# right panel: the front alone") != std::string::npos);  // the front over its own ranges
   CHECK(dat.find("thinned") == std::string::npos);
   // Order 600: 109 000 pairs, thinned to at most one per 2x2 pixels of a 900x640 figure.
   REQUIRE(cli_run("plot pareto --max-order 600 --out " + dir + "/big.svg", "PATH=/nonexistent").status == 0);
@@ -460,7 +652,10 @@ TEST_CASE("cli plot: bad input exits 2", "[figures][cli]") {
   if (!cli_available()) return;
   for (const char* bad : {"plot phase 6 5 --out x.jpg", "plot phase 6 4 --out x.svg", "plot phase --out x.svg",
                           "plot phase 6 5 --n 2 --out x.svg", "plot phase 6 5 --size 10x10 --out x.svg",
-                          "plot pareto --out x.svg", "plot"})
+                          "plot pareto --out x.svg", "plot", "plot phase 6 5 --size 3inx8cm --out x.svg",
+                          "plot phase 6 5 --size 0.5in --out x.svg", "plot phase 6 5 --size 300cm --out x.svg",
+                          "plot phase 6 5 --size 3.5mm --out x.svg", "plot phase 6 5 --size 3.5 --out x.svg",
+                          "plot phase 6 5 --font-size 2 --out x.svg", "plot phase 6 5 --font-size big --out x.svg"})
     check_rejected(bad);
 }
 
@@ -519,7 +714,7 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   std::string md = read_file(fs::path(dir) / "out" / "REPORT.md");
   REQUIRE(!md.empty());
   std::regex link(R"(\]\(([^)\s]+)\))");
-  int links = 0, pngs = 0;
+  int links = 0, pngs = 0, pdfs = 0;
   for (std::sregex_iterator it(md.begin(), md.end(), link), end; it != end; ++it) {
     std::string target = (*it)[1];
     INFO(target);
@@ -530,9 +725,14 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
       auto info = decode_png(read_file(fs::path(dir) / "out" / target));
       CHECK(info.non_background > 0.01);
     }
+    if (target.size() > 4 && target.substr(target.size() - 4) == ".pdf") {  // beside each PNG, for a paper
+      ++pdfs;
+      CHECK(read_file(fs::path(dir) / "out" / target).rfind("%PDF-", 0) == 0);
+    }
   }
   CHECK(links >= 20);
   CHECK(pngs >= 7);
+  CHECK(pdfs >= 7);
   // The paper's findings appear, with exact values.
   CHECK(md.find("(35, 29)") != std::string::npos);
   CHECK(md.find("1.635107798e+01") != std::string::npos);  // (6, 5) exact t_first, 10 digits

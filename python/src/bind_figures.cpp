@@ -8,6 +8,7 @@
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/app/figures.hpp>
+#include <gyrores/app/pareto.hpp>
 
 #include "common.hpp"
 #include "interruptible.hpp"
@@ -50,6 +51,48 @@ py::dict energy_dict(const energy_series& e) {
   py::dict d;
   d["n"] = e.n, d["qdot0"] = e.qdot0, d["t"] = t, d["h_q"] = hq, d["h_z"] = hz;
   d["t_first"] = e.t_first, d["h_min"] = e.h_min, d["t_proxy"] = e.t_proxy, d["t_end"] = e.t_end;
+  py::array_t<double> minima(py::ssize_t(e.t_minima.size()));
+  for (std::size_t i = 0; i < e.t_minima.size(); ++i) minima.mutable_at(py::ssize_t(i)) = e.t_minima[i];
+  d["t_minima"] = minima;
+  return d;
+}
+
+// Columns time, r_res, tau, sigma of design points (the time `which`).
+py::dict point_columns(const std::vector<design_point>& pts, design_time which) {
+  const auto n = py::ssize_t(pts.size());
+  py::array_t<double> t(n), r(n);
+  py::array_t<std::int64_t> tau(n), sigma(n);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    t.mutable_at(py::ssize_t(i)) = design_time_of(pts[i], which);
+    r.mutable_at(py::ssize_t(i)) = pts[i].r_res;
+    tau.mutable_at(py::ssize_t(i)) = pts[i].tau;
+    sigma.mutable_at(py::ssize_t(i)) = pts[i].sigma;
+  }
+  py::dict d;
+  d["t"] = t, d["r_res"] = r, d["tau"] = tau, d["sigma"] = sigma;
+  return d;
+}
+
+// The points the CLI's Pareto figure draws (app::pareto_figure_points_of: thinned above
+// app::pareto_thin_above pairs to one per 2 x 2 pixels of a width x height figure).
+py::dict pareto_figure_data(std::int64_t max_order, const std::string& orientation, bool proxy, bool exclude_degenerate,
+                            int width, int height) {
+  app::pareto_request r;
+  r.orientation = app::parse_pareto_orientation(orientation, "orientation");
+  r.max_order = max_order;
+  r.filter.exclude_degenerate = exclude_degenerate;
+  r.time = proxy ? design_time::proxy : design_time::first_hit;
+  r.values = false;
+  if (width < 100 || height < 100) throw usage_error("the figure's size in pixels must be at least 100 x 100");
+  const auto f = run_interruptible<app::pareto_figure_points>([r, width, height](stop_token) {
+    const app::pareto_outcome p = app::run_pareto(r);
+    return app::pareto_figure_points_of(p.pairs, p.front, r.time, width, height);
+  });
+  py::dict d;
+  d["pairs"] = f.pairs, d["thinned"] = f.pairs > app::pareto_thin_above, d["thin_above"] = app::pareto_thin_above;
+  d["positive"] = point_columns(f.positive, r.time), d["zeros"] = point_columns(f.zeros, r.time);
+  d["front"] = point_columns(f.front_positive, r.time), d["front_zeros"] = point_columns(f.front_zeros, r.time);
+  d["labelled"] = point_columns(f.labelled, r.time);
   return d;
 }
 
@@ -78,6 +121,9 @@ void bind_figures(py::module_& m) {
         "The phase portrait of the CLI's `plot phase` (app/figures.hpp). Use gyrores.plot.phase.");
   m.def("_energy_data", &energy_data, py::arg("tau"), py::arg("sigma"), py::arg("n"), py::arg("qdot0"), py::arg("t_end"),
         "H_q(t), H_z(t) of the CLI's `plot energy` (app/figures.hpp). Use gyrores.plot.energy.");
+  m.def("_pareto_figure_data", &pareto_figure_data, py::arg("max_order"), py::arg("orientation"), py::arg("proxy"),
+        py::arg("exclude_degenerate"), py::arg("width"), py::arg("height"),
+        "The points of the CLI's `plot pareto` (app/figures.hpp, thinned as there). Use gyrores.plot.pareto.");
 }
 
 }  // namespace gyrores::python

@@ -28,7 +28,10 @@ void add_output_options(const options& sub, int& digits, bool& json) {
   add_json_flag(sub, json);
 }
 
-void add_size_option(const options& sub, std::string& size, const std::string& help) { sub.add("--size", size, help); }
+void add_size_option(const options& sub, std::string& size, std::string& font_size) {
+  sub.add("--size", size, "image size: WxH pixels (100 per inch), or a width or WxH in inches or cm (3.5in, 8.8cm, 3.5x2.5in)");
+  sub.add("--font-size", font_size, "font size in points (default: from the width, 8 to 12)");
+}
 
 void add_pair_filter_options(const options& sub, pair_filter_flags& f) {
   sub.add("--beat", f.beat, "only pairs with (tau+sigma)/(tau-sigma) >= B (decimal or fraction)");

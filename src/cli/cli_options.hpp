@@ -63,8 +63,9 @@ void add_digits_option(const options& sub, int& digits, const std::string& help 
 void add_json_flag(const options& sub, bool& json);
 // Both, as the commands that list pairs with their proved values (design, pareto) take them.
 void add_output_options(const options& sub, int& digits, bool& json);
-// --size WxH of an image.
-void add_size_option(const options& sub, std::string& size, const std::string& help);
+// --size of an image (WxH pixels, or inches or centimetres: frontend/plots.hpp apply_figure_size)
+// and --font-size in points.
+void add_size_option(const options& sub, std::string& size, std::string& font_size);
 
 // --beat B and --exclude-low L: the pair filters that design and pareto share.
 struct pair_filter_flags {

@@ -1,6 +1,6 @@
 // gyrores pareto --max-order M [--orientation absorb|contain] [--proxy] [--exclude-degenerate]
-//                [--beat B] [--exclude-low L] [--out FILE.csv] [--plot FILE.svg|png]
-//                [--size WxH] [--digits D] [--json]
+//                [--beat B] [--exclude-low L] [--out FILE.csv] [--plot FILE.svg|png|pdf|eps]
+//                [--size WxH|3.5in|8.8cm] [--font-size PT] [--digits D] [--json]
 // The non-dominated set of (r_res, time) over resonant pairs (include/gyrores/app/pareto.hpp),
 // with its CSV (io/report_json.hpp) and figure (frontend/plots.hpp).
 #include <optional>
@@ -27,7 +27,7 @@ using frontend::figure_spec;
 struct pareto_args {
   std::int64_t max_order = 0;
   pair_filter_flags filter;
-  std::string orientation = "absorb", out, plot, size;
+  std::string orientation = "absorb", out, plot, size, font_size;
   bool proxy = false, exclude_degenerate = false, json = false;
   int digits = 10;
 };
@@ -74,7 +74,7 @@ std::string run_pareto(const pareto_args& a) {
   apply_pair_filter_flags(a.filter, r.filter);
   r.filter.exclude_degenerate = a.exclude_degenerate;
   std::optional<figure_spec> spec;
-  if (!a.plot.empty()) spec = frontend::figure_spec_from_out(a.plot, a.size, 900, 640);
+  if (!a.plot.empty()) spec = frontend::figure_spec_from_out(a.plot, a.size, 900, 640, a.font_size);
   const fs::path out(a.out);
   if (!a.out.empty() && out.extension() != ".csv") throw usage_error("--out must end in .csv, got '" + a.out + "'");
   r.time = a.proxy ? design_time::proxy : design_time::first_hit;
@@ -107,8 +107,8 @@ command_runner install_pareto(CLI::App& app) {
   sub.flag("--exclude-degenerate", a->exclude_degenerate, "drop delta = 2 mod 4 pairs (r_res = 0)");
   add_pair_filter_options(sub, a->filter);
   sub.add("--out", a->out, "write the front as CSV to FILE.csv");
-  sub.add("--plot", a->plot, "draw the front to FILE.svg or FILE.png (data and gnuplot script beside it)");
-  add_size_option(sub, a->size, "plot size WxH in pixels (default 900x600)");
+  sub.add("--plot", a->plot, "draw the front to FILE.svg, .png, .pdf or .eps (data and gnuplot script beside it)");
+  add_size_option(sub, a->size, a->font_size);
   add_output_options(sub, a->digits, a->json);
   return [a] { return run_pareto(*a); };
 }

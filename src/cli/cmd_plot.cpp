@@ -1,7 +1,8 @@
-// gyrores plot phase  TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [--out FILE.svg|png] [--size WxH]
-// gyrores plot energy TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [--out FILE.svg|png] [--size WxH]
+// gyrores plot phase  TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [IMAGE OPTIONS]
+// gyrores plot energy TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [IMAGE OPTIONS]
 // gyrores plot pareto --max-order M [--orientation absorb|contain] [--proxy] [--exclude-degenerate]
-//                     [--out FILE.svg|png] [--size WxH]
+//                     [IMAGE OPTIONS]
+// IMAGE OPTIONS: [--out FILE.svg|png|pdf|eps] [--size WxH | 3.5in | 8.8cm | 3.5x2.5in] [--font-size PT]
 // Each figure is written with its data (NAME.dat) and gnuplot script (NAME.gp) beside it; if
 // gnuplot is missing the command says so and still writes both (exit 0). The data are the
 // application layer's (include/gyrores/app/figures.hpp, app/pareto.hpp); frontend/plots.hpp draws.
@@ -20,7 +21,7 @@ namespace gyrores::cli {
 namespace {
 
 struct plot_args {
-  std::string tau, sigma, n, n2, tmax, out, size, orientation = "absorb";
+  std::string tau, sigma, n, n2, tmax, out, size, font_size, orientation = "absorb";
   std::int64_t max_order = 0;
   bool proxy = false, exclude_degenerate = false;
 };
@@ -62,7 +63,7 @@ std::string pair_title(const resonant_pair<std::int64_t>& p) {
 
 std::string run_phase(const plot_args& a) {
   const auto s = subject_of(a);
-  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "phase.svg" : a.out, a.size, 1200, 640);
+  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "phase.svg" : a.out, a.size, 1200, 640, a.font_size);
   if (s.pair && !a.tmax.empty()) throw usage_error("--tmax does not apply to a resonant pair (one full period is drawn)");
   const phase_portrait f = app::phase_figure(s, 1.0, tmax_of(a));
   char buf[200];
@@ -77,7 +78,7 @@ std::string run_phase(const plot_args& a) {
 
 std::string run_energy(const plot_args& a) {
   const auto s = subject_of(a);
-  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "energy.svg" : a.out, a.size, 900, 500);
+  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "energy.svg" : a.out, a.size, 900, 500, a.font_size);
   const energy_series e = app::energy_figure(s, 1.0, tmax_of(a));
   if (!s.pair) return files_text(frontend::write_energy_figure(spec, e, coupling_label(a), "first min on span, t"));
   char buf[200];
@@ -88,7 +89,7 @@ std::string run_energy(const plot_args& a) {
 std::string run_pareto_plot(const plot_args& a) {
   app::pareto_request r;
   r.orientation = app::parse_pareto_orientation(a.orientation, "--orientation");
-  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "pareto.svg" : a.out, a.size, 900, 640);
+  const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "pareto.svg" : a.out, a.size, 900, 640, a.font_size);
   check_max_order_flag(a.max_order);
   r.max_order = a.max_order;
   r.filter.exclude_degenerate = a.exclude_degenerate;
@@ -105,11 +106,11 @@ std::string run_pareto_plot(const plot_args& a) {
 
 command_runner install_plot(CLI::App& app) {
   auto a = std::make_shared<plot_args>();
-  auto sub = options(app).subcommand("plot", "Figures with gnuplot (SVG or PNG), data and script kept beside each");
+  auto sub = options(app).subcommand("plot", "Figures with gnuplot (SVG, PNG, PDF or EPS), data and script kept beside each");
   sub.require_subcommand();
   auto image = [&](const options& s) {
-    s.add("--out", a->out, "output FILE.svg or FILE.png");
-    add_size_option(s, a->size, "image size WxH in pixels");
+    s.add("--out", a->out, "output FILE.svg, .png, .pdf or .eps");
+    add_size_option(s, a->size, a->font_size);
   };
   auto common = [&](const options& s, const char* what) {
     s.add("TAU", a->tau, "tau of a resonant pair");

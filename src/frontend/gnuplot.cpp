@@ -40,10 +40,11 @@ image_format image_format_of(const fs::path& p) {
 
 int figure_font_size(int width) { return std::clamp(8 + (width - 500) / 125, 8, 12); }
 
-std::string gnuplot_preamble(const std::string& default_image, int width, int height) {
-  const int fs = figure_font_size(width);
+std::string gnuplot_preamble(const std::string& default_image, int width, int height, double width_in, double height_in,
+                             int font_pt) {
+  const int fs = font_pt;
   char inches[64];
-  std::snprintf(inches, sizeof inches, "%.2fin,%.2fin", width / 100.0, height / 100.0);
+  std::snprintf(inches, sizeof inches, "%.4gin,%.4gin", width_in, height_in);
   std::ostringstream os;
   os << "if (!exists(\"outfile\")) outfile = " << gnuplot_string(default_image) << "\n"
      << "fs = " << fs << "   # font size (points)\n"

@@ -3,8 +3,8 @@
 //
 // Every figure is three files in one directory: NAME.dat (the data, gnuplot blocks separated by
 // two blank lines, `index k`), NAME.gp (the script; it picks the terminal from the output
-// name's extension: .svg -> svg, .png -> pngcairo, .pdf -> pdfcairo, .eps -> epscairo, the
-// journal formats, at 100 pixels per inch) and the image. To restyle, edit NAME.gp and run
+// name's extension: .svg -> svg, .png -> pngcairo at 100 pixels per inch, .pdf -> pdfcairo and
+// .eps -> epscairo, the journal formats, at the printed size in inches) and the image. To restyle, edit NAME.gp and run
 //     cd DIR && gnuplot -e "outfile='NAME.svg'" NAME.gp
 // gnuplot is run the same way (no shell), writing into a private directory (mode 700, beside the
 // image); the finished image is moved over the final name by io/files.hpp's rules (never through
@@ -34,9 +34,12 @@ image_format image_format_of(const fs::path& p);
 // so that single-column sizes (500x350, 600x400) keep their labels apart.
 int figure_font_size(int width);
 
-// Script preamble: output name (overridable with -e "outfile='...'"), terminal by extension, and
-// the variables fs (font size) and small (1 below 800 pixels wide: compact layouts).
-std::string gnuplot_preamble(const std::string& default_image, int width, int height);
+// Script preamble: output name (overridable with -e "outfile='...'"), terminal by extension (SVG
+// and PNG `width` x `height` pixels, PDF and EPS `width_in` x `height_in` inches), font size
+// `font_pt` points, and the variables fs (the font size) and small (1 below 800 pixels wide:
+// compact layouts).
+std::string gnuplot_preamble(const std::string& default_image, int width, int height, double width_in, double height_in,
+                             int font_pt);
 
 struct render_result {
   bool rendered = false;

@@ -77,7 +77,7 @@ std::string band_script(const figure_spec& s, const std::string& title) {
   g << frontend::figure_script_head("report figure", title, s) << "set title " << frontend::gnuplot_string(title) << " noenhanced\n"
     << "set logscale xy\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\n"
     << "set xlabel \"horizon T\"\nset ylabel \"H_q (qdot0 = 1, H_q(0) = 1/2)\"\n"
-    << "set grid lc rgb \"#dddddd\"\nset key bottom left box opaque\nset xrange [1:1e30]\n"
+    << "set grid lc rgb \"#dddddd\"\nset key below maxcols 1   # off the data\nset xrange [1:1e30]\n"
     << "plot datafile using 1:3 with steps lw 2 lc rgb \"#d62728\" title \"absorption guarantee (highest minimum over the band)\", \\\n"
     << "     '' using 1:2 with steps lw 1.5 lc rgb \"#1f77b4\" title \"nominal coupling: min over [0, T]\", \\\n"
     << "     '' using 1:4 with steps lw 2 lc rgb \"#2ca02c\" title \"containment guarantee (lowest minimum)\"\n";

@@ -21,7 +21,7 @@ std::string footer(std::chrono::steady_clock::time_point start) {
 }
 
 // Before any work: REPORT.md and pareto-front.csv can be written, and nothing in DIR/figures that
-// the report could write (.png, .svg, .dat, .gp) is a link, device or directory (the figures are
+// the report could write (.png, .svg, .pdf, .dat, .gp) is a link, device or directory (the figures are
 // checked again one by one as they are drawn).
 void check_report_outputs(const fs::path& dir) {
   check_distinct_paths({{"the report", (dir / "REPORT.md").string()}, {"the report's CSV", (dir / "pareto-front.csv").string()}});
@@ -30,7 +30,7 @@ void check_report_outputs(const fs::path& dir) {
   std::error_code ec;
   for (fs::directory_iterator it(dir / "figures", ec), end; !ec && it != end; it.increment(ec)) {
     const std::string ext = it->path().extension().string();
-    if (ext == ".png" || ext == ".svg" || ext == ".dat" || ext == ".gp") check_output_path(it->path().string());
+    if (ext == ".png" || ext == ".svg" || ext == ".pdf" || ext == ".dat" || ext == ".gp") check_output_path(it->path().string());
   }
 }
 

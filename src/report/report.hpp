@@ -1,6 +1,6 @@
 // The REPORT.md generator (`gyrores report`, README.md): DIR/REPORT.md with the paper's examples
 // recomputed (proved digits), the two design cases, the Pareto front, a validation sweep, the
-// couplings that are not resonant and the figures (PNG + SVG, with data and gnuplot scripts),
+// couplings that are not resonant and the figures (PNG, SVG and PDF, with data and gnuplot scripts),
 // from the application layer (include/gyrores/app/) and the library. Every file is written
 // atomically (io/files.hpp); REPORT.md is written last and links only files that exist. Its own
 // target, linked by the gyrores tool; the sections are in report/sections.hpp.

@@ -25,12 +25,15 @@ using frontend::num;
 struct figure_set {
   fs::path dir;
   std::vector<std::string> notes;
-  std::map<std::string, std::pair<bool, bool>> drawn;  // stem -> (png exists, svg exists)
+  struct images {
+    bool png = false, svg = false, pdf = false;  // which were drawn
+  };
+  std::map<std::string, images> drawn;  // by stem
 
-  // A PNG and an SVG of the figure `stem`, w x h pixels.
+  // A PNG, an SVG and a PDF (for a paper: w/100 x h/100 inches) of the figure `stem`, w x h pixels.
   figure_spec spec(const std::string& stem, int w, int h) const;
   void record(const std::string& stem, const figure_output& o);
-  // Markdown for one figure: embedded PNG, links to SVG, data and script (only files that exist).
+  // Markdown for one figure: embedded PNG, links to SVG, PDF, data and script (only files that exist).
   std::string md(const std::string& stem, const std::string& caption) const;
 };
 

@@ -15,31 +15,33 @@ figure_spec figure_set::spec(const std::string& stem, int w, int h) const {
   s.stem = stem;
   s.width = w;
   s.height = h;
-  s.images = {stem + ".png", stem + ".svg"};
+  s.images = {stem + ".png", stem + ".svg", stem + ".pdf"};
   frontend::check_figure_outputs(s);
   return s;
 }
 
 void figure_set::record(const std::string& stem, const figure_output& o) {
-  bool png = false, svg = false;
+  images drawn_now;
   for (auto& im : o.images) {
-    if (im.extension() == ".png") png = true;
-    if (im.extension() == ".svg") svg = true;
+    if (im.extension() == ".png") drawn_now.png = true;
+    if (im.extension() == ".svg") drawn_now.svg = true;
+    if (im.extension() == ".pdf") drawn_now.pdf = true;
   }
-  drawn[stem] = {png, svg};
+  drawn[stem] = drawn_now;
   if (!o.message.empty()) notes.push_back(stem + ": " + o.message);
 }
 
 std::string figure_set::md(const std::string& stem, const std::string& caption) const {
   std::ostringstream os;
   auto it = drawn.find(stem);
-  bool png = it != drawn.end() && it->second.first, svg = it != drawn.end() && it->second.second;
-  if (png) os << "![" << caption << "](figures/" << stem << ".png)\n\n";
+  const images im = it == drawn.end() ? images{} : it->second;
+  if (im.png) os << "![" << caption << "](figures/" << stem << ".png)\n\n";
   os << "*" << caption << "* Files: ";
-  if (svg) os << "[SVG](figures/" << stem << ".svg), ";
-  if (png) os << "[PNG](figures/" << stem << ".png), ";
+  if (im.svg) os << "[SVG](figures/" << stem << ".svg), ";
+  if (im.pdf) os << "[PDF](figures/" << stem << ".pdf), ";
+  if (im.png) os << "[PNG](figures/" << stem << ".png), ";
   os << "[data](figures/" << stem << ".dat), [gnuplot script](figures/" << stem << ".gp)";
-  if (!png && !svg) os << " (image not drawn: see the notes at the end)";
+  if (!im.png && !im.svg && !im.pdf) os << " (image not drawn: see the notes at the end)";
   os << "\n\n";
   return os.str();
 }

@@ -64,6 +64,12 @@ struct energy_series {
   double h_min = 0;     // the minimum of H_q it marks
   double t_proxy = 0;   // pi/|n| (the paper's proxy)
   double t_end = 0;
+  // Every time in [0, t_end] at which H_q takes the marked minimum h_min, t_first included (a
+  // pair: each minimiser of the theorem in every period; any n: t_first alone). The samples are
+  // refined around each (a geometric sequence of offsets down to rounding, the time itself
+  // included), so that the drawn curve reaches its marks even where the dip is far narrower
+  // than the uniform spacing (n = 2 over [0, 50]: a dip to 1.4e-7 between samples 0.01 apart).
+  std::vector<double> t_minima;
 };
 
 // H_q(t), H_z(t) on [0, t_end] for a resonant pair (t_end <= 0: one period 2 pi sqrt(tau sigma)).

@@ -36,6 +36,24 @@ std::size_t sample_count(double want, const std::string& too_long) {
   return std::size_t(std::max(4000.0, want));
 }
 
+// Adds to `samples` (sorted by t) at(t) for t = tm and tm +- half_width / 2^k, k = 0..52, inside
+// [0, t_end], for every tm of `times`; then sorts them by t again (duplicates dropped). On a log
+// axis the dip around tm is then drawn at every scale, down to its bottom at tm exactly.
+template <class F>
+void refine_around(std::vector<energy_sample>& samples, const std::vector<double>& times, double half_width, double t_end,
+                   F&& at) {
+  for (double tm : times) {
+    samples.push_back(at(tm));
+    double h = half_width;
+    for (int k = 0; k <= 52; ++k, h /= 2)
+      for (double t : {tm - h, tm + h})
+        if (t >= 0 && t <= t_end) samples.push_back(at(t));
+  }
+  std::sort(samples.begin(), samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
+  samples.erase(std::unique(samples.begin(), samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t == y.t; }),
+                samples.end());
+}
+
 [[noreturn]] void throw_figure_order(const std::string& pair) {
   throw usage_error("figures sample pairs up to order " + std::to_string(figure_max_order) + ", got " + pair);
 }
@@ -149,13 +167,32 @@ energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v, dou
   e.qdot0 = v;
   const double theta_end = e.t_end / c.sqrt_ts;
   const std::size_t samples = sample_count(64 * f0.a * theta_end / (2 * c.pi), "the time span is too long to sample");
-  e.samples = sample_uniform(theta_end, samples, [&](double th) {
+  const auto at_theta = [&](double th) {
     auto s = f0.state(th);
     return energy_sample{th * c.sqrt_ts, (s.q * s.q + s.qdot * s.qdot) / 2, (s.z * s.z + s.zdot * s.zdot) / 2};
-  });
+  };
+  e.samples = sample_uniform(theta_end, samples, at_theta);
   e.t_first = f0.r.t_first;
   e.h_min = f0.r.r_res * f0.r.r_res / 2;
   e.t_proxy = c.pi / c.n;
+  // The minimisers repeat every period 2 pi in theta; t_first is the first of them (theorem/minimum.hpp).
+  std::vector<double> thetas;
+  for (double period = 0; period <= theta_end; period += 2 * c.pi)
+    for (std::size_t i = 0; i < f0.r.count; ++i)
+      if (period + f0.r.minimisers[i] <= theta_end) thetas.push_back(period + f0.r.minimisers[i]);
+  for (double th : thetas) e.t_minima.push_back(th == f0.r.theta_first ? e.t_first : th * c.sqrt_ts);
+  // Refined in theta (the state's own variable), half a fast period around each minimiser.
+  std::vector<energy_sample> by_theta;
+  refine_around(by_theta, thetas, c.pi / f0.a, theta_end, [&](double th) { return energy_sample{th, 0, 0}; });
+  for (const auto& p : by_theta) e.samples.push_back(at_theta(p.t));
+  // The samples within rounding of t_first carry the theorem's time, so that curve and mark meet
+  // exactly; then one sample per time.
+  for (auto& p : e.samples)
+    if (std::fabs(p.t - e.t_first) <= 1e-15 * e.t_first) p.t = e.t_first;
+  std::sort(e.samples.begin(), e.samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
+  e.samples.erase(std::unique(e.samples.begin(), e.samples.end(),
+                              [](const energy_sample& x, const energy_sample& y) { return x.t == y.t; }),
+                  e.samples.end());
   return e;
 }
 
@@ -176,6 +213,11 @@ energy_series energy_of_coupling(double n, double v, double t_end) {
   e.t_first = hm.t_min;
   e.h_min = hm.h_min;
   e.t_proxy = real_pi<double>() / n;
+  e.t_minima = {hm.t_min};
+  refine_around(e.samples, e.t_minima, real_pi<double>() / w.omega1, t_end, [&](double t) {
+    auto s = impulse_response(n, v, t);
+    return energy_sample{t, energy_q(s), energy_z(s)};
+  });
   return e;
 }
 
