@@ -285,10 +285,15 @@ TEST_CASE("cli coupling: any horizon and any coupling size answer (the horizon t
     CHECK(j["h_min_horizon"].is_string());
     CHECK(j["enclosures"]["t_min_horizon"].size() == 2);
   }
-  // n = 1e308: exact integers of 600 digits in the JSON (beyond nlohmann's doubles: read as text).
-  const auto huge = cli_run("coupling 1e308 --json --convergents 1");
+  // n = 1e150, the largest coupling accepted (n^2 = 10^300: docs/formats.md, limits): exact
+  // integers of 300 digits in the JSON (beyond nlohmann's doubles: read as text). One past it is
+  // refused up front, naming the limit.
+  const auto huge = cli_run("coupling 1e150 --json --convergents 1");
   CHECK(huge.status == 0);
   CHECK(huge.out.find("\"theorem\": \"horizon-theorem/1\"") != std::string::npos);
+  const auto beyond = cli_run("coupling 1e308 --json --convergents 1");
+  CHECK(beyond.status == 2);
+  CHECK(beyond.err.find("10^300") != std::string::npos);
   // --certificate: the independent checker accepts what coupling wrote.
   const std::string cert = (std::filesystem::temp_directory_path() / ("gyrores-coupling-cert-" + std::to_string(::getpid()) + ".json")).string();
   std::filesystem::remove(cert);

@@ -432,6 +432,7 @@ TEST_CASE("safe files: SIGINT and SIGTERM end every command with exit 130", "[cl
   ::kill(band, SIGTERM);
   CHECK(gyrores::test::cli_wait(band) == 130);
   const std::string out = read_text(d / "b.out");
+  INFO("stdout: " << out.substr(0, 300) << "\nstderr: " << read_text(d / "b.err"));
   CHECK(has(out, "absorption guarantee   in ["));
   CHECK(has(out, "interrupted"));
   CHECK_FALSE(has(out, "each the correct rounding"));

@@ -36,9 +36,10 @@ def test_argument_errors_are_usage_errors_naming_the_argument(call, message):
 
 
 def test_values_the_table_holds_are_not_refused():
-    # Just inside the doubles: the float64 columns hold them (the checks above must not refuse these).
-    table = gyrores.couplings(n=["1e-300", 2], horizon=["1e300", "4.9e-324"])
-    assert table["n"][0] == 1e-300 and table["horizon"][0] == 1e300 and table["horizon"][1] == 5e-324
+    # Inside the doubles and the coupling limits (|n| >= 10^-150: docs/formats.md, limits): the
+    # float64 columns hold them (the checks above must not refuse these).
+    table = gyrores.couplings(n=["1e-150", 2], horizon=["1e300", "4.9e-324"])
+    assert table["n"][0] == 1e-150 and table["horizon"][0] == 1e300 and table["horizon"][1] == 5e-324
 
 
 def test_rationals_of_any_length_in_and_out():
@@ -46,13 +47,19 @@ def test_rationals_of_any_length_in_and_out():
     q = Fraction(BIG + 1, BIG)
     r = gyrores.pair(6, 5, digits=20, qdot0=q)
     assert r.r_res == gyrores.pair(6, 5, digits=20).r_res  # r_res scales with qdot0, 1 + 1e-5000 here
-    c = gyrores.coupling(n2=q, horizon=10, convergents=0)
-    assert c.n2 == q  # read back exactly, a Fraction of 5001-digit terms
-    c = gyrores.coupling(n2=Fraction(1, BIG), horizon=10, convergents=0)
-    assert c.n2 == Fraction(1, BIG) and c.h_min_horizon == 0.5
-    assert gyrores.coupling(n=mpmath.mpf(2) ** -20000, horizon=1, convergents=0).n2 == Fraction(1, 2**40000)
+    # A coupling's n^2 takes at most 2000 characters and lies in [10^-300, 10^300] (docs/formats.md,
+    # limits): the longest such fractions go in and come back exactly; one past is refused by name.
+    big = 10**998  # (10^998 + 1)/10^998: 1999 characters as p/q, the longest accepted
+    q2 = Fraction(big + 1, big)
+    c = gyrores.coupling(n2=q2, horizon=10, convergents=0)
+    assert c.n2 == q2
+    c = gyrores.coupling(n2=Fraction(1, 10**299), horizon=10, convergents=0)
+    assert c.n2 == Fraction(1, 10**299) and c.h_min_horizon == 0.5
+    assert gyrores.coupling(n=mpmath.mpf(2) ** -400, horizon=1, convergents=0).n2 == Fraction(1, 2**800)
     # Must fail: a value off by one in its last digit is not read back as equal.
-    assert c.n2 != Fraction(1, BIG + 1)
+    assert c.n2 != Fraction(1, 10**299 + 1)
+    with pytest.raises(gyrores.UsageError, match="2000"):
+        gyrores.coupling(n2=q, horizon=10, convergents=0)
 
 
 def test_import_without_mpmath_says_so_in_one_line(tmp_path):

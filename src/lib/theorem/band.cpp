@@ -318,18 +318,19 @@ band_extreme search::run() {
                     m);
     }
     std::vector<band_coupling> cuts{J.a};
+    std::vector<interval> children;
     try {
       for (const fraction& f : points) {
         cuts.push_back(band_coupling::of_x(f.p, f.q));
         evaluate(cuts.back());
       }
-    } catch (const interrupted&) {  // a horizon proof stopped: J's bound still holds its part
+      cuts.push_back(J.b);
+      for (std::size_t i = 0; i + 1 < cuts.size(); ++i) children.push_back(bound_of(cuts[i], cuts[i + 1]));
+    } catch (const interrupted&) {  // a horizon proof or a bound's rotation minimum stopped: J's bound still holds
       open.push(std::move(J));
       return finish(lo, hi, true, "");
     }
-    cuts.push_back(J.b);
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-      interval child = bound_of(cuts[i], cuts[i + 1]);
+    for (interval& child : children) {
       // A child that cannot beat the best evaluated coupling is dropped (item 5).
       if (absorption() ? child.bound > best_lo_ : child.bound < best_hi_) open.push(std::move(child));
       else if (opt_.record_cover) keep(child);
