@@ -38,19 +38,7 @@ namespace {
 using namespace support;
 using namespace exact;
 
-struct Qr {
-  fmpq_t v;
-  Qr() { fmpq_init(v); }
-  Qr(const Qr& o) {
-    fmpq_init(v);
-    fmpq_set(v, o.v);
-  }
-  Qr& operator=(const Qr& o) {
-    fmpq_set(v, o.v);
-    return *this;
-  }
-  ~Qr() { fmpq_clear(v); }
-};
+using Qr = Q;
 
 // ---- Reading.
 void check_len(const std::string& s, const std::string& name) {
@@ -85,24 +73,8 @@ Z signed_integer(const json& j, const std::string& name) {
   return z;
 }
 Qr decimal_value(const std::string& s, const std::string& name) {
-  const auto e = s.find_first_of("eE");
-  std::string mant = s.substr(0, e);
-  long exp10 = e == std::string::npos ? 0 : std::stol(s.substr(e + 1));
-  const auto dot = mant.find('.');
-  if (dot != std::string::npos) {
-    exp10 -= long(mant.size() - dot - 1);
-    mant.erase(dot, 1);
-  }
-  if (exp10 > 4000 || exp10 < -4000) throw fails("work bound: " + name + " has an exponent beyond 4000");
-  Z m, p;
-  fmpz_set_str(m.v, mant.c_str(), 10);
-  fmpz_set_ui(p.v, 10);
-  fmpz_pow_ui(p.v, p.v, ulong(exp10 < 0 ? -exp10 : exp10));
   Qr q;
-  if (exp10 >= 0) {
-    fmpz_mul(m.v, m.v, p.v);
-    fmpq_set_fmpz(q.v, m.v);
-  } else fmpq_set_fmpz_frac(q.v, m.v, p.v);
+  if (!decimal_exact(s, 4000, q.v)) throw fails("work bound: " + name + " has an exponent beyond 4000");
   return q;
 }
 

@@ -192,27 +192,7 @@ int check_bracket(const certificate& c, const constants& K, B& lo, B& hi, long p
 
 // Step 4 for one claim: 1 holds, 0 undecided; fails when false.
 int check_claim(const bracket& claim, const B& enclosure, long digits, bool exact_zero, const std::string& name, long prec) {
-  B lo = ball_of(claim.lo, prec), hi = ball_of(claim.hi, prec), d;
-  if (exact_zero) {
-    if (!arb_is_zero(lo.v) || !arb_is_zero(hi.v)) throw fails(name + " of a degenerate pair must be [0, 0]");
-    return 1;
-  }
-  if (arb_lt(enclosure.v, lo.v) || arb_gt(enclosure.v, hi.v)) throw fails(name + " does not contain the value");
-  // lo <= every point of the enclosure <= hi, decided exactly (balls, never by rounding).
-  arb_sub(d.v, enclosure.v, lo.v, prec);
-  bool inside = arb_is_nonnegative(d.v);
-  arb_sub(d.v, hi.v, enclosure.v, prec);
-  inside = inside && arb_is_nonnegative(d.v);
-  if (!inside) return 0;
-  // Width: hi - lo <= 10^-digits min(|lo|, |hi|) (both ends of one sign: enclosures of positive values).
-  B w, lim;
-  if (!arb_is_positive(lo.v)) throw fails(name + ": a positive quantity needs a positive lower end");
-  arb_sub(w.v, hi.v, lo.v, prec);
-  arb_set_ui(lim.v, 10);
-  arb_pow_ui(lim.v, lim.v, ulong(digits), prec);
-  arb_mul(w.v, w.v, lim.v, prec);
-  if (arb_gt(w.v, lo.v)) throw fails(name + " is wider than " + std::to_string(digits) + " digits");
-  return arb_le(w.v, lo.v) ? 1 : 0;
+  return claim_holds(claim, enclosure, digits, exact_zero ? " of a degenerate pair must be [0, 0]" : nullptr, name, prec);
 }
 
 // sqrt(G(u)) = x sqrt(1-x^2) sin^2 u / sqrt(cos^2 u + x^2 sin^2 u).

@@ -116,4 +116,50 @@ B lobe_G(const B& x2, const B& one_m_x2, const B& u, long prec) {
   return g;
 }
 
+bool decimal_exact(const std::string& s, long max_exp10, fmpq_t out) {
+  const auto e = s.find_first_of("eE");
+  std::string mant = s.substr(0, e);
+  long exp10 = e == std::string::npos ? 0 : std::stol(s.substr(e + 1));
+  const auto dot = mant.find('.');
+  if (dot != std::string::npos) {
+    exp10 -= long(mant.size() - dot - 1);
+    mant.erase(dot, 1);
+  }
+  if (exp10 > max_exp10 || exp10 < -max_exp10) return false;
+  Z m, p;
+  fmpz_set_str(m.v, mant.c_str(), 10);
+  fmpz_set_ui(p.v, 10);
+  fmpz_pow_ui(p.v, p.v, ulong(exp10 < 0 ? -exp10 : exp10));
+  if (exp10 >= 0) {
+    fmpz_mul(m.v, m.v, p.v);
+    fmpq_set_fmpz_frac(out, m.v, Z(1).v);
+  } else fmpq_set_fmpz_frac(out, m.v, p.v);
+  return true;
+}
+
+int claim_holds(const bracket& claim, const B& enclosure, long digits, const char* zero_rule, const std::string& name,
+                long prec) {
+  B lo = ball_of(claim.lo, prec), hi = ball_of(claim.hi, prec), d;
+  if (zero_rule) {
+    if (!arb_is_zero(lo.v) || !arb_is_zero(hi.v)) throw fails(name + zero_rule);
+    return 1;
+  }
+  if (arb_lt(enclosure.v, lo.v) || arb_gt(enclosure.v, hi.v)) throw fails(name + " does not contain the value");
+  // lo <= every point of the enclosure <= hi, decided exactly (balls, never by rounding).
+  arb_sub(d.v, enclosure.v, lo.v, prec);
+  bool inside = arb_is_nonnegative(d.v);
+  arb_sub(d.v, hi.v, enclosure.v, prec);
+  inside = inside && arb_is_nonnegative(d.v);
+  if (!inside) return 0;
+  // Width: hi - lo <= 10^-digits lo (enclosures of positive values).
+  if (!arb_is_positive(lo.v)) throw fails(name + ": a positive quantity needs a positive lower end");
+  B w, lim;
+  arb_sub(w.v, hi.v, lo.v, prec);
+  arb_set_ui(lim.v, 10);
+  arb_pow_ui(lim.v, lim.v, ulong(digits), prec);
+  arb_mul(w.v, w.v, lim.v, prec);
+  if (arb_gt(w.v, lo.v)) throw fails(name + " is wider than " + std::to_string(digits) + " digits");
+  return arb_le(w.v, lo.v) ? 1 : 0;
+}
+
 }  // namespace gyrores_checker::support

@@ -4,6 +4,7 @@
 // one-line verdict text. Like the checkers, nothing here includes include/gyrores/.
 #pragma once
 #include <arb.h>
+#include <flint/fmpq.h>
 #include <flint/fmpz.h>
 
 #include <cstddef>
@@ -49,6 +50,20 @@ struct B {
   ~B() { arb_clear(v); }
 };
 
+struct Q {
+  fmpq_t v;
+  Q() { fmpq_init(v); }
+  Q(const Q& o) {
+    fmpq_init(v);
+    fmpq_set(v, o.v);
+  }
+  Q& operator=(const Q& o) {
+    fmpq_set(v, o.v);
+    return *this;
+  }
+  ~Q() { fmpq_clear(v); }
+};
+
 // The decimal text of z, abbreviated past 60 digits (for messages).
 std::string text_of(const Z& z);
 
@@ -63,6 +78,16 @@ struct bracket {
   std::string lo, hi;
 };
 bracket bracket_field(const json& j, const std::string& name, std::size_t max_len);
+
+// The exact value of a decimal read by decimal_field into out; false (out unchanged) when its
+// decimal exponent lies beyond -max_exp10..max_exp10 (the caller's work bound).
+bool decimal_exact(const std::string& decimal, long max_exp10, fmpq_t out);
+
+// A claim [lo, hi] holds the enclosure and is at most 10^-digits wide relative to lo: 1 holds, 0
+// undecided at prec; fails when false. For a value that is exactly 0, zero_rule is the message
+// (after the name) when the claim is not [0, 0]; nullptr otherwise.
+int claim_holds(const bracket& claim, const B& enclosure, long digits, const char* zero_rule, const std::string& name,
+                long prec);
 
 // The exact decimal as a ball (exact when its binary form fits prec bits, else a tight ball).
 B ball_of(const std::string& decimal, long prec);

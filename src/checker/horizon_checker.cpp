@@ -231,31 +231,9 @@ long bits_of(const Z& z) { return long(fmpz_bits(z.v)); }
 B ball_of_q2(const field& F, const QD& a, long prec) { return exact::ball_of(F, a, prec); }
 // The exact value of a decimal (as read by decimal_field), for the comparisons balls cannot make
 // (two equal decimals, a decimal against the rational T).
-struct Qx {
-  fmpq_t v;
-  Qx() { fmpq_init(v); }
-  ~Qx() { fmpq_clear(v); }
-  Qx(const Qx&) = delete;
-  Qx& operator=(const Qx&) = delete;
-};
+using Qx = Q;
 void exact_of(const std::string& s, Qx& out, const std::string& name) {
-  const auto e = s.find_first_of("eE");
-  std::string mant = s.substr(0, e);
-  long exp10 = e == std::string::npos ? 0 : std::stol(s.substr(e + 1));
-  const auto dot = mant.find('.');
-  if (dot != std::string::npos) {
-    exp10 -= long(mant.size() - dot - 1);
-    mant.erase(dot, 1);
-  }
-  if (exp10 > 100000 || exp10 < -100000) throw malformed(name + ": exponent out of range");
-  Z m, p;
-  fmpz_set_str(m.v, mant.c_str(), 10);
-  fmpz_set_ui(p.v, 10);
-  fmpz_pow_ui(p.v, p.v, ulong(exp10 < 0 ? -exp10 : exp10));
-  if (exp10 >= 0) {
-    fmpz_mul(m.v, m.v, p.v);
-    fmpq_set_fmpz_frac(out.v, m.v, Z(1).v);
-  } else fmpq_set_fmpz_frac(out.v, m.v, p.v);
+  if (!decimal_exact(s, 100000, out.v)) throw malformed(name + ": exponent out of range");
 }
 // lo <= hi exactly, or the bracket is refused naming its field.
 void exact_order(const bracket& b, const std::string& name, bool strict) {
@@ -349,29 +327,11 @@ B alpha_of(const constants& K, const Z& k, long side, const B& lo, const B& hi) 
   return a;
 }
 
-// A claim [lo, hi] holds the enclosure and is at most 10^-digits wide (relative): 1, 0 undecided.
+// A claim [lo, hi] with lo <= hi exactly holds the enclosure and is at most 10^-digits wide.
 int check_claim(const bracket& claim, const B& enclosure, long digits, bool exact_zero, const std::string& name,
                 long prec) {
-  B lo = ball_of(claim.lo, prec), hi = ball_of(claim.hi, prec), d;
   exact_order(claim, name, false);
-  if (exact_zero) {
-    if (!arb_is_zero(lo.v) || !arb_is_zero(hi.v)) throw fails(name + " must be exactly [\"0\", \"0\"]");
-    return 1;
-  }
-  if (arb_lt(enclosure.v, lo.v) || arb_gt(enclosure.v, hi.v)) throw fails(name + " does not contain the value");
-  arb_sub(d.v, enclosure.v, lo.v, prec);
-  bool inside = arb_is_nonnegative(d.v);
-  arb_sub(d.v, hi.v, enclosure.v, prec);
-  inside = inside && arb_is_nonnegative(d.v);
-  if (!inside) return 0;
-  if (!arb_is_positive(lo.v)) throw fails(name + ": a positive quantity needs a positive lower end");
-  B w, lim;
-  arb_sub(w.v, hi.v, lo.v, prec);
-  arb_set_ui(lim.v, 10);
-  arb_pow_ui(lim.v, lim.v, ulong(digits), prec);
-  arb_mul(w.v, w.v, lim.v, prec);
-  if (arb_gt(w.v, lo.v)) throw fails(name + " is wider than " + std::to_string(digits) + " digits");
-  return arb_le(w.v, lo.v) ? 1 : 0;
+  return claim_holds(claim, enclosure, digits, exact_zero ? " must be exactly [\"0\", \"0\"]" : nullptr, name, prec);
 }
 
 // t_min = T at the horizon's end: lo <= T <= hi and the width, exactly (T is rational).
