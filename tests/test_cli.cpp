@@ -74,7 +74,7 @@ TEST_CASE("pair --json has the documented schema", "[cli]") {
   CHECK(e["enclosures"]["asymptotic_lobes"].size() == 2);
   const auto text = cli_run("pair 6 5 --enclosures");
   REQUIRE(text.status == 0);
-  CHECK(text.out.find("r_res         5.0745805791033372e-02  in [5.0745805791033372") != std::string::npos);
+  CHECK(text.out.find("r_res         0.050745805791033372  in [0.050745805791033372") != std::string::npos);
 }
 
 TEST_CASE("pair digits are all correct (against the library at 60 digits)", "[cli]") {
@@ -239,7 +239,7 @@ TEST_CASE("pair: a minimiser near 0 and its mirror near 2 pi are printed right (
   const auto r = cli_run("pair " + tau + " " + sigma + " --digits 5");
   REQUIRE(r.status == 0);
   CHECK(r.out.find("theta_first   1.5708e-50") != std::string::npos);
-  CHECK(r.out.find("minimisers    1.5708e-50, 6.2832e+00") != std::string::npos);
+  CHECK(r.out.find("minimisers    1.5708e-50, 6.2832\n") != std::string::npos);  // plain from exponent -4
 }
 
 TEST_CASE("pair: exact ties and cancelling asymptotics are proved, not exit 3 (issue 12)", "[cli]") {
@@ -292,7 +292,6 @@ void check_share(const std::string& share, const std::string& h_text, const gyro
   using gyrores::big_rational;
   INFO("share " << share << ", H_q min " << h_text);
   REQUIRE(!share.empty());
-  CHECK(share.find('e') == std::string::npos);  // plain notation at these sizes
   const std::size_t e = h_text.find('e');
   const int digits = mantissa_digits(h_text);
   const long e10 = std::stol(h_text.substr(e + 1));
@@ -357,7 +356,8 @@ TEST_CASE("text outputs: plain notation with exactly the digits of the proved ro
 
 TEST_CASE("coupling --quiet: no progress on stderr", "[cli]") {
   if (!cli_available()) return;
-  // A band proof of a few seconds: its progress line would show after one.
+  // The flag is accepted (today's code refused it) and nothing reaches stderr; the progress line
+  // itself shows only after a second of band proof (cmd_coupling.cpp), which no fast test reaches.
   const auto q = cli_run("coupling 2 --tolerance 5% --horizon 1e4 --quiet");
   CHECK(q.status == 0);
   CHECK(q.err.empty());
