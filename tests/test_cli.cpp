@@ -74,7 +74,7 @@ TEST_CASE("pair --json has the documented schema", "[cli]") {
   CHECK(e["enclosures"]["asymptotic_lobes"].size() == 2);
   const auto text = cli_run("pair 6 5 --enclosures");
   REQUIRE(text.status == 0);
-  CHECK(text.out.find("r_res         5.0745805791033372e-02  in [5.0745805791033372") != std::string::npos);
+  CHECK(text.out.find("r_res         0.050745805791033372  in [0.050745805791033372") != std::string::npos);
 }
 
 TEST_CASE("pair digits are all correct (against the library at 60 digits)", "[cli]") {
@@ -239,7 +239,7 @@ TEST_CASE("pair: a minimiser near 0 and its mirror near 2 pi are printed right (
   const auto r = cli_run("pair " + tau + " " + sigma + " --digits 5");
   REQUIRE(r.status == 0);
   CHECK(r.out.find("theta_first   1.5708e-50") != std::string::npos);
-  CHECK(r.out.find("minimisers    1.5708e-50, 6.2832e+00") != std::string::npos);
+  CHECK(r.out.find("minimisers    1.5708e-50, 6.2832\n") != std::string::npos);  // plain from exponent -4
 }
 
 TEST_CASE("pair: exact ties and cancelling asymptotics are proved, not exit 3 (issue 12)", "[cli]") {
@@ -258,4 +258,139 @@ TEST_CASE("pair: exact ties and cancelling asymptotics are proved, not exit 3 (i
   const auto at = k.out.find("\"r_res_asy_rel_error\": \"");
   REQUIRE(at != std::string::npos);
   CHECK(mantissa_digits(k.out.substr(at + 24, k.out.find('"', at + 24) - at - 24)) == 17);
+}
+
+// ---- Numbers for people (issue 35): the text outputs' plain notation and shares of H_q(0) ----
+
+namespace {
+
+// The value after `key` on the first line of `text` that starts with "  " + key, up to two spaces.
+std::string text_value(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\n  " + key);
+  if (at == std::string::npos) return "";
+  std::size_t start = text.find_first_not_of(' ', at + 3 + key.size());
+  const std::size_t end = text.find_first_of("\n", start);
+  std::string v = text.substr(start, end - start);
+  const std::size_t gap = v.find("  ");
+  return gap == std::string::npos ? v : v.substr(0, gap);
+}
+
+// The share "S" of "(S% of H_q(0))" on the line after `key`.
+std::string share_on_line(const std::string& text, const std::string& key) {
+  const std::size_t at = text.find("\n  " + key);
+  if (at == std::string::npos) return "";
+  const std::string line = text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+  const std::size_t open = line.find("  ("), pct = line.find("% of H_q(0))");
+  if (open == std::string::npos || pct == std::string::npos) return "";
+  return line.substr(open + 3, pct - open - 3);
+}
+
+// The printed share must be the correct 4-digit rounding of factor * h, where h is the exact
+// value within half a unit of the last digit of `h_text` (a correct rounding to many more digits):
+// both ends of that interval, times the exact factor, round to the printed digits.
+void check_share(const std::string& share, const std::string& h_text, const gyrores::big_rational& factor) {
+  using gyrores::big_rational;
+  INFO("share " << share << ", H_q min " << h_text);
+  REQUIRE(!share.empty());
+  const std::size_t e = h_text.find('e');
+  const int digits = mantissa_digits(h_text);
+  const long e10 = std::stol(h_text.substr(e + 1));
+  const big_rational h = gyrores::parse_rational(h_text, "h");
+  // Half a unit in the last place: 10^(e10 - digits + 1) / 2 (e10 - digits + 1 < 0 here).
+  const big_rational half_ulp(gyrores::big_int(1), 2 * boost::multiprecision::pow(gyrores::big_int(10), unsigned(digits - 1 - e10)));
+  const big_rational shown = gyrores::parse_rational(share, "share");
+  for (const big_rational& end : {big_rational(h - half_ulp), big_rational(h + half_ulp)})
+    CHECK(gyrores::parse_rational(gyrores::format_rational_scientific(end * factor, 4), "rounded") == shown);
+}
+
+}  // namespace
+
+TEST_CASE("pair: H_q min as a share of H_q(0), proved (200 H_q min at qdot0 = 1)", "[cli]") {
+  if (!cli_available()) return;
+  const auto text = cli_run("pair 6 5");
+  REQUIRE(text.status == 0);
+  const auto j = cli_json("pair 6 5 --json --digits 40");
+  const std::string share = share_on_line(text.out, "H_q min");
+  CHECK(share == "0.2575");  // 200 x 1.2875684026906381e-03 = 0.25751...
+  check_share(share, j["h_min"].get<std::string>(), 200);
+  // qdot0 = 3/7: H_q(0) = 9/98, the share is H_q min * 9800/9.
+  const auto q = cli_run("pair 9 4 --qdot0 3/7 --digits 12");
+  REQUIRE(q.status == 0);
+  check_share(share_on_line(q.out, "H_q min"), cli_json("pair 9 4 --qdot0 3/7 --json --digits 40")["h_min"].get<std::string>(),
+              gyrores::big_rational(9800, 9));
+  // A degenerate pair: an exact zero, said so on both lines.
+  const auto d = cli_run("pair 11 9 --digits 10");
+  CHECK(text_value(d.out, "r_res") == "0");
+  CHECK(text_value(d.out, "H_q min") == "0");
+  CHECK(d.out.find("0.000000000e+00") == std::string::npos);
+}
+
+TEST_CASE("coupling and design: min H_q with its share of H_q(0)", "[cli]") {
+  if (!cli_available()) return;
+  const auto text = cli_run("coupling 2 --horizon 37");
+  REQUIRE(text.status == 0);
+  const auto j = cli_json("coupling 2 --horizon 37 --json --digits 40");
+  check_share(share_on_line(text.out, "min H_q"), j["h_min_horizon"].get<std::string>(), 200);
+  const auto r = cli_run("coupling --n2 1/12");
+  check_share(share_on_line(r.out, "H_q min"), cli_json("pair 4 3 --json --digits 40")["h_min"].get<std::string>(), 200);
+  const auto design = cli_run("design contain --tmax 17 --beat 10");
+  REQUIRE(design.status == 0);
+  CHECK(!share_on_line(design.out, "H_q min").empty());
+}
+
+TEST_CASE("text outputs: plain notation with exactly the digits of the proved rounding", "[cli]") {
+  if (!cli_available()) return;
+  const auto t = cli_run("pair 6 5 --digits 10");
+  REQUIRE(t.status == 0);
+  CHECK(text_value(t.out, "t_first") == "16.35107798");
+  CHECK(text_value(t.out, "H_q min") == "0.001287568403");
+  // Every digit as in the JSON's scientific text: only the point moved.
+  const auto j = cli_json("pair 6 5 --json");
+  const std::string sci = j["t_first"].get<std::string>();  // 1.6351077975144872e+01
+  CHECK(text_value(cli_run("pair 6 5").out, "t_first") == sci.substr(0, 1) + sci.substr(2, 1) + "." + sci.substr(3, sci.find('e') - 3));
+  // Exponents outside [-4, 6] stay scientific.
+  const auto c = cli_run("coupling 0.2 --horizon 40");
+  CHECK(c.out.find("min H_q       1.15349511491e-08") != std::string::npos);
+  CHECK(c.out.find("first at t =  15.6689755829\n") != std::string::npos);
+}
+
+TEST_CASE("coupling --quiet: no progress on stderr", "[cli]") {
+  if (!cli_available()) return;
+  // The flag is accepted (today's code refused it) and nothing reaches stderr; the progress line
+  // itself shows only after a second of band proof (cmd_coupling.cpp), which no fast test reaches.
+  const auto q = cli_run("coupling 2 --tolerance 5% --horizon 1e4 --quiet");
+  CHECK(q.status == 0);
+  CHECK(q.err.empty());
+  CHECK(q.out.find("absorption guarantee") != std::string::npos);
+}
+
+TEST_CASE("coupling --n2 with --tolerance: rational ends enclosing n (1 -+ p) outward", "[cli]") {
+  if (!cli_available()) return;
+  using gyrores::big_rational;
+  const auto j = cli_json("coupling --n2 1/12 --tolerance 1% --horizon 20 --json --convergents 0");
+  const auto& band = j["band"];
+  const big_rational n1 = gyrores::parse_rational(band["n1"].get<std::string>(), "n1"),
+                     n2 = gyrores::parse_rational(band["n2"].get<std::string>(), "n2");
+  const big_rational p(1, 100), sq(1, 12);
+  // n1 <= sqrt(1/12) (1 - p) and n2 >= sqrt(1/12) (1 + p), compared squared (all positive) ...
+  CHECK(n1 * n1 <= sq * (1 - p) * (1 - p));
+  CHECK(n2 * n2 >= sq * (1 + p) * (1 + p));
+  // ... and close (30 digits): a band 1e-25 narrower at each end would not enclose.
+  const big_rational tiny(1, boost::multiprecision::pow(gyrores::big_int(10), 25));
+  CHECK((n1 + tiny) * (n1 + tiny) > sq * (1 - p) * (1 - p));
+  CHECK((n2 - tiny) * (n2 - tiny) < sq * (1 + p) * (1 + p));
+  // The same guarantees as --band with those ends.
+  const auto b = cli_json("coupling --band " + band["n1"].get<std::string>() + ":" + band["n2"].get<std::string>() +
+                          " --horizon 20 --json");
+  CHECK(b["band"]["absorption"]["h_min"] == band["absorption"]["h_min"]);
+  CHECK(b["band"]["containment"]["h_min"] == band["containment"]["h_min"]);
+  // The text says the band used contains the one asked.
+  const auto t = cli_run("coupling --n2 1/12 --tolerance 1% --horizon 20 --convergents 0");
+  REQUIRE(t.status == 0);
+  CHECK(t.out.find("contains the band n (1 -+ 1%) asked") != std::string::npos);
+  // A rational n: the exact band, as with N.
+  const auto r = cli_json("coupling --n2 1/25 --tolerance 1% --horizon 40 --json --convergents 0");
+  CHECK(r["band"]["n1"] == "99/500");
+  CHECK(r["band"]["n2"] == "101/500");
+  CHECK(cli_run("coupling --tolerance 1%").status == 2);
 }

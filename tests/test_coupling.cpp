@@ -313,9 +313,13 @@ TEST_CASE("cli coupling: any horizon and any coupling size answer (the horizon t
   CHECK(tol["band"]["containment"]["at"]["pair"]["tau"] == 11);
   CHECK(tol["band"]["containment"]["enclosure"][1] == "0.00000000000000e+00");
   CHECK(tol["band"]["first_below"]["settled"] == true);
-  for (const char* bad : {"coupling --band 2:1", "coupling --band 1", "coupling 2 --tolerance 5", "coupling --n2 4 --tolerance 1%",
-                          "coupling 2 --band 1:3 --tolerance 1%"})
+  for (const char* bad : {"coupling --band 2:1", "coupling --band 1", "coupling 2 --tolerance 5", "coupling --tolerance 1%",
+                          "coupling 2 --n2 4 --tolerance 1%", "coupling 2 --band 1:3 --tolerance 1%"})
     check_rejected(bad);
+  // --n2 with --tolerance: n = sqrt(4) = 2 is rational, the exact band of N = 2.
+  const auto by_n2 = cli_json("coupling --n2 4 --tolerance 1% --horizon 10 --json --convergents 0");
+  CHECK(by_n2["band"]["n1"] == "99/50");
+  CHECK(by_n2["band"]["n2"] == "101/50");
   const auto b = cli_json("coupling 2 --horizon 100pi --below 1% --json");
   CHECK(b["below"]["level"] == "1/200");
   CHECK(b["t_below"].is_string());

@@ -718,9 +718,10 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
     ``horizon`` Fractions (``horizon`` stays text when it is a multiple of pi); ``x`` and
     ``horizon_lobe_distance`` exact algebraic numbers as text (e.g. "sqrt(2)/2 + 1/2").
 
-    band: (n1, n2) (rationals) or text "N1:N2", 0 < n1 < n2; or tolerance around n: text "P%"
-    (0 < P < 100) or a number, the fraction of |n| (Fraction(1, 100) is 1%): the band
-    |n| (1 -+ P%). Adds ``band``, the CLI's "band" object (band-theorem/1) with its keys: n1, n2
+    band: (n1, n2) (rationals) or text "N1:N2", 0 < n1 < n2; or tolerance around n (or
+    sqrt(n2)): text "P%" (0 < P < 100) or a number, the fraction of |n| (Fraction(1, 100) is
+    1%): the band |n| (1 -+ P%); when n = sqrt(n2) is irrational, rational ends (30 digits)
+    enclosing it outward, whose guarantees hold for the band asked. Adds ``band``, the CLI's "band" object (band-theorem/1) with its keys: n1, n2
     (Fractions), horizon, digits, interrupted; ``absorption``, the absorption guarantee (the
     highest minimum of H_q over [0, T] across the band: every coupling of the band drains H_q at
     least that low) and ``containment``, the containment guarantee (the lowest minimum: every

@@ -31,14 +31,18 @@ coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& wh
 
 // The band asked for, from "N1:N2" or a tolerance "P%" around n, as the CLI reads them
 // (src/cli/cmd_coupling.cpp); checked before any work (the coupling's own analysis comes first).
-std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n, const py::object& band,
+std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n, const py::object& n2, const py::object& band,
                                                              const py::object& tolerance) {
   if (!band.is_none() && !tolerance.is_none()) throw usage_error("give at most one of band and tolerance");
   std::optional<std::pair<big_rational, big_rational>> b;
   if (!band.is_none()) b = parse_band(band.cast<std::string>(), "band");
   if (!tolerance.is_none()) {
-    if (n.is_none()) throw usage_error("tolerance needs the coupling n (not n2)");
-    b = parse_tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
+    if (n.is_none() && n2.is_none()) throw usage_error("tolerance needs the coupling n or n2");
+    if (!n.is_none()) b = parse_tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
+    else {  // n = sqrt(n2): the exact band, or (n irrational) rational ends enclosing it outward
+      const tolerance_band_ends t = parse_tolerance_band_n2(parse_rational(rational_text(n2), "n2"), tolerance.cast<std::string>(), "tolerance");
+      b.emplace(t.n1, t.n2);
+    }
   }
   if (b) check_band(b->first, b->second, "band");
   return b;
@@ -66,7 +70,7 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   opt.horizon = horizon_of(horizon, "horizon");
   if (!below.is_none()) opt.below = level_of(below.cast<std::string>());
   if (!band_alone) request.spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
-  const auto ends = band_of(n, band, tolerance);
+  const auto ends = band_of(n, n2, band, tolerance);
   app::band_request bq;
   if (ends) {
     bq.n1 = ends->first;

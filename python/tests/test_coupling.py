@@ -145,6 +145,9 @@ def test_an_exception_in_progress_stops_the_loop():
     (lambda: gyrores._gyrores._coupling(None, "1/12", "5", "1%", 0, 20, "1/2:3/5", None, 0),
      ("--n2", "1/12", "--horizon", "5", "--below", "1%", "--convergents", "0", "--digits", "20",
       "--band", "1/2:3/5")),
+    # n = sqrt(1/12) irrational: rational ends enclosing n (1 -+ 1%) outward, as the CLI's
+    (lambda: gyrores._gyrores._coupling(None, "1/12", "20", None, 0, 12, None, "1%", 0),
+     ("--n2", "1/12", "--tolerance", "1%", "--horizon", "20", "--convergents", "0")),
     (lambda: gyrores._gyrores._coupling(None, None, "1e6", "1%", 8, 12, "1/2:3/5", None, 4),
      ("--band", "1/2:3/5", "--horizon", "1e6", "--below", "1%", "--band-digits", "4")),
 ])
@@ -270,7 +273,6 @@ def test_band_first_below_never_when_a_coupling_keeps_above_the_level():
     (lambda: gyrores.coupling(0.2, tolerance=1), "coupling(): tolerance must be in (0%, 100%), got 100%"),
     (lambda: gyrores.coupling(0.2, tolerance="1"), "coupling(): tolerance must be a percentage such as 1%"),
     (lambda: gyrores.coupling(0.2, tolerance=[1]), "coupling(): tolerance must be a number"),
-    (lambda: gyrores.coupling(n2="1/12", tolerance="1%"), "coupling(): tolerance needs the coupling n"),
     (lambda: gyrores.coupling(tolerance="1%"), "coupling(): give exactly one of n"),
     (lambda: gyrores.coupling(band="0.2-0.3"), "coupling(): band must be N1:N2, got 0.2-0.3"),
     (lambda: gyrores.coupling(band=(0.2,)), "coupling(): band must be (n1, n2) or text 'N1:N2'"),

@@ -19,10 +19,12 @@
 #include <gyrores/io/horizon_certificate_json.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
+#include <gyrores/report/share.hpp>
 
 #include "cli_options.hpp"
 #include "cli_signals.hpp"
 #include "commands.hpp"
+#include "number_text.hpp"
 #include "pair_output.hpp"
 
 namespace gyrores::cli {
@@ -33,20 +35,20 @@ struct coupling_args {
   int band_digits = 0;  // 0: --digits
   int digits = 12;
   std::int64_t convergents = 8;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 // "(p, q)" padded, then n, r_res, t_first of each convergent's pair.
-void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows) {
+void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows, unsigned digits) {
   if (rows.empty()) return;
   os << "resonant approximations (continued-fraction convergents of W1/W2):\n"
-     << "  a_k    pair                  n                 r_res             t_first\n";
+     << "  a_k    pair                  " << value_columns_header({"n", "r_res", "t_first"}, digits) << "\n";
   for (const auto& r : rows) {
     std::string pr = "(" + r.convergent.p.str() + ", " + r.convergent.q.str() + ")";
     std::string ak = r.convergent.partial_quotient.str();
     os << "  " << ak << std::string(ak.size() < 7 ? 7 - ak.size() : 1, ' ') << pr
        << std::string(pr.size() < 22 ? 22 - pr.size() : 1, ' ');
-    if (r.values) os << r.values->n.value << "  " << r.values->r_res.value << "  " << r.values->t_first.value << "\n";
+    if (r.values) os << value_columns({r.values->n.value, r.values->r_res.value, r.values->t_first.value}, digits) << "\n";
     else os << "ratio 1: no pair\n";
   }
 }
@@ -64,21 +66,21 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
   const horizon_minimum_report& h = r.horizon;
   const quadratic_number& x = h.proof.x;
   os << "coupling n^2 = " << rational_str(spec.n2) << (spec.n ? "  (n = " + rational_str(*spec.n) + ", exact)" : "") << "\n"
-     << "  |n|           " << r.abs_n << (r.n_negative ? "  (n < 0 mirrors the motion; |n| is used)" : "") << "\n"
+     << "  |n|           " << plain(r.abs_n) << (r.n_negative ? "  (n < 0 mirrors the motion; |n| is used)" : "") << "\n"
      << "  x = n/sqrt(n^2+4) = " << (x.str().size() <= 60 ? x.str() : "(exact: --json)")
      << (x.is_rational() ? "" : ", a quadratic irrational") << "\n"
      << "  resonance     D = P (P + 4Q) = " << spec.discriminant().str()
      << (r.pair ? " is a perfect square: RESONANT, pair " + r.pair->str() : " is not a perfect square: not resonant") << "\n";
   if (r.pair) {
     os << "  r_res         " << radius_text(*r.pair_values) << "\n"
-       << "  H_q min       " << r.pair_values->h_min.value << "\n"
-       << "  t_first       " << r.pair_values->t_first.value << "\n"
+       << "  H_q min       " << energy_text(*r.pair_values) << "\n"
+       << "  t_first       " << plain(r.pair_values->t_first) << "\n"
        << "  (more: gyrores pair " << r.pair->tau().str() << " " << r.pair->sigma().str() << ")\n";
   }
-  os << "  pi/|n|        " << r.t_min_paper << "  (the paper's proxy)\n"
+  os << "  pi/|n|        " << plain(r.t_min_paper) << "  (the paper's proxy)\n"
      << "over [0, " << a.horizon << "]:\n"
-     << "  min H_q       " << h.h_min.value << "  (radius " << h.r_min.value << ")\n"
-     << "  first at t =  " << h.t_min.value << "\n"
+     << "  min H_q       " << energy_text(h.h_min.value, h.h_min_share.value) << "  (radius " << plain(h.r_min) << ")\n"
+     << "  first at t =  " << plain(h.t_min) << "\n"
      << "  from          "
      << (h.proof.at_horizon_end ? "the end point t = T: H_q still decreases there (lobe " + h.proof.cut_lobe.str() + " is cut before its minimum)"
                           : lobe_text(h.lobe) + " (the smallest of the lobes inside [0, T])")
@@ -87,74 +89,72 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
     const first_below_report& b = *r.below;
     os << "first time H_q <= " << a.below << ":\n";
     if (b.never) os << "  never         " << b.reason << "\n";
-    else os << "  t =           " << b.t_below.value << "\n  because       " << b.reason << "\n";
+    else os << "  t =           " << plain(b.t_below) << "\n  because       " << b.reason << "\n";
   }
   os << "over all time:\n"
-     << "  inf H_q       " << r.inf_all_time << (r.inf_attained ? "" : " (not attained)") << "\n"
+     << "  inf H_q       " << (r.pair ? energy_text(*r.pair_values) : r.inf_all_time + " (not attained)") << "\n"
      << "  because       " << r.inf_reason << "\n";
-  convergents_text(os, r.convergents);
+  convergents_text(os, r.convergents, unsigned(a.digits));
   os << "  " << a.digits << " digits, each the correct rounding of a proved enclosure (" << horizon_theorem_id
      << ", lattice-theorem/1; qdot0 = 1, H_q(0) = 1/2)\n";
   return os.str();
 }
 
-// A band end: its decimal when it terminates (1.9, 0.0025), else the exact fraction.
-std::string band_end_text(const big_rational& v) {
-  big_int den = boost::multiprecision::denominator(v);
-  int twos = 0, fives = 0;
-  while (den % 2 == 0) den /= 2, ++twos;
-  while (den % 5 == 0) den /= 5, ++fives;
-  if (den != 1 || std::max(twos, fives) > 60) return rational_str(v);
-  const int k = std::max(twos, fives);
-  const big_rational scaled = v * big_rational(boost::multiprecision::pow(big_int(10), unsigned(k)));
-  std::string digits = big_int(boost::multiprecision::numerator(scaled)).str();
-  if (k == 0) return digits;
-  if (int(digits.size()) <= k) digits.insert(0, std::string(std::size_t(k + 1 - int(digits.size())), '0'));
-  return digits.insert(digits.size() - std::size_t(k), ".");
-}
-
 // Where a guarantee is attained: the exact coupling, its pair, its own minimum's lobe and time.
-std::string attained_text(const app::band_attained& a) {
-  std::string out = "at n^2 = " + rational_str(a.coupling.spec.n2);
+std::string attained_text(const app::band_attained& a, unsigned digits) {
+  // A long fraction (an end of a band rounded outward) as its decimal; exact in --json.
+  const std::string n2 = rational_str(a.coupling.spec.n2);
+  std::string out = "at n^2 = " + (n2.size() <= 40 ? n2 : "~" + plain(format_rational_scientific(a.coupling.spec.n2, digits)) + " (exact: --json)");
   if (a.pair) out += ", the pair " + a.pair->str();
   if (a.minimum) {
     const horizon_minimum_report& m = *a.minimum;
-    out += m.proof.at_horizon_end ? ", at the horizon's end t = " + m.t_min.value
-                            : ", lobe k = " + (m.lobe ? m.lobe->k.str() : std::string("?")) + ", t = " + m.t_min.value;
+    out += m.proof.at_horizon_end ? ", at the horizon's end t = " + plain(m.t_min)
+                            : ", lobe k = " + (m.lobe ? m.lobe->k.str() : std::string("?")) + ", t = " + plain(m.t_min);
   }
-  if (a.first_below) out += a.first_below->never ? ", never" : ", its first time " + a.first_below->t_below.value;
+  if (a.first_below) out += a.first_below->never ? ", never" : ", its first time " + plain(a.first_below->t_below);
   return out;
 }
 
+// A guarantee (an energy) with its share of H_q(0) = 1/2: the share correctly rounded when its
+// enclosure decides it, else its proved bracket (report/share.hpp).
 std::string extreme_text(const band_extreme& e, unsigned digits) {
   if (e.settled && e.value.hi_rational() == 0) return "0 (exactly)";
-  if (e.settled) return *e.value.rounded(digits);
+  const enclosure share = scaled(e.value, share_factor());
+  const unsigned sd = std::min(digits, share_digits);
+  const auto rounded_share = share.rounded(sd);
+  const auto [slo, shi] = share.outward(sd);
+  const std::string share_text =
+      "  (" + (rounded_share ? plain(*rounded_share) : "in [" + plain(slo) + ", " + plain(shi) + "]") + "% of H_q(0))";
+  if (e.settled) return plain(*e.value.rounded(digits)) + share_text;
   const auto [lo, hi] = e.value.outward(digits);
-  return "in [" + lo + ", " + hi + "] (" + (e.interrupted ? std::string("interrupted") : "not settled: " + e.unsettled_reason) + ")";
+  return "in [" + plain(lo) + ", " + plain(hi) + "]" + share_text + " (" +
+         (e.interrupted ? std::string("interrupted") : "not settled: " + e.unsettled_reason) + ")";
 }
 
-std::string band_text(const coupling_args& a, const app::band_request& q, const app::band_result& b) {
+std::string band_text(const coupling_args& a, const app::band_request& q, const app::band_result& b, const std::string& note) {
   std::ostringstream os;
   const unsigned d = q.digits;
-  os << "band n in [" << band_end_text(q.n1) << ", " << band_end_text(q.n2) << "], over [0, " << a.horizon << "]:\n"
+  os << "band n in [" << decimal_text(q.n1, d) << ", " << decimal_text(q.n2, d) << "], over [0, " << a.horizon << "]:\n";
+  if (!note.empty()) os << "  " << note << "\n";
+  os
      << "  absorption guarantee   " << extreme_text(b.absorption, d) << "\n"
      << "                         every n of the band has min H_q <= this over [0, T] (the highest minimum)\n";
-  if (b.absorption_at) os << "                         " << attained_text(*b.absorption_at) << "\n";
+  if (b.absorption_at) os << "                         " << attained_text(*b.absorption_at, d) << "\n";
   os << "  containment guarantee  " << (b.containment ? extreme_text(*b.containment, d) : "not started (interrupted)") << "\n"
      << "                         every n of the band keeps H_q >= this on [0, T] (the lowest minimum)\n";
-  if (b.containment_at) os << "                         " << attained_text(*b.containment_at) << "\n";
+  if (b.containment_at) os << "                         " << attained_text(*b.containment_at, d) << "\n";
   if (b.below) {
     const band_first_below& f = *b.below;
     os << "  first time H_q <= " << a.below << (f.never ? "\n  never                  " + f.reason + "\n" : "");
     if (!f.never) {
       os << "\n                         t = ";
-      if (f.settled) os << *f.time.rounded(d);
+      if (f.settled) os << plain(*f.time.rounded(d));
       else {
         const auto [lo, hi] = f.time.outward(d);
-        os << "in [" << lo << ", " << hi << "] (" << (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
+        os << "in [" << plain(lo) << ", " << plain(hi) << "] (" << (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
       }
       os << ": every n of the band has H_q <= E by then (the latest first time)\n";
-      if (b.below_at) os << "                         " << attained_text(*b.below_at) << "\n";
+      if (b.below_at) os << "                         " << attained_text(*b.below_at, d) << "\n";
     }
   }
   const bool settled = b.absorption.settled && (!b.containment || b.containment->settled) && (!b.below || b.below->settled);
@@ -200,20 +200,37 @@ class band_progress_printer {
 };
 
 // The band proofs of --band/--tolerance, with progress; Ctrl-C stops them with the bracket so far.
-app::band_result run_band(app::band_request& q, signal_scope& signals) {
+app::band_result run_band(app::band_request& q, signal_scope& signals, bool quiet) {
   q.stop = signals.token();
   band_progress_printer printer;
-  q.progress = [&printer](const band_progress& p) { printer(p); };
+  if (!quiet) q.progress = [&printer](const band_progress& p) { printer(p); };
   return app::run_band(q);
 }
 
-// --band N1:N2, or --tolerance P% around N.
-std::optional<std::pair<big_rational, big_rational>> band_of(const coupling_args& a) {
+// The band of --band N1:N2 or --tolerance P%, and what the text says of it.
+struct band_choice {
+  std::pair<big_rational, big_rational> ends;
+  std::string note;  // why the ends are not those of the request (n irrational), else empty
+};
+
+// --band N1:N2, or --tolerance P% around N or around sqrt(--n2): with n irrational, rational ends
+// enclosing n (1 -+ P%) outward (model/inputs.hpp); a band's guarantees hold for a band inside it
+// (the absorption guarantee is its highest minimum, the containment guarantee its lowest, the
+// first time below E its latest).
+std::optional<band_choice> band_of(const coupling_args& a) {
   if (!a.band.empty() && !a.tolerance.empty()) throw usage_error("give at most one of --band and --tolerance");
-  if (!a.band.empty()) return parse_band(a.band, "--band");
+  if (!a.band.empty()) return band_choice{parse_band(a.band, "--band"), ""};
   if (a.tolerance.empty()) return std::nullopt;
-  if (a.n.empty()) throw usage_error("--tolerance needs the coupling N (not --n2)");
-  return parse_tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance");
+  if (!a.n.empty() && !a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
+  if (a.n.empty() && a.n2.empty()) throw usage_error("--tolerance needs the coupling N or --n2 P/Q");
+  if (!a.n.empty()) return band_choice{parse_tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance"), ""};
+  const big_rational n2 = parse_rational(a.n2, "--n2");
+  const tolerance_band_ends t = parse_tolerance_band_n2(n2, a.tolerance, "--tolerance");
+  band_choice c{{t.n1, t.n2}, ""};
+  if (!t.exact)
+    c.note = "this band contains the band n (1 -+ " + a.tolerance + ") asked, n = sqrt(" + rational_str(n2) +
+             ") irrational: its ends are rounded outward (exact: --json); the guarantees of a band hold for every band inside it";
+  return c;
 }
 
 // The band request of --band/--tolerance: its digits are --band-digits, else --digits.
@@ -232,13 +249,14 @@ app::band_request band_request_of(const coupling_args& a, const std::pair<big_ra
 }
 
 // A band's text or JSON; a Ctrl-C still prints the bracket reached, then exits 130.
-std::string band_output(const coupling_args& a, app::band_request& q, const std::string& before, json* whole) {
+std::string band_output(const coupling_args& a, app::band_request& q, const std::string& note, const std::string& before,
+                        json* whole) {
   signal_scope signals;
-  const app::band_result b = run_band(q, signals);
+  const app::band_result b = run_band(q, signals, a.quiet);
   // The band certificate, from the very proofs printed below (not when interrupted).
   if (b.certificate) write_file_atomically(a.certificate, band_certificate_text(*b.certificate));
   std::string out;
-  if (!a.json) out = before + band_text(a, q, b);
+  if (!a.json) out = before + band_text(a, q, b, note);
   else if (whole) {
     (*whole)["band"] = app::band_result_json(q, b);
     out = json_dump(*whole) + "\n";
@@ -256,8 +274,8 @@ std::string band_output(const coupling_args& a, app::band_request& q, const std:
 std::string run_coupling(const coupling_args& a) {
   const auto band = band_of(a);
   if (band && a.n.empty() && a.n2.empty()) {
-    app::band_request q = band_request_of(a, *band, parse_horizon_time(a.horizon, "--horizon"));
-    return band_output(a, q, "", nullptr);
+    app::band_request q = band_request_of(a, band->ends, parse_horizon_time(a.horizon, "--horizon"));
+    return band_output(a, q, band->note, "", nullptr);
   }
   // With a band, --certificate is the band's certificate (both guarantees), refused before the work.
   const bool band_certificate = band && !a.certificate.empty();
@@ -286,8 +304,8 @@ std::string run_coupling(const coupling_args& a) {
   const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
   if (band) {
-    app::band_request q = band_request_of(a, *band, opt.horizon);
-    return band_output(a, q, coupling_text(a, r), &j);
+    app::band_request q = band_request_of(a, band->ends, opt.horizon);
+    return band_output(a, q, band->note, coupling_text(a, r), &j);
   }
   if (!a.json) return coupling_text(a, r);
   return json_dump(j) + "\n";
@@ -301,12 +319,13 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
   sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE, or with --band/--tolerance the band's (both guarantees): gyrores check FILE");
   sub.add("--band", a->band, "a band of couplings N1:N2: its absorption and containment guarantees over [0, T], proved (N optional)");
-  sub.add("--tolerance", a->tolerance, "the band N (1 -+ P%) around N, e.g. 1%");
+  sub.add("--tolerance", a->tolerance, "the band n (1 -+ P%) around N or sqrt(--n2), e.g. 1% (n irrational: ends rounded outward)");
   sub.add("--band-digits", a->band_digits, "digits of the band's guarantees (default: --digits)");
   sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%); with a band, the latest over the band");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);
+  sub.flag("--quiet", a->quiet, "no progress on stderr (band proofs)");
   return [a] { return run_coupling(*a); };
 }
 

@@ -17,6 +17,7 @@
 #include "cli_options.hpp"
 #include "cli_signals.hpp"
 #include "commands.hpp"
+#include "number_text.hpp"
 #include "pair_output.hpp"
 
 namespace gyrores::cli {
@@ -82,16 +83,16 @@ std::string design_text(const design_args& a, const app::design_request& r, cons
      << "; " << res.examined << " pairs examined, " << res.feasible << " feasible\n";
   const auto& v = out.values[0];
   os << "chosen " << res.ranked[0].pair().str() << "\n"
-     << "  n             " << v.n << "\n"
+     << "  n             " << plain(v.n) << "\n"
      << "  r_res         " << radius_text(v) << "\n"
-     << "  H_q min       " << v.h_min << "\n"
-     << "  t_first       " << v.t_first << "  (exact first-hit time)\n"
-     << "  pi/|n|        " << v.t_min_paper << "  (the paper's proxy)\n";
+     << "  H_q min       " << energy_text(v) << "\n"
+     << "  t_first       " << plain(v.t_first) << "  (exact first-hit time)\n"
+     << "  pi/|n|        " << plain(v.t_min_paper) << "  (the paper's proxy)\n";
   if (out.chosen_exceeds_tmax)
     os << "  note: the exact first-hit time exceeds --tmax " << a.tmax
        << ": the proxy chose a pair that does not meet the time constraint\n";
   if (out.values.size() > 1) {
-    os << "next best:\n  rank  pair          n                 r_res             t_first           pi/|n|\n";
+    os << "next best:\n  rank  pair          " << value_columns_header({"n", "r_res", "t_first", "pi/|n|"}, r.digits) << "\n";
     for (std::size_t i = 1; i < out.values.size(); ++i)
       os << "  " << rank_cell(i) << padded(res.ranked[i].pair().str(), 14) << values_columns(out.values[i]) << "\n";
   }
@@ -111,9 +112,9 @@ std::string tolerance_text(const design_args& a, design_problem problem, const t
   for (std::size_t i = 0; i < r.checked.size(); ++i) {
     const auto& c = r.checked[i];
     const auto [lo, hi] = c.guarantee.value.outward(4);
-    os << "  " << rank_cell(i) << padded(c.point.pair().str(), 14) << "[" << format_rational_scientific(c.n1, 8) << ", "
-       << format_rational_scientific(c.n2, 8) << "]  "
-       << padded(c.guarantee.value.hi_rational() == 0 ? "0 (exactly)" : "[" + lo + ", " + hi + "]", 32)
+    os << "  " << rank_cell(i) << padded(c.point.pair().str(), 14)
+       << padded("[" + decimal_text(c.n1, 8) + ", " + decimal_text(c.n2, 8) + "]", 33)
+       << padded(c.guarantee.value.hi_rational() == 0 ? "0 (exactly)" : "[" + plain(lo) + ", " + plain(hi) + "]", 32)
        << (c.guarantee.interrupted ? "interrupted" : tolerance_verdict_name(c.verdict)) << "\n";
   }
   if (r.chosen) os << "chosen with tolerance: " << r.checked[*r.chosen].point.pair().str() << "\n";

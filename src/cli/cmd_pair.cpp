@@ -12,6 +12,7 @@
 
 #include "cli_options.hpp"
 #include "commands.hpp"
+#include "number_text.hpp"
 
 namespace gyrores::cli {
 namespace {
@@ -29,8 +30,8 @@ void text_line(std::ostringstream& os, const std::string& key, const std::string
 
 // A real, with its enclosure when asked.
 std::string real_text(const proved_real& r, bool enclosures) {
-  if (!enclosures) return r.value;
-  return r.value + "  in [" + r.enclosure.first + ", " + r.enclosure.second + "]";
+  if (!enclosures) return plain(r);
+  return plain(r) + "  in [" + plain(r.enclosure.first) + ", " + plain(r.enclosure.second) + "]";
 }
 
 std::string joined(const std::vector<proved_real>& items, bool enclosures) {
@@ -66,7 +67,8 @@ std::string pair_report_text(const resonant_pair<big_int>& p, const pair_report&
   text_line(os, "qdot0", real_text(r.qdot0, enc));
   text_line(os, "rho0", real_text(r.rho0, enc));
   text_line(os, "r_res", real_text(r.r_res, enc) + (p.degenerate() ? "  (exact: delta = 2 mod 4)" : ""));
-  text_line(os, "H_q min", real_text(r.h_min, enc));
+  text_line(os, "H_q min", p.degenerate() ? real_text(r.h_min, enc) + "  (exact: delta = 2 mod 4)"
+                                           : real_text(r.h_min, enc) + "  (" + plain(r.h_min_share) + "% of H_q(0))");
   text_line(os, "H_z max", real_text(r.h_z_max, enc));
   text_line(os, "theta_first", real_text(r.theta_first, enc));
   text_line(os, "t_first", real_text(r.t_first, enc));

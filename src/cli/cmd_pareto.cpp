@@ -54,7 +54,7 @@ std::string pareto_text(const app::pareto_request& r, const app::pareto_outcome&
      << "  " << pareto_orientation_text(r.orientation) << "; time = "
      << (r.time == design_time::proxy ? "the paper's proxy pi/|n|" : "the exact first-hit time t_first") << "; qdot0 = 1\n"
      << "  " << p.front.size() << " non-dominated pairs, by increasing time:\n"
-     << "  pair          n                 r_res             t_first           pi/|n|\n";
+     << "  pair          " << value_columns_header({"n", "r_res", "t_first", "pi/|n|"}, r.digits) << "\n";
   for (std::size_t i = 0; i < p.front.size(); ++i)
     os << "  " << padded(p.front[i].pair().str(), 14) << values_columns(p.values[i])
        << (p.front[i].degenerate ? "  (degenerate: r_res = 0 exactly)" : "") << "\n";

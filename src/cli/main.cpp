@@ -197,9 +197,11 @@ int run(int argc, char** argv, bool execute) {
     for (auto* sub : app.get_subcommands()) {
       std::string out;
       {
-        // A command still running after 2 s says so on a terminal (the sweep draws its own bar).
+        // A command still running after 2 s says so on a terminal (the sweep draws its own bar),
+        // unless it was given --quiet.
         std::optional<frontend::progress_line> progress;
-        if (sub->get_name() != "sweep") progress.emplace(sub->get_name());
+        const CLI::Option* quiet = sub->get_option_no_throw("--quiet");
+        if (sub->get_name() != "sweep" && !(quiet && quiet->count() > 0)) progress.emplace(sub->get_name());
         out = runners.at(sub->get_name())();
       }
       if (!print_stdout(out)) return cannot_write_stdout(errno);

@@ -45,6 +45,15 @@ std::pair<big_rational, big_rational> parse_band(const std::string& text, const 
 // ends' n^2 lie within the limits.
 std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
                                                            const std::string& what);
+// A tolerance "P%" around n = sqrt(n2) (n2 > 0 within the limits): when n is rational, the exact
+// band n (1 -+ P/100) (exact = true); else rational ends n1 <= n (1 - P/100) and
+// n2 >= n (1 + P/100) enclosing it outward, decimals with at least 30 significant digits from
+// exact integer square roots (exact = false). A band's guarantees hold for every band inside it.
+struct tolerance_band_ends {
+  big_rational n1, n2;
+  bool exact = true;
+};
+tolerance_band_ends parse_tolerance_band_n2(const big_rational& n2, const std::string& tolerance, const std::string& what);
 // usage_error "<what> needs 0 < n1 < n2, got n1:n2" unless it holds.
 void check_band(const big_rational& n1, const big_rational& n2, const std::string& what);
 

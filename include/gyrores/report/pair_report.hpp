@@ -55,6 +55,7 @@ struct pair_report {
   int m_min = 0;
   proved_real beat_ratio, n, omega1, omega2, rho0, qdot0;
   proved_real r_res, h_min, h_z_max, theta_first, t_first;
+  proved_real h_min_share;  // H_q min as a percentage of H_q(0) = qdot0^2/2, min(digits, share_digits) digits (report/share.hpp)
   std::vector<proved_real> minimisers;  // every global minimiser theta in [0, 2 pi), ascending
   proved_real t_min_paper;              // pi/|n|: the paper's proxy for the first-hit time
   bool asymptotic_applicable = false;

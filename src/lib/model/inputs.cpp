@@ -103,17 +103,64 @@ std::pair<big_rational, big_rational> parse_band(const std::string& text, const 
   return band;
 }
 
-std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
-                                                           const std::string& what) {
+namespace {
+
+// P/100 from "P%", 0 < P < 100.
+big_rational tolerance_fraction(const std::string& tolerance, const std::string& what) {
   std::string t = tolerance;
   if (t.empty() || t.back() != '%') throw usage_error(what + " must be a percentage such as 1%, got " + shown_input(tolerance));
   t.pop_back();
   const big_rational p = parse_rational(t, what) / 100;
   if (!(p > 0) || !(p < 1)) throw usage_error(what + " must be in (0%, 100%), got " + shown_input(tolerance));
-  const big_rational an = n < 0 ? big_rational(-n) : n;
-  const std::pair<big_rational, big_rational> band{big_rational(an * (1 - p)), big_rational(an * (1 + p))};
+  return p;
+}
+
+void check_band_ends(const std::pair<big_rational, big_rational>& band, const std::string& what) {
   check_coupling_limits(band.first * band.first, what + ": the band's lower end squared");
   check_coupling_limits(band.second * band.second, what + ": the band's upper end squared");
+}
+
+// floor(sqrt(y)) for a rational y >= 0: floor(sqrt(floor(y))) = floor(sqrt(y)), an integer root.
+big_int floor_sqrt(const big_rational& y) {
+  big_int root;
+  int_is_square(big_int(boost::multiprecision::numerator(y) / boost::multiprecision::denominator(y)), root);
+  return root;
+}
+
+}  // namespace
+
+std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
+                                                           const std::string& what) {
+  const big_rational p = tolerance_fraction(tolerance, what);
+  const big_rational an = n < 0 ? big_rational(-n) : n;
+  const std::pair<big_rational, big_rational> band{big_rational(an * (1 - p)), big_rational(an * (1 + p))};
+  check_band_ends(band, what);
+  return band;
+}
+
+tolerance_band_ends parse_tolerance_band_n2(const big_rational& n2, const std::string& tolerance, const std::string& what) {
+  check_coupling_limits(n2, "n^2");
+  big_int rp, rq;
+  if (int_is_square(big_int(boost::multiprecision::numerator(n2)), rp) &&
+      int_is_square(big_int(boost::multiprecision::denominator(n2)), rq)) {
+    const auto band = parse_tolerance_band(big_rational(rp, rq), tolerance, what);
+    return {band.first, band.second, true};
+  }
+  const big_rational p = tolerance_fraction(tolerance, what);
+  // n (1 -+ p) = sqrt(n^2 (1 -+ p)^2): k decimals, the lower end rounded down and the upper up,
+  // with k raised until the lower end has at least 30 significant digits.
+  const big_rational lo2 = n2 * (1 - p) * (1 - p), hi2 = n2 * (1 + p) * (1 + p);
+  long k = 30;
+  big_int m = floor_sqrt(lo2 * big_rational(pow10(2 * k)));
+  while (m.str().size() < 30) {
+    k += 30 - long(m.str().size());
+    m = floor_sqrt(lo2 * big_rational(pow10(2 * k)));
+  }
+  const big_rational hi_scaled = hi2 * big_rational(pow10(2 * k));
+  big_int M = floor_sqrt(hi_scaled);
+  if (big_rational(M * M) != hi_scaled) M += 1;  // the ceiling: sqrt(hi_scaled) is not an integer
+  tolerance_band_ends band{big_rational(m, pow10(k)), big_rational(M, pow10(k)), false};
+  check_band_ends({band.n1, band.n2}, what);
   return band;
 }
 

@@ -1,6 +1,10 @@
 // include/gyrores/report/horizon_report.hpp: the horizon theorem's proofs, rounded.
 #include <gyrores/report/horizon_report.hpp>
 
+#include <algorithm>
+
+#include <gyrores/report/share.hpp>
+
 namespace gyrores {
 
 namespace {
@@ -35,6 +39,8 @@ horizon_minimum_report report_horizon_minimum(const coupling_spec& c, const hori
   r.digits = digits;
   r.proof = prove_horizon_minimum(c, horizon, {digits, [&](const horizon_minimum_proof& p) {
                                                  GYRORES_TRY_PROOF(round_into(r.h_min, p.h_min, digits));
+                                                 GYRORES_TRY_PROOF(round_into(r.h_min_share, scaled(p.h_min, share_factor()),
+                                                                              std::min(digits, share_digits)));
                                                  GYRORES_TRY_PROOF(round_into(r.t_min, p.t_min, digits));
                                                  return round_into(r.r_min, p.r_min, digits);
                                                }}, use, stop);

@@ -10,6 +10,7 @@
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/refine.hpp>
+#include <gyrores/report/share.hpp>
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/minimum.hpp>
 #include <gyrores/theorem/root.hpp>
@@ -25,26 +26,29 @@ using iv = fixed_mpfi;
 class rounder {
  public:
   rounder(unsigned digits, bool enclosures) : digits_(digits), enclosures_(enclosures) {}
-  void operator()(proved_real& out, const iv& x, const char* name) {
-    if (!enclosure_rounding(x.left(), x.right(), digits_, out.value)) {
+  void operator()(proved_real& out, const iv& x, const char* name) { round(out, x, name, digits_); }
+  // The same with its own digits (a share of H_q(0), report/share.hpp).
+  void round(proved_real& out, const iv& x, const char* name, unsigned digits) {
+    if (!enclosure_rounding(x.left(), x.right(), digits, out.value)) {
       if (!undecided_) undecided_ = name;
       return;
     }
-    enclosure(out, x);
+    enclosure(out, x, digits);
   }
   // A field whose exact value is the rational q (x: its enclosure at this precision).
-  void exact(proved_real& out, const big_rational& q, iv& x) {
-    out.value = format_rational_scientific(q, digits_);
+  void exact(proved_real& out, const big_rational& q, iv& x, unsigned digits = 0) {
+    if (digits == 0) digits = digits_;
+    out.value = format_rational_scientific(q, digits);
     mpfi_set_q(x, q.backend().data());
-    enclosure(out, x);
+    enclosure(out, x, digits);
   }
   // Proved when every rounding was decided; else undecided, naming the first field that was not.
   proof_status status() const { return undecided_ ? proof_status::undecided(undecided_) : proof_status::proved(); }
 
  private:
-  void enclosure(proved_real& out, const iv& x) const {
+  void enclosure(proved_real& out, const iv& x, unsigned digits) const {
     if (enclosures_)
-      out.enclosure = {format_scientific(x.left(), digits_ + 3, MPFR_RNDD), format_scientific(x.right(), digits_ + 3, MPFR_RNDU)};
+      out.enclosure = {format_scientific(x.left(), digits + 3, MPFR_RNDD), format_scientific(x.right(), digits + 3, MPFR_RNDU)};
   }
   unsigned digits_;
   bool enclosures_;
@@ -128,13 +132,19 @@ void model_fields(pair_report& r, const theorem_constants& K, const resonant_pai
 void minimum_fields(pair_report& r, const theorem_constants& K, const minimum_enclosure& M, const exact_values& e,
                     rounder& round) {
   iv x(K.prec);
+  const unsigned share_d = std::min(r.digits, share_digits);
   if (r.degenerate) {
     round.exact(r.r_res, 0, x);
     round.exact(r.h_min, 0, x);
+    round.exact(r.h_min_share, 0, x, share_d);
     round.exact(r.h_z_max, e.v * e.v / 2, x);
   } else {
     round(r.r_res, M.r_res, "r_res");
     round(r.h_min, M.h_min, "h_min");
+    // H_q min / H_q(0) in percent: the enclosure times the exact 200/qdot0^2 (outward, by MPFI).
+    const big_rational k = share_factor(e.v);
+    mpfi_mul_q(x, M.h_min, k.backend().data());
+    round.round(r.h_min_share, x, "the share of H_q(0)", share_d);
     round(r.h_z_max, M.h_z_max, "h_z_max");
   }
   r.minimisers.assign(M.minimisers.size(), {});
