@@ -9,7 +9,7 @@
 #include <unistd.h>
 #include <numeric>
 
-#include <gyrores/design/coupling.hpp>
+#include "reference/horizon_scan.hpp"
 #include <gyrores/gyrores.hpp>
 
 #include "cli_checks.hpp"

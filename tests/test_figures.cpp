@@ -16,10 +16,12 @@
 #include <set>
 #include <sstream>
 
+#include <gyrores/app/figures.hpp>
 #include <gyrores/design/figures.hpp>
 #include <gyrores/gyrores.hpp>
 
 #include "cli_checks.hpp"
+#include "reference/horizon_scan.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
@@ -79,11 +81,29 @@ TEST_CASE("figures: energy series conserve H and mark the exact first minimum", 
   for (const auto& s : e.samples) hmin = std::min(hmin, s.h_q);
   CHECK(hmin >= e.h_min - 1e-15);
   CHECK(hmin <= e.h_min + 1e-5);
-  auto en = energy_of_coupling(2.0, 1.0, 20.0);
+  const auto n2 = app::figure_subject_of(coupling_spec::from_n(big_rational(2)));
+  auto en = app::energy_figure(n2, 1.0, 20.0);
   for (const auto& s : en.samples) CHECK(s.h_q + s.h_z == Approx(0.5).epsilon(1e-12));
-  auto pn = phase_portrait_of_coupling(2.0, 1.0, 200 * M_PI / 2);
+  auto pn = app::phase_figure(n2, 1.0, 200 * M_PI / 2);
   CHECK(pn.t_first > 0);
   CHECK(pn.r_inscribed < 1e-3);  // dense: small radius over the span
+}
+
+// A coupling's marks are the horizon theorem's minimum over the span, scaled by qdot0^2: against
+// the scan of every critical point (tests/reference/horizon_scan.hpp, long double), for a
+// non-resonant n and an impulse other than 1.
+TEST_CASE("figures: a coupling's marked minimum is the theorem's, against the scan", "[figures]") {
+  for (const auto& [n, span] : {std::pair{2.0, 50.0}, {0.3, 200.0}, {0.2, 40.0}}) {
+    INFO("n = " << n << " over [0, " << span << "]");
+    const auto s = app::figure_subject_of(coupling_spec::from_n(big_rational(n)));
+    const auto e = app::energy_figure(s, 0.5, span);
+    const auto p = app::phase_figure(s, 0.5, span);
+    const auto ref = horizon_minimum<long double>(n, 0.5L, span);
+    CHECK(e.h_min == Approx(double(ref.h_min)).epsilon(1e-9));
+    CHECK(e.t_first == Approx(double(ref.t_min)).epsilon(1e-12));
+    CHECK(p.r_inscribed == Approx(std::sqrt(2 * double(ref.h_min))).epsilon(1e-9));
+    CHECK(p.t_first == e.t_first);
+  }
 }
 
 // The curve reaches its mark: the sampled H_q at the marked time is the marked minimum (the
@@ -96,7 +116,7 @@ TEST_CASE("figures: the sampled H_q reaches every marked minimum", "[figures]") 
       if (std::fabs(s.t - t) <= half) lo = std::min(lo, s.h_q);
     return lo;
   };
-  const auto e2 = energy_of_coupling(2.0, 1.0, 50.0);
+  const auto e2 = app::energy_figure(app::figure_subject_of(coupling_spec::from_n(big_rational(2))), 1.0, 50.0);
   REQUIRE(e2.h_min < 1e-6);
   CHECK(lowest_near(e2, e2.t_first, 0.5) == Approx(e2.h_min).epsilon(1e-6));
   const auto e65 = energy_of_pair(resonant_pair<std::int64_t>(6, 5));

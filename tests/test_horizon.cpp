@@ -1,5 +1,5 @@
 // The horizon theorem (theorem/horizon.hpp, proofs/horizon-theorem.md) against independent
-// references: the scan of every critical point of H_q in 200-bit MPFR (design/coupling.hpp's
+// references: the scan of every critical point of H_q in 200-bit MPFR (tests/reference/horizon_scan.hpp's
 // horizon_minimum, which knows nothing of lobes) for T <= 400, the pair analysis of a resonant
 // coupling, and a plain loop over lobes. Every printed digit must be the correct rounding.
 #include <catch2/catch.hpp>
@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include <gyrores/design/coupling.hpp>
+#include "reference/horizon_scan.hpp"
 #include <gyrores/gyrores.hpp>
 
 using namespace gyrores;

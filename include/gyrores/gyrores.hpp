@@ -32,7 +32,6 @@
 #include <gyrores/report/horizon_report.hpp>     // the horizon theorem's minimum and first time below, rounded
 #include <gyrores/report/coupling_report.hpp>    // the coupling analysis, every number proved
 // design, figures data, sweeps
-#include <gyrores/design/coupling.hpp>       // the scan of every critical point over a horizon (a reference, and for figures)
 #include <gyrores/design/design.hpp>         // design problems (absorb/contain) and the Pareto front
 #include <gyrores/design/tolerance.hpp>      // design with a tolerance band on the coupling, proved over a horizon
 #include <gyrores/design/figures.hpp>        // data behind the figures (trajectory, envelope, circles, energies)

@@ -101,7 +101,8 @@ app::figure_subject subject_of(const py::object& tau, const py::object& sigma, c
   if (n.is_none() == (tau.is_none() || sigma.is_none()))
     throw usage_error("give a pair (tau, sigma) or a coupling n, not both");
   if (n.is_none()) return app::figure_subject_of(pair_of(tau, sigma));
-  return {std::nullopt, n.cast<double>()};
+  // The coupling exactly as the double given (every double is a binary fraction).
+  return app::figure_subject_of(coupling_spec::from_n(big_rational(n.cast<double>())));
 }
 
 py::dict phase_data(const py::object& tau, const py::object& sigma, const py::object& n, double qdot0, double t_span) {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <gyrores/app/coupling.hpp>
+#include <gyrores/core/error.hpp>
 #include <gyrores/core/real.hpp>
 
 namespace gyrores::app {
@@ -37,23 +39,32 @@ std::vector<design_point> scattered(const std::vector<design_point>& all, design
   return kept;
 }
 
+// The minimum of H_q over [0, span] (qdot0 = 1), proved by the horizon theorem, as doubles.
+figure_minimum theorem_minimum(const coupling_spec& c, double span) {
+  if (!std::isfinite(span)) throw usage_error("the time span must be finite");
+  const coupling_doubles d = run_coupling_doubles(c, horizon_time(big_rational(span)), std::nullopt, {});
+  return {d.t_min, d.h_min};
+}
+
 }  // namespace
 
 figure_subject figure_subject_of(const resonant_pair<big_int>& p) { return {figure_pair_of(p)}; }
 
 figure_subject figure_subject_of(const coupling_spec& c) {
   if (const auto p = coupling_resonant_pair(c)) return figure_subject_of(*p);
-  return {std::nullopt, c.abs_n<double>()};
+  return {std::nullopt, c.abs_n<double>(), c};
 }
 
 phase_portrait phase_figure(const figure_subject& s, double qdot0, double span) {
   if (s.pair) return phase_portrait_of_pair(*s.pair, qdot0);
-  return phase_portrait_of_coupling(s.n, qdot0, span > 0 ? span : 200 * real_pi<double>() / s.n);
+  if (!(span > 0)) span = 200 * real_pi<double>() / s.n;
+  return phase_portrait_of_coupling(s.n, qdot0, span, theorem_minimum(*s.coupling, span));
 }
 
 energy_series energy_figure(const figure_subject& s, double qdot0, double t_end) {
   if (s.pair) return energy_of_pair(*s.pair, qdot0, t_end);
-  return energy_of_coupling(s.n, qdot0, t_end > 0 ? t_end : 8 * real_pi<double>() / s.n);
+  if (!(t_end > 0)) t_end = 8 * real_pi<double>() / s.n;
+  return energy_of_coupling(s.n, qdot0, t_end, theorem_minimum(*s.coupling, t_end));
 }
 
 pareto_figure_points pareto_figure_points_of(const std::vector<design_point>& all, const std::vector<design_point>& front,

@@ -18,7 +18,8 @@ namespace gyrores::app {
 // What a phase or energy figure shows: a resonant pair, or a coupling that is not resonant.
 struct figure_subject {
   std::optional<resonant_pair<std::int64_t>> pair;
-  double n = 0;  // the coupling |n| > 0, without a pair
+  double n = 0;                           // the coupling |n| > 0, without a pair
+  std::optional<coupling_spec> coupling;  // that coupling exactly (its marks are the horizon theorem's)
 };
 
 // A pair (usage_error beyond figure_max_order); a coupling given exactly is its pair when it is
@@ -26,7 +27,8 @@ struct figure_subject {
 figure_subject figure_subject_of(const resonant_pair<big_int>& p);
 figure_subject figure_subject_of(const coupling_spec& c);
 
-// A pair over one period; a coupling over [0, span] (0: 200 pi/n, the paper's Figure 1a).
+// A pair over one period; a coupling over [0, span] (0: 200 pi/n, the paper's Figure 1a), its
+// inscribed circle and marks the horizon theorem's minimum over the span (the span read exactly).
 phase_portrait phase_figure(const figure_subject& s, double qdot0 = 1, double span = 0);
 // H_q(t) and H_z(t) over [0, t_end] (0: one period of a pair, 8 pi/n for a coupling).
 energy_series energy_figure(const figure_subject& s, double qdot0 = 1, double t_end = 0);

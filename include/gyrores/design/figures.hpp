@@ -47,11 +47,17 @@ struct phase_portrait {
 // Throws usage_error beyond figure_max_order.
 phase_portrait phase_portrait_of_pair(const resonant_pair<std::int64_t>& p, double v = 1);
 
+// The minimum of H_q over a coupling figure's span for qdot0 = 1 and its first time: the horizon
+// theorem's (app/figures.hpp proves them; the figures scale h_min by qdot0^2).
+struct figure_minimum {
+  double t_min = 0, h_min = 0;
+};
+
 // Phase portrait for any n > 0 over t in [0, t_span] (the paper's Fig. 1a uses t_span = 200 pi/n).
-// The inscribed circle drawn is the minimum radius over [0, t_span] (horizon_minimum); for a
-// non-resonant n the infimum over all time is 0 (coupling.hpp). Throws usage_error for n <= 0,
-// t_span <= 0 or more than figure_max_samples samples.
-phase_portrait phase_portrait_of_coupling(double n, double v, double t_span);
+// The inscribed circle drawn is the minimum radius over [0, t_span], `m`; for a non-resonant n
+// the infimum over all time is 0 (model/coupling.hpp). Throws usage_error for n <= 0, t_span <= 0
+// or more than figure_max_samples samples.
+phase_portrait phase_portrait_of_coupling(double n, double v, double t_span, const figure_minimum& m);
 
 struct energy_sample {
   double t, h_q, h_z;
@@ -76,8 +82,8 @@ struct energy_series {
 // Throws usage_error beyond figure_max_order or figure_max_samples.
 energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v = 1, double t_end = 0);
 
-// H_q(t), H_z(t) on [0, t_end] for any n > 0; marks the minimum of H_q over [0, t_end].
+// H_q(t), H_z(t) on [0, t_end] for any n > 0; marks the minimum m of H_q over [0, t_end].
 // Throws usage_error for n <= 0, t_end <= 0 or more than figure_max_samples samples.
-energy_series energy_of_coupling(double n, double v, double t_end);
+energy_series energy_of_coupling(double n, double v, double t_end, const figure_minimum& m);
 
 }  // namespace gyrores

@@ -7,7 +7,6 @@
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/real.hpp>
-#include <gyrores/design/coupling.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/model/enumerate.hpp>
 #include <gyrores/theorem/minimum.hpp>

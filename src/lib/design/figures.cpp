@@ -7,7 +7,6 @@
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/real.hpp>
-#include <gyrores/design/coupling.hpp>
 #include <gyrores/theorem/minimum.hpp>
 #include <gyrores/model/resonant.hpp>
 
@@ -134,7 +133,7 @@ phase_portrait phase_portrait_of_pair(const resonant_pair<std::int64_t>& p, doub
   return f;
 }
 
-phase_portrait phase_portrait_of_coupling(double n, double v, double t_span) {
+phase_portrait phase_portrait_of_coupling(double n, double v, double t_span, const figure_minimum& m) {
   check_figure_coupling(n, t_span);
   auto w = modal_frequencies_of(n);
   const double per_fast = 2 * real_pi<double>() / w.omega1;
@@ -148,13 +147,12 @@ phase_portrait phase_portrait_of_coupling(double n, double v, double t_span) {
   f.t_span = t_span;
   f.trajectory = sample_uniform(t_span, samples, [&](double t) { return impulse_point(n, v, t); });
   f.envelope = envelope_curve(n, v, 2000);
-  auto hm = horizon_minimum<double>(n, v, t_span);
-  f.r_inscribed = std::sqrt(2 * hm.h_min);
-  f.first_min = {hm.q, hm.qdot};
-  f.t_first = hm.t_min;
+  f.r_inscribed = v * std::sqrt(2 * m.h_min);
+  f.first_min = impulse_point(n, v, m.t_min);
+  f.t_first = m.t_min;
   f.r_max = v;
   f.t_proxy = real_pi<double>() / n;
-  f.near_minimisers.push_back(sample_near(hm.t_min, per_fast / 2, [&](double t) { return impulse_point(n, v, t); }));
+  f.near_minimisers.push_back(sample_near(m.t_min, per_fast / 2, [&](double t) { return impulse_point(n, v, t); }));
   return f;
 }
 
@@ -196,7 +194,7 @@ energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v, dou
   return e;
 }
 
-energy_series energy_of_coupling(double n, double v, double t_end) {
+energy_series energy_of_coupling(double n, double v, double t_end, const figure_minimum& m) {
   check_figure_coupling(n, t_end);
   auto w = modal_frequencies_of(n);
   const std::size_t samples =
@@ -209,11 +207,10 @@ energy_series energy_of_coupling(double n, double v, double t_end) {
     auto s = impulse_response(n, v, t);
     return energy_sample{t, energy_q(s), energy_z(s)};
   });
-  auto hm = horizon_minimum<double>(n, v, t_end);
-  e.t_first = hm.t_min;
-  e.h_min = hm.h_min;
+  e.t_first = m.t_min;
+  e.h_min = v * v * m.h_min;
   e.t_proxy = real_pi<double>() / n;
-  e.t_minima = {hm.t_min};
+  e.t_minima = {m.t_min};
   refine_around(e.samples, e.t_minima, real_pi<double>() / w.omega1, t_end, [&](double t) {
     auto s = impulse_response(n, v, t);
     return energy_sample{t, energy_q(s), energy_z(s)};

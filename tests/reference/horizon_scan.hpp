@@ -1,6 +1,6 @@
-// The minimum of H_q over a finite horizon by scanning every critical point: O(T), kept as the
-// independent reference of the horizon theorem (theorem/horizon.hpp) and for drawing figures.
-// (The coupling itself, exactly: model/coupling.hpp.)
+// The minimum of H_q over a finite horizon by scanning every critical point: O(T), the tests'
+// independent reference of the horizon theorem (theorem/horizon.hpp; the product's figures mark
+// the theorem's minimum). (The coupling itself, exactly: model/coupling.hpp.)
 //
 // Minimum of H_q over [0, T] for any real n > 0 (horizon_minimum): dH_q/dt = -n q' z', so the
 // minimum is at t = T, or at a root of q' or z' in [0, T]. Both are bracketed exactly:
@@ -15,7 +15,7 @@
 // Each root is solved by TOMS 748 (roots.hpp) in T; H_q is q^2/2 at a q' root (q' = 0 there;
 // R is stationary, see resonant.hpp) and (q^2 + q'^2)/2 at a z' root. Cost: about 2 W1 T/pi
 // root solves. Accuracy: the phases W1 t are formed in T, so the absolute phase error grows
-// like T * eps(T): in double it is a drawing aid (figures.cpp), at 200 bits the tests' reference.
+// like T * eps(T): at 200 bits it is the tests' reference.
 // Infimum over all time: for non-resonant n the line (W1 t, W2 t) is dense on the torus and
 // passes arbitrarily close to P+ = (pi/2, -pi/2), where q = q' = 0 (docs/mathematics.md §3): inf H_q = 0,
 // not attained. For resonant n it is the pair's H_min = r_res^2/2, first attained at t_first.
@@ -199,9 +199,5 @@ template <class T> horizon_min_result<T> horizon_minimum(const T& n_in, const T&
   return r;
 }
 
-// Compiled once in src/lib/design/ for double, long double, float128 and mpfr_real.
-#define GYRORES_HORIZON_MINIMUM_INSTANCES(PREFIX, T) \
-  PREFIX template horizon_min_result<T> horizon_minimum<T>(const T&, const T&, const T&);
-GYRORES_FOR_COMPILED_REALS(GYRORES_HORIZON_MINIMUM_INSTANCES, extern)
 
 }  // namespace gyrores
