@@ -270,7 +270,7 @@ std::string coupling_section(context& c) {
   const std::string a = part_a(c, n2), b = part_b(c, n2);
   std::string text = "**A coupling that is not resonant.** For n = 2 the infimum of H_q over all time is 0, never attained: its minimum over [0, T] is " +
                      n2.h_min + " for T = 10^" + n2.horizon;
-  if (!n2.t_below.empty()) text += ", and H_q first falls to 1% of H_q(0) at t = " + n2.t_below + " (lobe " + n2.lobe + ")";
+  if (!n2.t_below.empty()) text += ", and H_q first falls to 1/200 (1% of its initial value) at t = " + n2.t_below + " (lobe " + n2.lobe + ")";
   c.findings.push_back({heading, text + "."});
   return "## " + heading + "\n\n" + a + b;
 }
