@@ -22,6 +22,7 @@
 
 #include "cli_checks.hpp"
 #include "reference/horizon_scan.hpp"
+#include "report_summary_checks.hpp"
 #include "testing/cli_run.hpp"
 
 using namespace gyrores;
@@ -722,6 +723,52 @@ static void check_coupling_section(const std::string& md, const fs::path& out) {
                 j21["pair_analysis"]["h_min"].get<std::string>() + " |\n") != std::string::npos);
 }
 
+// The summary of findings and the short Pareto table (report_summary_checks.hpp), on the report and
+// on damaged copies of it that each check must refuse; the Case B bullet against `gyrores pair
+// 6 5 --json`, which does not go through the report.
+static void check_summary_and_pareto(const std::string& md, const fs::path& out) {
+  using gyrores::test::pareto_table_problems;
+  using gyrores::test::summary_problems;
+  const std::string csv = read_file(out / "pareto-front.csv");
+  for (const auto& p : summary_problems(md)) FAIL_CHECK(p);
+  for (const auto& p : pareto_table_problems(md, csv)) FAIL_CHECK(p);
+  const auto summary_end = md.find("\n## 1.");
+  REQUIRE(summary_end != std::string::npos);
+  const std::string summary = md.substr(0, summary_end);
+  const auto j = cli_json("pair 6 5 --digits 10 --json");
+  for (const char* key : {"r_res", "h_min", "t_first", "t_min_paper"}) {
+    INFO(key);
+    CHECK(summary.find(j[key].get<std::string>()) != std::string::npos);
+  }
+  CHECK(summary.find("(0.258% of H_q(0))") != std::string::npos);  // 200 x 1.287568403e-03 = 0.2575...
+  // Damaged copies: a summary number off by one unit, a share off by one unit, a dead anchor,
+  // the summary below section 1, a table row too many, a pair missing from the CSV.
+  const auto damaged = [&](const std::string& from, const std::string& to, std::size_t limit) {
+    std::string d = md;
+    const auto at = d.find(from);
+    REQUIRE(at != std::string::npos);
+    REQUIRE(at < limit);
+    return d.replace(at, from.size(), to);
+  };
+  CHECK_FALSE(summary_problems(damaged("1.635107798e+01", "1.635107799e+01", summary_end)).empty());
+  CHECK_FALSE(summary_problems(damaged("0.258% of", "0.259% of", summary_end)).empty());
+  CHECK_FALSE(summary_problems(damaged("](#3-case-b", "](#3-case-c", summary_end)).empty());
+  {
+    const auto start = md.find("## Summary of findings");
+    std::string moved = md.substr(0, start) + md.substr(summary_end + 1);
+    const auto after1 = moved.find("\n## 2.");
+    moved.insert(after1 + 1, md.substr(start, summary_end + 1 - start));
+    CHECK_FALSE(summary_problems(moved).empty());
+  }
+  const auto table_row = md.find("\n| (5, 1) | 4 |");
+  REQUIRE(table_row != std::string::npos);
+  const auto row_end = md.find('\n', table_row + 1);
+  std::string longer = md;
+  for (int i = 0; i < 15; ++i) longer.insert(row_end + 1, md.substr(table_row + 1, row_end - table_row));
+  CHECK_FALSE(pareto_table_problems(longer, csv).empty());
+  CHECK_FALSE(pareto_table_problems(md, csv.substr(0, csv.rfind('\n', csv.size() - 2) + 1)).empty());
+}
+
 TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli]") {
   if (!cli_available()) return;
   gyrores::test::temp_dir tmp("report");
@@ -738,6 +785,7 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   for (std::sregex_iterator it(md.begin(), md.end(), link), end; it != end; ++it) {
     std::string target = (*it)[1];
     INFO(target);
+    if (target[0] == '#') continue;  // a section of the report: the summary's links, checked below
     CHECK(fs::exists(fs::path(dir) / "out" / target));
     ++links;
     if (target.size() > 4 && target.substr(target.size() - 4) == ".png") {
@@ -763,4 +811,5 @@ TEST_CASE("cli report: runs end to end; every linked file exists", "[report][cli
   for (auto& e : fs::recursive_directory_iterator(fs::path(dir) / "out"))
     CHECK(e.path().string().find(".tmp") == std::string::npos);
   check_coupling_section(md, fs::path(dir) / "out");
+  check_summary_and_pareto(md, fs::path(dir) / "out");
 }

@@ -33,6 +33,7 @@ struct band_row {
   std::string T;
   std::string nominal, absorption, containment;  // H_q, settled decimals ("0" when exactly 0)
   std::string absorption_at, containment_at;     // where attained: the pair or n^2
+  big_rational absorption_lo, absorption_hi;     // the absorption guarantee's proved enclosure
 };
 
 struct band_case {
@@ -56,7 +57,8 @@ std::vector<band_row> band_rows(const band_case& b, unsigned digits) {
     const auto value = [&](const band_extreme& e) {
       return e.value.hi_rational() == 0 ? std::string("0") : e.value.rounded(digits).value_or("unsettled");
     };
-    rows.push_back({t, report_horizon_minimum(b.nominal, T, digits).h_min.value, value(W), value(B), at_text(W.at), at_text(B.at)});
+    rows.push_back({t, report_horizon_minimum(b.nominal, T, digits).h_min.value, value(W), value(B), at_text(W.at), at_text(B.at),
+                    W.value.lo_rational(), W.value.hi_rational()});
   }
   return rows;
 }
@@ -84,11 +86,29 @@ std::string band_script(const figure_spec& s, const std::string& title) {
   return g.str();
 }
 
-std::string part(context& c, const band_case& b) {
+// The summary's sentence for a band: the guarantees at the last horizon, as the table prints them.
+std::string band_finding(const band_case& b, const std::vector<band_row>& rows) {
+  const auto& last = rows.back();
+  std::ostringstream f;
+  f << "**A 1% tolerance on " << b.name << ".** By T = " << last.T << " every coupling of the band brings H_q down to "
+    << last.absorption << " or below (" << share_of_initial_energy(last.absorption_lo, last.absorption_hi)
+    << "; the highest, at " << last.absorption_at << ")";
+  if (last.nominal != last.absorption) f << ", while the nominal coupling reaches " << last.nominal;
+  for (const auto& r : rows)
+    if (r.containment == "0") {
+      f << "; from T = " << r.T << " on, some coupling of the band drains q completely (the degenerate pair " << r.containment_at << ")";
+      break;
+    }
+  f << ".";
+  return f.str();
+}
+
+std::string part(context& c, const std::string& heading, const band_case& b) {
   const auto rows = band_rows(b, c.digits);
   std::string zero_at;
   for (const auto& r : rows)
     if (r.containment == "0" && zero_at.empty()) zero_at = r.T + " (at the degenerate pair " + r.containment_at + ")";
+  c.findings.push_back({heading, band_finding(b, rows)});
   std::ostringstream md;
   md << "#### " << b.name << " (1%: n in [" << rational_str(b.n1) << ", " << rational_str(b.n2) << "])\n\n"
      << "The containment guarantee falls to 0 exactly from T = " << (zero_at.empty() ? std::string("(never up to 10^30)") : zero_at)
@@ -121,7 +141,8 @@ std::string band_section(context& c) {
       {"n = 2", "fig-band-n2", big_rational(198, 100), big_rational(202, 100), coupling_spec::from_n2(big_rational(4))},
       {"the (6, 5) coupling", "fig-band-65", a1, a2, coupling_spec::from_n2(big_rational(1, 30))}};
   std::ostringstream md;
-  md << "## 8. A coupling known to a tolerance: the band's guarantees\n\n"
+  const std::string heading = "8. A coupling known to a tolerance: the band's guarantees";
+  md << "## " << heading << "\n\n"
      << "A real coupling is known to a tolerance, n in [n1, n2]. Over [0, T] the **absorption guarantee** is the highest "
         "minimum of H_q over the band (every coupling drains q at least this far) and the **containment guarantee** the "
         "lowest (every coupling keeps at least this in q); both are proved and settled by the band theorem "
@@ -129,7 +150,7 @@ std::string band_section(context& c) {
         "attained. Unlike the nominal coupling's minimum, which keeps falling (its infimum is 0), the absorption "
         "guarantee stops at the resonant pair of the band whose own minimum is the highest, and the containment "
         "guarantee drops to 0 as soon as a degenerate pair of the band has its zero before T.\n\n";
-  for (const auto& b : cases) md << part(c, b);
+  for (const auto& b : cases) md << part(c, heading, b);
   return md.str();
 }
 

@@ -7,6 +7,8 @@
 namespace gyrores::report {
 namespace {
 
+const char* const heading = "2. Case A (absorption): the pair (11, 9)";
+
 std::string case_a_claims(context& c) {
   const auto v = c.values(11, 9);
   const auto v41 = c.values(41, 35);
@@ -14,6 +16,20 @@ std::string case_a_claims(context& c) {
   const auto& s6 = d6.front();
   const auto v6 = c.values(s6.tau, s6.sigma);
   const auto d2 = c.smallest(2, 1);
+  {
+    std::ostringstream f;
+    f << "**Case A (absorption).** (11, 9) ";
+    if (v.degenerate)
+      f << "drains q completely (r_res = 0 exactly)";
+    else
+      f << "keeps r_res = " << v.r_res;
+    f << " at t_first = " << v.t_first
+      << (v.t_first.value == v.t_min_paper.value ? ", equal to the paper's proxy pi/n" : ", the paper's proxy pi/n being " + v.t_min_paper.value)
+      << "; the smallest delta = 6 pair with beat >= 10 is " << pair_name(s6.tau, s6.sigma)
+      << (s6.tau == 41 && s6.sigma == 35 ? ", as the paper says" : ", not the paper's (41, 35)") << ", and the exact first zero of (41, 35), t_first = "
+      << v41.t_first << ", is " << (41 - 35) / 2 << " times its proxy pi/n = " << v41.t_min_paper << ".";
+    c.findings.push_back({heading, f.str()});
+  }
   std::ostringstream md;
   md << claims_table_head << "| delta = 2 and beat >= 10 give (11, 9) | smallest delta = 2 pair with beat >= 10: "
      << pair_name(d2.front().tau, d2.front().sigma) << " | "
@@ -74,7 +90,7 @@ std::string delta_table(context& c) {
 
 std::string case_a_section(context& c) {
   const std::string claims = case_a_claims(c), deltas = delta_table(c);
-  return "## 2. Case A (absorption): the pair (11, 9)\n\n" + claims + deltas +
+  return std::string("## ") + heading + "\n\n" + claims + deltas +
          draw_case_figures(c, resonant_pair<std::int64_t>(11, 9),
                            {2, "absorption", ", r_res = 0", "closed Lissajous curve through the origin (degenerate inscribed circle).",
                             "H_q(t) and H_z(t); exact t_first and the proxy pi/n coincide for delta = 2."});

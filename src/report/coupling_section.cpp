@@ -164,7 +164,13 @@ std::string absorb_script(const figure_spec& s, const std::string& title) {
   return g.str();
 }
 
-std::string part_a(context& c) {
+// What the summary says of n = 2 (the paper's Fig. 1a coupling), as the tables print it.
+struct n2_finding {
+  std::string horizon, h_min;    // the last horizon of (a) ("12" of 10^12) and the minimum over [0, 10^12]
+  std::string t_below, lobe;     // (b): the first t with H_q <= 1% and its lobe
+};
+
+std::string part_a(context& c, n2_finding& n2) {
   std::ostringstream md;
   std::vector<std::vector<horizon_row>> curves;
   for (const char* n : horizon_couplings) curves.push_back(horizon_curve(c, coupling_spec::from_n(parse_rational(n, "n"))));
@@ -187,6 +193,8 @@ std::string part_a(context& c) {
         md << "| " << horizon_couplings[i] << " | 10^" << row.t_text.substr(2) << " | " << lobe_str(row.r.lobe) << " | "
            << row.r.h_min.value << " | " << row.r.t_min.value << " |\n";
   md << "\n";
+  n2.horizon = curves[0].back().t_text.substr(2);  // the table's last row: the decades are its rows
+  n2.h_min = curves[0].back().r.h_min.value;
   const std::string title = "min of H_q over [0, T]: n = 2 (Fig. 1a) and n = 0.1832, horizon theorem";
   const auto spec = c.figs.spec("fig-coupling-horizon", 900, 560);
   c.figs.record("fig-coupling-horizon",
@@ -200,7 +208,7 @@ std::string part_a(context& c) {
 // The pairs of the table: the lowest few and the paper's (4, 3), (6, 5), reaching the level or not.
 const std::set<std::string> table_pairs = {"(2, 1)", "(3, 1)", "(4, 3)", "(5, 3)", "(6, 5)", "(9, 7)"};
 
-std::string part_b(context& c) {
+std::string part_b(context& c, n2_finding& n2) {
   const big_rational level = parse_rational(absorb_level_text, "level");
   std::vector<absorb_point> dec, pairs;
   std::string resonant_decimals;
@@ -234,7 +242,10 @@ std::string part_b(context& c) {
      << "| coupling | n | first lobe reaching 1% | first t with H_q <= 1% |\n|---|---|---|---|\n";
   for (const char* n : absorb_table)
     for (const auto& p : dec)
-      if (p.label == n) md << "| decimal | " << n << " | " << lobe_str(p.r.lobe) << " | " << p.r.t_below.value << " |\n";
+      if (p.label == n) {
+        md << "| decimal | " << n << " | " << lobe_str(p.r.lobe) << " | " << p.r.t_below.value << " |\n";
+        if (p.label == "2") n2.t_below = p.r.t_below.value, n2.lobe = lobe_str(p.r.lobe);
+      }
   for (const auto& p : pairs)
     if (table_pairs.count(p.label)) {
       const auto v = c.values(p.tau, p.sigma);
@@ -254,7 +265,14 @@ std::string part_b(context& c) {
 }  // namespace
 
 std::string coupling_section(context& c) {
-  return "## 7. Couplings that are not resonant: any horizon, any level\n\n" + part_a(c) + part_b(c);
+  const std::string heading = "7. Couplings that are not resonant: any horizon, any level";
+  n2_finding n2;
+  const std::string a = part_a(c, n2), b = part_b(c, n2);
+  std::string text = "**A coupling that is not resonant.** For n = 2 the infimum of H_q over all time is 0, never attained: its minimum over [0, T] is " +
+                     n2.h_min + " for T = 10^" + n2.horizon;
+  if (!n2.t_below.empty()) text += ", and H_q first falls to 1/200 (1% of its initial value) at t = " + n2.t_below + " (lobe " + n2.lobe + ")";
+  c.findings.push_back({heading, text + "."});
+  return "## " + heading + "\n\n" + a + b;
 }
 
 }  // namespace gyrores::report

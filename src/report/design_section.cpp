@@ -7,8 +7,16 @@
 namespace gyrores::report {
 namespace {
 
-// One row: a problem and T_max, the pair chosen with the exact time and with the proxy.
-std::string design_row(context& c, design_problem prob, const std::string& T) {
+const char* const heading_prefix = "4. The design problems, solved over all pairs with tau + sigma <= ";
+
+// A row's choice with one time: the pair and its printed r_res ("" when none is feasible).
+struct design_choice {
+  std::string pair, r_res;
+};
+
+// One row: a problem and T_max, the pair chosen with the exact time and with the proxy (also put
+// in `chosen`, in that order).
+std::string design_row(context& c, design_problem prob, const std::string& T, design_choice (&chosen)[2]) {
   design_options o;
   o.problem = prob;
   o.tmax = parse_rational(T, "T");
@@ -20,13 +28,16 @@ std::string design_row(context& c, design_problem prob, const std::string& T) {
   for (auto tm : {design_time::first_hit, design_time::proxy}) {
     o.time = tm;
     auto r = design_solve(c.catalogue, o);
+    auto& ch = chosen[tm == design_time::proxy ? 1 : 0];
     if (!r.feasible_any()) {
+      ch = {};
       md << "none feasible | - | - | ";
       continue;
     }
     const auto& p = r.ranked.front();
     const auto v = c.values(p.tau, p.sigma);
-    md << pair_name(p.tau, p.sigma) << " | " << (v.degenerate ? "0 (exact)" : v.r_res.value) << " | " << v.t_first
+    ch = {pair_name(p.tau, p.sigma), v.degenerate ? "0 (exact)" : v.r_res.value};
+    md << ch.pair << " | " << ch.r_res << " | " << v.t_first
        << (tm == design_time::proxy && !design_time_within(p, design_time::first_hit, o.tmax) ? " (**> T_max**)" : "")
        << " | ";
   }
@@ -75,15 +86,26 @@ std::string design_reading(const context& c) {
 
 std::string design_section(context& c) {
   std::ostringstream md;
-  md << "## 4. The design problems, solved over all pairs with tau + sigma <= " << c.catalogue.back().order() << "\n\n"
+  const std::string heading = heading_prefix + std::to_string(c.catalogue.back().order());
+  md << "## " << heading << "\n\n"
      << "`gyrores design absorb|contain --tmax T --beat 10` (beat ratio (tau + sigma)/(tau - sigma) >= 10 as in the paper; "
         "ties in r_res broken by the smaller time, then the smaller order). Each row: the chosen pair with the exact "
         "time constraint, and with the paper's proxy (`--proxy`).\n\n"
      << "| problem | T_max | chosen (exact t_first) | its r_res | its t_first | chosen (proxy) | its r_res | its exact t_first |\n"
      << "|---|---|---|---|---|---|---|---|\n";
-  md << design_row(c, design_problem::absorb, "16") << design_row(c, design_problem::absorb, "17")
-     << design_row(c, design_problem::contain, "16") << design_row(c, design_problem::contain, "17")
-     << design_row(c, design_problem::contain, "18");
+  design_choice chosen[2], contain17[2];
+  md << design_row(c, design_problem::absorb, "16", chosen) << design_row(c, design_problem::absorb, "17", chosen)
+     << design_row(c, design_problem::contain, "16", chosen) << design_row(c, design_problem::contain, "17", contain17)
+     << design_row(c, design_problem::contain, "18", chosen);
+  // The paper's Case B horizon (T_min ~ 17.2): where the proxy and the exact time part ways.
+  const auto said = [](const design_choice& d) {
+    return d.pair.empty() ? std::string("no pair (none feasible)") : d.pair + " (r_res = " + d.r_res + ")";
+  };
+  c.findings.push_back({heading, "**Design.** Containment with T_max = 17 and beat >= 10 chooses " + said(contain17[0]) +
+                                     " with the exact first-hit time" +
+                                     (contain17[0].pair == contain17[1].pair ? std::string(", and the same with the paper's proxy")
+                                                                             : ", but " + said(contain17[1]) + " with the paper's proxy pi/n") +
+                                     "."});
   md << design_reading(c);
   return md.str();
 }

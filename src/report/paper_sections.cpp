@@ -10,10 +10,11 @@
 
 namespace gyrores::report {
 
+std::string title_section() { return "# gyrores report\n\n"; }
+
 std::string intro_section(unsigned digits) {
   std::ostringstream md;
-  md << "# gyrores report\n\n"
-     << "Recomputes the examples of *Shaping Energy Exchange with Gyroscopic Interconnections* (Juchem and "
+  md << "Recomputes the examples of *Shaping Energy Exchange with Gyroscopic Interconnections* (Juchem and "
         "Loccufier), Sections IV-V and Figures 1-4, with gyrores. All values are for the impulse qdot0 = 1 "
         "(r_res is proportional to qdot0; times do not depend on it). Every real number printed here has "
      << digits << " significant digits, each the correct rounding of an enclosure proved by interval arithmetic "
@@ -28,7 +29,8 @@ std::string intro_section(unsigned digits) {
 
 std::string figure1_section(context& c) {
   std::ostringstream md;
-  md << "## 1. Figure 1: n = 2 and n = 1/sqrt(12)\n\n";
+  const std::string heading = "1. Figure 1: n = 2 and n = 1/sqrt(12)";
+  md << "## " << heading << "\n\n";
   const auto s2 = coupling_spec::from_n(big_rational(2)), s12 = coupling_spec::from_n2(big_rational(1, 12));
   const auto p2 = coupling_resonant_pair(s2);
   const auto p12 = coupling_resonant_pair(s12);
@@ -47,6 +49,12 @@ std::string figure1_section(context& c) {
      << " (the horizon theorem: the lobe with the smallest ||k x - 1/2|| inside the span, proved; `gyrores "
         "coupling 2 --horizon 100pi`).\n\n";
   const auto v43 = c.values(4, 3);
+  c.findings.push_back(
+      {heading, std::string("**Figure 1.** n = 1/sqrt(12) is ") +
+                    (p12 ? "the resonant pair " + p12->str() + " (r_res = " + v43.r_res.value + ")" : std::string("not resonant")) +
+                    "; n = 2 is " + (p2 ? "resonant" : "not resonant") +
+                    ": the infimum of its H_q over all time is 0, never attained, and over the paper's span [0, 200 pi/n] "
+                    "its minimum is H_q = " + h.h_min.value + "."});
   md << "For (4, 3): n = " << v43.n << ", r_res = " << v43.r_res << ", H_q min = " << v43.h_min << ", t_first = " << v43.t_first
      << ", proxy pi/n = " << v43.t_min_paper << " (`gyrores coupling --n2 1/12`).\n\n";
   // Over the paper's span [0, 200 pi/n] (app::phase_figure's default) and over the period of (4, 3).

@@ -39,14 +39,14 @@ void check_report_outputs(const fs::path& dir) {
 std::string write_report(const report_options& o) {
   const auto t_start = std::chrono::steady_clock::now();
   using frontend::progress_stage;
-  context c{o.digits, fs::path(o.out), {}, {}};
+  context c{o.digits, fs::path(o.out), {}, {}, {}};
   ensure_directory(c.dir);
   c.figs.dir = c.dir / "figures";
   ensure_directory(c.figs.dir);
   check_report_outputs(c.dir);
   std::ostringstream md;
   progress_stage("1/8 the paper's examples, Figure 1");
-  md << intro_section(c.digits) << figure1_section(c);
+  md << intro_section(c.digits) << figure1_section(c);  // the summary goes above, once every section has run
   progress_stage("2/8 the pair catalogue");
   c.catalogue = design_catalogue(std::max<std::int64_t>(o.pareto_order, 200));  // sections 2-4
   progress_stage("3/8 case A");
@@ -58,10 +58,10 @@ std::string write_report(const report_options& o) {
   progress_stage("6/8 the Pareto front");
   md << pareto_section(c, o.pareto_order);
   progress_stage("7/8 the validation sweep");
-  md << sweep_section(o.sweep_order);
+  md << sweep_section(c, o.sweep_order);
   progress_stage("8/8 couplings");
   md << coupling_section(c) << band_section(c) << files_section(c.figs) << footer(t_start);
-  write_file_atomically(c.dir / "REPORT.md", md.str());
+  write_file_atomically(c.dir / "REPORT.md", title_section() + summary_section(c.findings) + md.str());
   std::string out = (c.dir / "REPORT.md").string() + "\n";
   for (auto& n : c.figs.notes) out += "note: " + n + "\n";
   return out;

@@ -1,5 +1,7 @@
-// The REPORT.md generator (`gyrores report`, README.md): DIR/REPORT.md with the paper's examples
-// recomputed (proved digits), the two design cases, the Pareto front, a validation sweep, the
+// The REPORT.md generator (`gyrores report`, README.md): DIR/REPORT.md with a summary of findings
+// (each linked to its section, whose numbers it repeats), the paper's examples
+// recomputed (proved digits), the two design cases, the Pareto front (a short table; the whole
+// front in DIR/pareto-front.csv), a validation sweep, the
 // couplings that are not resonant and the figures (PNG, SVG and PDF, with data and gnuplot scripts),
 // from the application layer (include/gyrores/app/) and the library. Every file is written
 // atomically (io/files.hpp); REPORT.md is written last and links only files that exist. Its own

@@ -44,12 +44,19 @@ struct case_figures {
   std::string name, phase_note, phase_caption, energy_caption;
 };
 
+// One bullet of the summary of findings (summary.cpp): a sentence whose numbers are strings its
+// section prints, and the heading (without its #s) of the section it links to.
+struct finding {
+  std::string heading, text;
+};
+
 // What every section shares.
 struct context {
   unsigned digits;                       // of every verified real printed
   fs::path dir;                          // the output directory
   figure_set figs;
   std::vector<design_point> catalogue;   // every pair up to max(Pareto order, 200), for sections 2-4
+  std::vector<finding> findings;         // in the order of the sections
 
   // The first k pairs of the catalogue (enumeration order) with tau - sigma = delta and beat >= 10.
   std::vector<design_point> smallest(std::int64_t delta, std::size_t k) const;
@@ -71,13 +78,25 @@ std::string verdict(bool ok);
 // The table head of the claims tables: "| claim (paper) | gyrores | verdict |".
 extern const char* const claims_table_head;
 
+// The GitHub anchor of a heading (its text without the #s): lower case, every character that is not
+// a letter, digit, space, '-' or '_' dropped, spaces made '-'. For the summary's links.
+std::string markdown_anchor(const std::string& heading);
+// An energy as a share of H_q(0) = 1/2 (qdot0 = 1), from a proved enclosure [lo, hi] of it:
+// "0.258% of H_q(0)", three significant digits in plain notation, the correct rounding of every
+// value of the enclosure (else the outward range "0.257-0.258%").
+std::string share_of_initial_energy(const big_rational& lo, const big_rational& hi);
+std::string share_of_initial_energy(const proved_real& h);  // from its enclosure (when asked), else its value
+// "## Summary of findings": the findings, one bullet each, each linked to its section.
+std::string summary_section(const std::vector<finding>& findings);
+
+std::string title_section();
 std::string intro_section(unsigned digits);
 std::string figure1_section(context& c);
 std::string case_a_section(context& c);
 std::string case_b_section(context& c);
 std::string design_section(context& c);
 std::string pareto_section(context& c, std::int64_t max_order);
-std::string sweep_section(std::int64_t max_order);
+std::string sweep_section(context& c, std::int64_t max_order);
 std::string coupling_section(context& c);
 std::string band_section(context& c);
 std::string files_section(const figure_set& figs);
