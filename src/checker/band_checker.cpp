@@ -780,7 +780,7 @@ void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, c
 }  // namespace
 
 verdict check_band_certificate(const std::string& json_text) {
-  try {
+  return verdict_of<verdict>([&]() -> verdict {
     if (json_text.size() > (std::size_t(4) << 20)) throw fails("work bound: the certificate is larger than 4 MiB");
     json j;
     try {
@@ -814,13 +814,7 @@ verdict check_band_certificate(const std::string& json_text) {
                    j["absorption"]["value"][0].get<std::string>() + " .. " + j["absorption"]["value"][1].get<std::string>() +
                    ", the containment guarantee in " + j["containment"]["value"][0].get<std::string>() + " .. " +
                    j["containment"]["value"][1].get<std::string>() + " (H_q), every interval's bound re-proved"};
-  } catch (const malformed& e) {
-    return {2, one_line(std::string("malformed: ") + e.what())};
-  } catch (const fails& e) {
-    return {1, one_line(std::string("FAILS: ") + e.what())};
-  } catch (const std::exception& e) {  // e.g. an exponent beyond a long
-    return {2, one_line(std::string("malformed: ") + e.what())};
-  }
+  });
 }
 
 }  // namespace gyrores_checker

@@ -242,7 +242,7 @@ int check_reals(const certificate& c, const Z& a, const Z& b, long prec) {
 }  // namespace
 
 verdict check_theorem_certificate(const std::string& json_text) {
-  try {
+  return verdict_of<verdict>([&]() -> verdict {
     certificate c = read(json_text);
     Z a, b;
     check_integers(c, a, b);
@@ -251,17 +251,14 @@ verdict check_theorem_certificate(const std::string& json_text) {
     std::size_t longest = 0;
     for (const auto* cl : {&c.u_star, &c.r_res, &c.theta_first, &c.t_first})
       longest = std::max({longest, cl->lo.size(), cl->hi.size()});
-    long prec = long(3.33 * double(longest)) + long(fmpz_bits(a.v)) + 64;
-    for (int round = 0; round < 5; ++round, prec *= 2)
-      if (check_reals(c, a, b, prec))
-        return {0, "certificate holds (lattice-theorem/1): r_res, theta_first, t_first of (" + text_of(c.tau) + ", " +
-                       text_of(c.sigma) + ") to " + std::to_string(c.digits) + " digits"};
-    return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
-  } catch (const malformed& e) {
-    return {2, one_line(std::string("malformed: ") + e.what())};
-  } catch (const fails& e) {
-    return {1, one_line(std::string("FAILS: ") + e.what())};
-  }
+    const long prec = long(3.33 * double(longest)) + long(fmpz_bits(a.v)) + 64;
+    return first_decided<verdict>(prec, [&](long p) {
+      return check_reals(c, a, b, p) ? "certificate holds (lattice-theorem/1): r_res, theta_first, t_first of (" +
+                                           text_of(c.tau) + ", " + text_of(c.sigma) + ") to " + std::to_string(c.digits) +
+                                           " digits"
+                                     : std::string();
+    });
+  });
 }
 
 }  // namespace gyrores_checker

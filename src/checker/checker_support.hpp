@@ -100,6 +100,27 @@ json parse_without_duplicate_keys(const std::string& text);
 // character from the file (a JSON string may hold one), shown escaped instead.
 std::string one_line(const std::string& s);
 
+// A checker's verdict V from its body, or 2 "malformed: ..." and 1 "FAILS: ..." from what it
+// throws (any other exception, e.g. an exponent beyond a long: malformed).
+template <class V, class Body> V verdict_of(Body&& body) {
+  try {
+    return body();
+  } catch (const malformed& e) {
+    return {2, one_line(std::string("malformed: ") + e.what())};
+  } catch (const fails& e) {
+    return {1, one_line(std::string("FAILS: ") + e.what())};
+  } catch (const std::exception& e) {
+    return {2, one_line(std::string("malformed: ") + e.what())};
+  }
+}
+
+// {0, holds(p)} at the first p = prec, 2 prec, ..., 16 prec where every inequality is decided.
+template <class V, class Holds> V first_decided(long prec, Holds&& holds) {
+  for (int round = 0; round < 5; ++round, prec *= 2)
+    if (std::string text = holds(prec); !text.empty()) return {0, text};
+  return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
+}
+
 // Malformed unless j is an object with exactly the fields `keys` (`where` names it in the message).
 void exact_keys(const json& j, const std::set<std::string>& keys, const std::string& where);
 

@@ -601,7 +601,7 @@ int check_below(const certificate& c, const rotation& R, long prec) {
 }  // namespace
 
 verdict check_coupling_certificate(const std::string& json_text) {
-  try {
+  return verdict_of<verdict>([&]() -> verdict {
     const certificate c = read(json_text);
     const rotation R = rotation_of(c);
     exact_facts X;
@@ -617,17 +617,15 @@ verdict check_coupling_certificate(const std::string& json_text) {
                 bits_of(c.P) + bits_of(c.Q) + 64;
     if (c.has_below) prec += 2 * bits_of(c.below_lobe.k) + bits_of(c.En) + bits_of(c.Ed);
     exact_facts out;
-    for (int round = 0; round < 5; ++round, prec *= 2)
-      if (check_at(c, R, X, K_reached, K_not, prec, out) && (!c.has_below || check_below(c, R, prec)))
-        return {0, "certificate holds (horizon-theorem/1): min H_q over [0, T] " + (c.at_end ? "at t = T" : "in lobe " + text_of(c.lobe.k)) +
-                       (c.has_below ? "; first time below E: " + c.below_case + (c.below_case == "lobe" ? " " + text_of(c.below_lobe.k) : "") : "") +
-                       "; every claim to " + std::to_string(c.digits) + " digits"};
-    return {1, "FAILS: an inequality could not be decided at " + std::to_string(prec / 2) + " bits"};
-  } catch (const malformed& e) {
-    return {2, one_line(std::string("malformed: ") + e.what())};
-  } catch (const fails& e) {
-    return {1, one_line(std::string("FAILS: ") + e.what())};
-  }
+    return first_decided<verdict>(prec, [&](long p) {
+      if (!check_at(c, R, X, K_reached, K_not, p, out) || (c.has_below && !check_below(c, R, p))) return std::string();
+      return "certificate holds (horizon-theorem/1): min H_q over [0, T] " +
+             (c.at_end ? "at t = T" : "in lobe " + text_of(c.lobe.k)) +
+             (c.has_below ? "; first time below E: " + c.below_case + (c.below_case == "lobe" ? " " + text_of(c.below_lobe.k) : "")
+                          : "") +
+             "; every claim to " + std::to_string(c.digits) + " digits";
+    });
+  });
 }
 
 }  // namespace gyrores_checker
