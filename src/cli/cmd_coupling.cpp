@@ -24,10 +24,15 @@
 #include "cli_options.hpp"
 #include "cli_signals.hpp"
 #include "commands.hpp"
-#include "number_text.hpp"
+#include "frontend/number_text.hpp"
 #include "pair_output.hpp"
 
 namespace gyrores::cli {
+
+using frontend::decimal_text;
+using frontend::energy_text;
+using frontend::plain;
+
 namespace {
 
 struct coupling_args {

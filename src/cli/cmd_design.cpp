@@ -17,10 +17,15 @@
 #include "cli_options.hpp"
 #include "cli_signals.hpp"
 #include "commands.hpp"
-#include "number_text.hpp"
+#include "frontend/number_text.hpp"
 #include "pair_output.hpp"
 
 namespace gyrores::cli {
+
+using frontend::decimal_text;
+using frontend::energy_text;
+using frontend::plain;
+
 namespace {
 
 // --delta not given (any value the user can give is checked, 0 included).

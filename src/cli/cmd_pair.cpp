@@ -12,9 +12,14 @@
 
 #include "cli_options.hpp"
 #include "commands.hpp"
-#include "number_text.hpp"
+#include "frontend/number_text.hpp"
 
 namespace gyrores::cli {
+
+using frontend::decimal_text;
+using frontend::energy_text;
+using frontend::plain;
+
 namespace {
 
 struct pair_args {

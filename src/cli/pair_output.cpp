@@ -1,9 +1,13 @@
 // src/cli/pair_output.hpp
 #include "pair_output.hpp"
 
-#include "number_text.hpp"
+#include "frontend/number_text.hpp"
 
 namespace gyrores::cli {
+
+using frontend::decimal_text;
+using frontend::energy_text;
+using frontend::plain;
 
 std::string radius_text(const pair_report& v) { return v.degenerate ? "0 (exact, delta = 2 mod 4)" : plain(v.r_res); }
 
@@ -15,7 +19,7 @@ std::string padded(const std::string& text, std::size_t width) {
 
 std::string rank_cell(std::size_t i) { return std::to_string(i + 1) + std::string(i + 1 < 10 ? 5 : 4, ' '); }
 
-std::size_t value_column_width(unsigned digits) { return std::size_t(digits) + std::size_t(-plain_exponent_min) + 5; }
+std::size_t value_column_width(unsigned digits) { return std::size_t(digits) + std::size_t(-frontend::plain_exponent_min) + 5; }
 
 std::string value_columns_header(const std::vector<std::string>& names, unsigned digits) {
   std::string out;

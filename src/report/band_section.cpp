@@ -33,7 +33,7 @@ struct band_row {
   std::string T;
   std::string nominal, absorption, containment;  // H_q, settled decimals ("0" when exactly 0)
   std::string absorption_at, containment_at;     // where attained: the pair or n^2
-  big_rational absorption_lo, absorption_hi;     // the absorption guarantee's proved enclosure
+  enclosure absorption_value;                    // the absorption guarantee, proved
 };
 
 struct band_case {
@@ -58,7 +58,7 @@ std::vector<band_row> band_rows(const band_case& b, unsigned digits) {
       return e.value.hi_rational() == 0 ? std::string("0") : e.value.rounded(digits).value_or("unsettled");
     };
     rows.push_back({t, report_horizon_minimum(b.nominal, T, digits).h_min.value, value(W), value(B), at_text(W.at), at_text(B.at),
-                    W.value.lo_rational(), W.value.hi_rational()});
+                    W.value});
   }
   return rows;
 }
@@ -91,7 +91,7 @@ std::string band_finding(const band_case& b, const std::vector<band_row>& rows) 
   const auto& last = rows.back();
   std::ostringstream f;
   f << "**A 1% tolerance on " << b.name << ".** By T = " << last.T << " every coupling of the band brings H_q down to "
-    << last.absorption << " or below (" << share_of_initial_energy(last.absorption_lo, last.absorption_hi)
+    << last.absorption << " or below (" << share_of_initial_energy(last.absorption_value)
     << "; the highest, at " << last.absorption_at << ")";
   if (last.nominal != last.absorption) f << ", while the nominal coupling reaches " << last.nominal;
   for (const auto& r : rows)

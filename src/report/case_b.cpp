@@ -33,7 +33,7 @@ std::string case_b_claims(context& c) {
   const auto lobe = prove_paper_lobe(resonant_pair<big_int>(6, 5), big_int(6), 6);
   const double t_first = std::strtod(v.t_first.value.c_str(), nullptr), proxy = std::strtod(v.t_min_paper.value.c_str(), nullptr);
   c.findings.push_back({heading, "**Case B (containment).** (6, 5) keeps r_res = " + v.r_res.value + ", that is H_q min = " +
-                                     v.h_min.value + " (" + share_of_initial_energy(v.h_min) +
+                                     v.h_min.value + " (" + share_of_initial_energy(v.h_min_share) +
                                      "), and its exact first minimum, t_first = " + v.t_first.value + ", comes " +
                                      (t_first < proxy ? "before" : t_first > proxy ? "after" : "at") +
                                      " the paper's proxy pi/n = " + v.t_min_paper.value + "."});
@@ -47,7 +47,7 @@ std::string case_b_claims(context& c) {
      << verdict(agrees_with_printed("17.2", v.t_min_paper)) << "; exact time **differs** |\n"
      << asymptotic_claims(lobe)
      << "| r_min = 5.075e-2 | r_res = " << v.r_res << " (H_q min = r_res^2/2 = " << v.h_min << ", "
-     << share_of_initial_energy(v.h_min) << ") | " << verdict(agrees_with_printed("5.075e-2", v.r_res))
+     << share_of_initial_energy(v.h_min_share) << ") | " << verdict(agrees_with_printed("5.075e-2", v.r_res))
      << " |\n\n";
   return md.str();
 }

@@ -84,8 +84,10 @@ std::string markdown_anchor(const std::string& heading);
 // An energy as a share of H_q(0) = 1/2 (qdot0 = 1), from a proved enclosure [lo, hi] of it:
 // "0.258% of H_q(0)", three significant digits in plain notation, the correct rounding of every
 // value of the enclosure (else the outward range "0.257-0.258%").
-std::string share_of_initial_energy(const big_rational& lo, const big_rational& hi);
-std::string share_of_initial_energy(const proved_real& h);  // from its enclosure (when asked), else its value
+// "P% of H_q(0)" for qdot0 = 1: of a proved energy, to 3 digits (a range when its rounding is not
+// settled), or a share the pair report proved (pair_report::h_min_share).
+std::string share_of_initial_energy(const enclosure& energy);
+std::string share_of_initial_energy(const proved_real& share);
 // "## Summary of findings": the findings, one bullet each, each linked to its section.
 std::string summary_section(const std::vector<finding>& findings);
 

@@ -1,4 +1,5 @@
-// How the CLI's text outputs spell proved reals for people (the JSON keeps the scientific text).
+// How the text outputs (the CLI's and REPORT.md's) spell proved reals for people (the JSON keeps
+// the scientific text).
 // Every function here only moves the decimal point of a correctly rounded scientific text
 // (core/decimal.hpp): the digits printed are exactly the digits of the proved rounding.
 #pragma once
@@ -8,7 +9,7 @@
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/rational.hpp>
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 
 // Decimal exponents written without an exponent ("16.35107798", "0.001287568403").
 inline constexpr long plain_exponent_min = -4, plain_exponent_max = 6;
@@ -28,4 +29,4 @@ std::string energy_text(const std::string& energy, const std::string& share);
 // "~" and its correct rounding to `digits` significant digits ("~0.3333333333").
 std::string decimal_text(const big_rational& v, unsigned digits);
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend

@@ -1,10 +1,10 @@
-// src/cli/number_text.hpp
-#include "number_text.hpp"
+// src/frontend/number_text.hpp
+#include "frontend/number_text.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 
-namespace gyrores::cli {
+namespace gyrores::frontend {
 
 std::string plain(const std::string& s) {
   const std::size_t e = s.find('e');
@@ -55,4 +55,4 @@ std::string decimal_text(const big_rational& v, unsigned digits) {
   return (v < 0 ? "-" : "") + text;
 }
 
-}  // namespace gyrores::cli
+}  // namespace gyrores::frontend
