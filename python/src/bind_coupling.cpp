@@ -106,7 +106,8 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const py::ob
       ph = app::plant_horizon_of(*request.plant, horizon_of(horizon_s.cast<std::string>(), "horizon_s"), opt.digits);
   }
   const big_rational energy_scale =
-      request.plant ? request.plant->mass * request.plant->velocity * request.plant->velocity : request.qdot0 * request.qdot0;
+      request.plant ? big_rational(request.plant->mass * request.plant->velocity * request.plant->velocity)
+                    : big_rational(request.qdot0 * request.qdot0);
   if (convergents < 0 || convergents > std::int64_t(app::coupling_convergents_max))
     throw usage_error("convergents must be in [0, " + std::to_string(app::coupling_convergents_max) + "]");
   opt.convergents = std::size_t(convergents);
@@ -143,7 +144,16 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const py::ob
   });
   if (band_alone)
     return to_python(json{{"horizon", horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(bq, *r.band)}});
-  const json input = !n.is_none() ? json{{"n", rational_text(n)}} : !n2.is_none() ? json{{"n2", rational_text(n2)}} : json::object();
+  json input = !n.is_none() ? json{{"n", rational_text(n)}} : !n2.is_none() ? json{{"n2", rational_text(n2)}} : json::object();
+  if (!pair.is_none()) {  // as the CLI echoes --pair TAU SIGMA
+    const py::tuple t = py::tuple(pair);
+    input["pair"] = json::array({py::str(t[0]).cast<std::string>(), py::str(t[1]).cast<std::string>()});
+  }
+  if (!plant.is_none()) {
+    const py::tuple t = py::tuple(plant);
+    input = json{{"mass", t[0].cast<std::string>()}, {"stiffness", t[1].cast<std::string>()},
+                 {"gyro", t[2].cast<std::string>()}, {"velocity", t[3].cast<std::string>()}};
+  }
   json j = coupling_report_json(input, ph ? ph->model.str() : horizon, request.options.digits, *r.report);
   if (r.band) j["band"] = app::band_result_json(bq, *r.band);
   if (request.qdot0 != 1) j["qdot0"] = rational_str(request.qdot0);

@@ -50,9 +50,10 @@ struct coupling_args {
 };
 
 // "(p, q)" padded, then n, r_res, t_first of each convergent's pair.
-void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows, unsigned digits) {
+void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows, unsigned digits, bool model_units) {
   if (rows.empty()) return;
-  os << "resonant approximations (continued-fraction convergents of W1/W2):\n"
+  os << "resonant approximations (continued-fraction convergents of W1/W2" << (model_units ? "; model units, qdot0 = 1" : "")
+     << "):\n"
      << "  a_k    pair                  " << value_columns_header({"n", "r_res", "t_first"}, digits) << "\n";
   for (const auto& r : rows) {
     std::string pr = "(" + r.convergent.p.str() + ", " + r.convergent.q.str() + ")";
@@ -78,7 +79,7 @@ struct unit_choice {
   std::optional<app::plant_numbers> numbers;  // the plant's own numbers at --digits
   std::optional<app::plant_horizon> horizon;  // --horizon-s as the model's horizon
   std::string horizon_text;                  // the horizon as the text says it ("100", "2 s")
-  big_rational energy_scale() const { return plant ? plant->mass * plant->velocity * plant->velocity : qdot0 * qdot0; }
+  big_rational energy_scale() const { return plant ? big_rational(plant->mass * plant->velocity * plant->velocity) : big_rational(qdot0 * qdot0); }
   std::string energy_unit() const { return plant ? " J" : ""; }
   std::string time_unit() const { return plant ? " s" : ""; }
 };
@@ -152,7 +153,7 @@ std::string coupling_text(const coupling_args& a, const unit_choice& u, const co
      << "  inf H_q       " << (r.pair ? energy_text(*r.pair_values) + (u.plant ? "  (model units, qdot0 = 1)" : "")
                                        : r.inf_all_time + " (not attained)") << "\n"
      << "  because       " << r.inf_reason << "\n";
-  convergents_text(os, r.convergents, unsigned(a.digits));
+  convergents_text(os, r.convergents, unsigned(a.digits), bool(u.plant));
   os << "  " << a.digits << " digits, each the correct rounding of a proved enclosure (" << horizon_theorem_id
      << ", lattice-theorem/1; "
      << (u.plant ? std::string("energies in J and times in s: the unit impulse's times m V^2 and sqrt(m/k)")
