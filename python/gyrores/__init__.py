@@ -49,7 +49,8 @@ __version__ = _gyrores.__version__
 
 __all__ = [
     "CheckResult", "ComputeError", "Interval", "PairResult", "Result", "UsageError", "__version__", "asymptotics",
-    "certify", "check", "coupling", "couplings", "design", "enumerate_pairs", "pair", "pairs", "pareto", "sweep",
+    "certify", "check", "coupling", "couplings", "design", "enumerate_pairs", "pair", "pairs", "pareto", "plant",
+    "sweep",
 ]
 
 # Keys whose values are exact rationals as text ("1/12", "17"): fractions.Fraction.
@@ -701,8 +702,59 @@ def _horizon_value(text):
         return text
 
 
-def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12, band=None, tolerance=None,
-             band_digits=None):
+def _plant_texts(plant, function):
+    """The plant's (mass, stiffness, gyro, velocity) as exact texts: from a Result of plant(), a
+    mapping with those keys, or a 4-tuple."""
+    keys = ("mass", "stiffness", "gyro", "velocity")
+    if hasattr(plant, "keys"):
+        missing = [k for k in keys if k not in plant]
+        if missing:
+            raise UsageError(f"{function}(): plant needs {', '.join(keys)}: {missing[0]} is missing")
+        values = [plant[k] for k in keys]
+    elif isinstance(plant, (tuple, list)) and len(plant) == 4:
+        values = list(plant)
+    else:
+        raise UsageError(f"{function}(): plant must be plant(...), a mapping or (mass, stiffness, gyro, velocity), "
+                         f"got {_args._describe(plant)}")
+    return tuple(_args.rational(v, function, k) for k, v in zip(keys, values))
+
+
+def _plant_result(raw, d):
+    """The library's "plant" object: inputs, n2, energy_scale and h_q0 Fractions; omega0, n and
+    time_scale reals of `d` digits; units the SI units as text."""
+    real = _real(d)
+    out = Result()
+    for k, v in raw.items():
+        if k in ("omega0", "n", "time_scale"):
+            out[k] = real(v)
+        elif k == "units":
+            out[k] = dict(v)
+        else:
+            out[k] = _numbers.fraction_of_text(v)
+    return out
+
+
+def plant(mass, stiffness, gyro, velocity, digits=17):
+    """A physical plant in the model's terms (docs/units.md): two equal-frequency modes with mass m
+    (kg), stiffness k (N/m) and gyroscopic coefficient g (N s/m), m q'' + g z' + k q = 0,
+    m z'' - g q' + k z = 0, struck so that q'(0) = V (m/s; an impulse J gives V = J/m).
+
+    Each input exact (int, Fraction, Decimal, text "0.5"; a float is its exact binary value), > 0.
+    Returns a Result: mass, stiffness, gyro, velocity (Fractions); omega0 = sqrt(k/m) (rad/s);
+    n = g/sqrt(m k) and n2 = g^2/(m k) (a Fraction: give it to coupling(n2=...)); time_scale =
+    1/omega0 = sqrt(m/k) (s: a model time t is t * time_scale seconds); energy_scale = m V^2 (J:
+    the energy (m q'^2 + k q^2)/2 kept in q is energy_scale * H_q of the unit impulse); h_q0 =
+    m V^2/2 (J); units. Reals are correct roundings of proved enclosures (floats for digits <= 15).
+    Give it to coupling(plant=...) for the answers in joules and seconds.
+    """
+    f = "plant"
+    d = _args.bounded(digits, f, "digits", 1, 1000)
+    texts = _plant_texts((mass, stiffness, gyro, velocity), f)
+    return _plant_result(_prefixed(f, _gyrores._plant, texts, _library_digits(d)), d)
+
+
+def coupling(n=None, n2=None, horizon=None, below=None, convergents=8, digits=12, band=None, tolerance=None,
+             band_digits=None, qdot0=1, pair=None, plant=None, horizon_s=None):
     """Any coupling n (or its square n2, e.g. "1/12"): resonance test, min of H_q over [0, T],
     the first time H_q <= E, the infimum over all time, convergents (``gyrores coupling --json``);
     and the guarantees of that minimum over a band of couplings (``--band``, ``--tolerance``).
@@ -737,19 +789,47 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
     digits, as the coupling's own values). A band alone (no n, n2) gives a Result {horizon,
     theorem, band, digits}. Ctrl-C stops the computation (KeyboardInterrupt: a band's bracket
     reached so far is not returned).
+
+    pair: (tau, sigma), the coupling n^2 = (tau - sigma)^2/(tau sigma) of a resonant pair, instead
+    of n or n2 (e.g. with tolerance="1%"). qdot0: the impulse q'(0) > 0 (exact; default 1): energies
+    (h_min_horizon, the pair's and the band's) scale by qdot0^2, radii by qdot0, times not; an
+    absolute below is an energy at this qdot0 (a percentage a share of H_q(0) = qdot0^2/2); adds
+    ``qdot0`` (a Fraction) when not 1, and ``below.level_given`` (``below.level`` is then the unit
+    impulse's level). horizon: default 100 (model time t omega0).
+
+    plant: a physical plant (plant(...), or mass, stiffness, gyro, velocity), instead of n, n2, pair
+    and qdot0 (no band): the horizon values (h_min_horizon in J, t_min_horizon and t_below in s,
+    r_min_horizon the amplitude in m) and t_min_paper (s) in its units, the pair's values in model
+    units; horizon_s: the horizon in seconds (else horizon in model time). Adds ``plant`` (as
+    plant() gives it), ``horizon_s`` and ``horizon_exact`` (False when T = horizon_s omega0 is
+    irrational: the minimum is then proved over [0, T'], T' its upper rounding to digits + 20
+    significant digits, and ``horizon`` is T').
     """
     f = "coupling"
     d = _args.bounded(digits, f, "digits", 1, 1000)
     if band is not None and tolerance is not None:
         raise UsageError(f"{f}(): give at most one of band and tolerance")
     bd = d if band_digits is None else _args.bounded(band_digits, f, "band_digits", 1, 10000)
+    if pair is not None and not (isinstance(pair, (tuple, list)) and len(pair) == 2):
+        raise UsageError(f"{f}(): pair must be (tau, sigma), got {_args._describe(pair)}")
     raw = _prefixed(f, _gyrores._coupling, None if n is None else _args.rational(n, f, "n"),
-                    None if n2 is None else _args.rational(n2, f, "n2"), _args.rational(horizon, f, "horizon"),
+                    None if n2 is None else _args.rational(n2, f, "n2"),
+                    None if horizon is None else _args.rational(horizon, f, "horizon"),
                     _level(below, f), _args.bounded(convergents, f, "convergents", 0, 60), _library_digits(d),
                     _band_text(band, f), _tolerance_text(tolerance, f),
-                    0 if band_digits is None else bd)  # 0: the library's digits (17 for floats)
+                    0 if band_digits is None else bd,  # 0: the library's digits (17 for floats)
+                    _args.rational(qdot0, f, "qdot0"),
+                    None if pair is None else tuple(_args.integer(v, f, "pair") for v in pair),
+                    None if plant is None else _plant_texts(plant, f),
+                    None if horizon_s is None else _args.rational(horizon_s, f, "horizon_s"))
     raw["digits"] = d
     order = list(raw)  # the CLI's order of the keys
+    extra = {}
+    for k in ("qdot0", "plant", "horizon_s", "horizon_exact"):
+        if k in raw:
+            v = raw.pop(k)
+            extra[k] = (_numbers.fraction_of_text(v) if k == "qdot0" else _plant_result(v, d) if k == "plant" else v)
+    level_given = raw["below"].pop("level_given", None) if isinstance(raw.get("below"), dict) else None
     band_raw = raw.pop("band", None)
     horizon_text = raw.pop("horizon")
     enclosures = raw.pop("enclosures", None)
@@ -759,6 +839,9 @@ def coupling(n=None, n2=None, horizon=100, below=None, convergents=8, digits=12,
         out["enclosures"] = _hull_with_values(_intervals(enclosures, d), out)
     if band_raw is not None:
         out["band"] = _band(band_raw, d, bd)
+    out.update(extra)
+    if level_given is not None:
+        out["below"]["level_given"] = level_given
     return Result((k, out[k]) for k in order)
 
 

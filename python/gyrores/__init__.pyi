@@ -56,10 +56,14 @@ def design(problem: str, tmax: Rational, beat: Optional[Rational] = None, max_or
 def pareto(max_order: SupportsIndex, orientation: str = "absorb", proxy: bool = False,
            exclude_degenerate: bool = False, beat: Optional[Rational] = None, exclude_low: SupportsIndex = 0,
            digits: SupportsIndex = 10) -> Result: ...
-def coupling(n: Optional[Rational] = None, n2: Optional[Rational] = None, horizon: Rational = 100,
+def plant(mass: Rational, stiffness: Rational, gyro: Rational, velocity: Rational,
+          digits: SupportsIndex = 17) -> Result: ...
+def coupling(n: Optional[Rational] = None, n2: Optional[Rational] = None, horizon: Optional[Rational] = None,
              below: Optional[Rational] = None, convergents: SupportsIndex = 8, digits: SupportsIndex = 12,
              band: Optional[Union[Tuple[Rational, Rational], str]] = None, tolerance: Optional[Rational] = None,
-             band_digits: Optional[SupportsIndex] = None) -> Result: ...
+             band_digits: Optional[SupportsIndex] = None, qdot0: Rational = 1,
+             pair: Optional[Tuple[SupportsIndex, SupportsIndex]] = None, plant: Optional[Any] = None,
+             horizon_s: Optional[Rational] = None) -> Result: ...
 def couplings(n: Optional[Union[Rational, npt.ArrayLike]] = None, n2: Optional[Union[Rational, npt.ArrayLike]] = None,
               horizon: Union[Rational, npt.ArrayLike] = 100, below: Optional[Rational] = None,
               progress: Optional[Callable[[int, int], Any]] = None) -> np.ndarray: ...

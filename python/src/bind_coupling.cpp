@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <gyrores/app/coupling.hpp>
+#include <gyrores/app/plant.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/io/report_json.hpp>
@@ -23,24 +24,44 @@ namespace gyrores::python {
 namespace {
 
 horizon_time horizon_of(const std::string& text, const std::string& what) { return parse_horizon_time(text, what); }
-big_rational level_of(const std::string& text) { return parse_energy_level(text, "below"); }
+big_rational level_of(const std::string& text, const big_rational& energy_scale = 1) {
+  return parse_energy_level(text, "below", energy_scale);
+}
 
 coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& what) {
   return is_n2 ? coupling_spec::from_n2(parse_rational(text, what)) : coupling_spec::from_n(parse_rational(text, what));
 }
 
+// n^2 = (tau - sigma)^2/(tau sigma) of pair = (tau, sigma).
+big_rational pair_n2(const py::object& pair) {
+  const py::tuple t = py::tuple(pair);
+  if (t.size() != 2) throw usage_error("pair must be (tau, sigma)");
+  const resonant_pair<big_int> p = pair_of(t[0], t[1]);
+  return pair_coupling_n2(p.tau(), p.sigma());
+}
+
+// The plant (mass, stiffness, gyro, velocity) as texts.
+plant_inputs plant_of(const py::object& plant) {
+  const py::tuple t = py::tuple(plant);
+  if (t.size() != 4) throw usage_error("plant must be (mass, stiffness, gyro, velocity)");
+  static const std::string names[4] = {"mass", "stiffness", "gyro", "velocity"};
+  return parse_plant(t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<std::string>(), t[3].cast<std::string>(),
+                     names);
+}
+
 // The band asked for, from "N1:N2" or a tolerance "P%" around n, as the CLI reads them
 // (src/cli/cmd_coupling.cpp); checked before any work (the coupling's own analysis comes first).
 std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n, const py::object& n2, const py::object& band,
-                                                             const py::object& tolerance) {
+                                                             const py::object& tolerance, const py::object& pair) {
   if (!band.is_none() && !tolerance.is_none()) throw usage_error("give at most one of band and tolerance");
   std::optional<std::pair<big_rational, big_rational>> b;
   if (!band.is_none()) b = parse_band(band.cast<std::string>(), "band");
   if (!tolerance.is_none()) {
-    if (n.is_none() && n2.is_none()) throw usage_error("tolerance needs the coupling n or n2");
+    if (n.is_none() && n2.is_none() && pair.is_none()) throw usage_error("tolerance needs the coupling n, n2 or pair");
     if (!n.is_none()) b = parse_tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
     else {  // n = sqrt(n2): the exact band, or (n irrational) rational ends enclosing it outward
-      const tolerance_band_ends t = parse_tolerance_band_n2(parse_rational(rational_text(n2), "n2"), tolerance.cast<std::string>(), "tolerance");
+      const big_rational c2 = n2.is_none() ? pair_n2(pair) : parse_rational(rational_text(n2), "n2");
+      const tolerance_band_ends t = parse_tolerance_band_n2(c2, tolerance.cast<std::string>(), "tolerance");
       b.emplace(t.n1, t.n2);
     }
   }
@@ -55,23 +76,52 @@ struct coupling_and_band {
 
 // The dict of `gyrores coupling --json`, with "band" when a band or tolerance is given; a band
 // alone (no n, n2) gives the CLI's {"horizon", "theorem", "band"}.
-py::object coupling_dict(const py::object& n, const py::object& n2, const std::string& horizon,
+py::object coupling_dict(const py::object& n, const py::object& n2, const py::object& horizon_given,
                          const py::object& below, std::int64_t convergents, long long digits, const py::object& band,
-                         const py::object& tolerance, long long band_digits) {
-  const bool band_alone = n.is_none() && n2.is_none() && !band.is_none();
-  if (!band_alone && n.is_none() == n2.is_none())
-    throw usage_error("give exactly one of n (the coupling) or n2 (its square)");
+                         const py::object& tolerance, long long band_digits, const std::string& qdot0, const py::object& pair,
+                         const py::object& plant, const py::object& horizon_s) {
+  const int given = int(!n.is_none()) + int(!n2.is_none()) + int(!pair.is_none());
+  const bool band_alone = given == 0 && plant.is_none() && !band.is_none();
   app::coupling_request request;
   coupling_report_options& opt = request.options;
   opt.digits = checked_digits(digits, 1, report_digits_max);
+  if (!plant.is_none()) {  // the plant's coupling, units and horizon (app/plant.hpp)
+    if (given > 0) throw usage_error("the plant gives the coupling n = g/sqrt(m k): drop n, n2 or pair");
+    if (qdot0 != "1") throw usage_error("the plant's velocity sets the impulse: drop qdot0");
+    if (!band.is_none() || !tolerance.is_none())
+      throw usage_error("band and tolerance take the model's couplings, not a plant: give n2 (the plant's n2) and qdot0");
+    request.plant = plant_of(plant);
+  } else {
+    if (!band_alone && given != 1) throw usage_error("give exactly one of n (the coupling), n2 (its square) or pair");
+    if (!horizon_s.is_none()) throw usage_error("horizon_s (seconds) needs a plant");
+    request.qdot0 = parse_qdot0(qdot0, "qdot0");
+  }
+  if (!horizon_s.is_none() && !horizon_given.is_none()) throw usage_error("give at most one of horizon and horizon_s");
+  const std::string horizon = horizon_given.is_none() ? "100" : horizon_given.cast<std::string>();
+  std::optional<app::plant_numbers> numbers;
+  std::optional<app::plant_horizon> ph;
+  if (request.plant) {
+    numbers = app::plant_numbers_of(*request.plant, opt.digits);
+    if (!horizon_s.is_none())
+      ph = app::plant_horizon_of(*request.plant, horizon_of(horizon_s.cast<std::string>(), "horizon_s"), opt.digits);
+  }
+  const big_rational energy_scale =
+      request.plant ? big_rational(request.plant->mass * request.plant->velocity * request.plant->velocity)
+                    : big_rational(request.qdot0 * request.qdot0);
   if (convergents < 0 || convergents > std::int64_t(app::coupling_convergents_max))
     throw usage_error("convergents must be in [0, " + std::to_string(app::coupling_convergents_max) + "]");
   opt.convergents = std::size_t(convergents);
-  opt.horizon = horizon_of(horizon, "horizon");
-  if (!below.is_none()) opt.below = level_of(below.cast<std::string>());
-  if (!band_alone) request.spec = n.is_none() ? spec_of(rational_text(n2), true, "n2") : spec_of(rational_text(n), false, "n");
-  const auto ends = band_of(n, n2, band, tolerance);
+  opt.horizon = ph ? ph->model : horizon_of(horizon, "horizon");
+  if (ph) check_horizon_limits(opt.horizon, "horizon_s times omega0");
+  if (!below.is_none()) opt.below = level_of(below.cast<std::string>(), energy_scale);
+  if (request.plant) request.spec = coupling_spec::from_n2(request.plant->n2());
+  else if (!band_alone)
+    request.spec = !n.is_none()  ? spec_of(rational_text(n), false, "n")
+                   : !n2.is_none() ? spec_of(rational_text(n2), true, "n2")
+                                   : coupling_spec::from_n2(pair_n2(pair));
+  const auto ends = band_of(n, n2, band, tolerance, pair);
   app::band_request bq;
+  bq.qdot0 = request.qdot0;
   if (ends) {
     bq.n1 = ends->first;
     bq.n2 = ends->second;
@@ -94,10 +144,32 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const std::s
   });
   if (band_alone)
     return to_python(json{{"horizon", horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(bq, *r.band)}});
-  const json input = n.is_none() ? json{{"n2", rational_text(n2)}} : json{{"n", rational_text(n)}};
-  json j = coupling_report_json(input, horizon, request.options.digits, *r.report);
+  json input = !n.is_none() ? json{{"n", rational_text(n)}} : !n2.is_none() ? json{{"n2", rational_text(n2)}} : json::object();
+  if (!pair.is_none()) {  // as the CLI echoes --pair TAU SIGMA
+    const py::tuple t = py::tuple(pair);
+    input["pair"] = json::array({py::str(t[0]).cast<std::string>(), py::str(t[1]).cast<std::string>()});
+  }
+  if (!plant.is_none()) {
+    const py::tuple t = py::tuple(plant);
+    input = json{{"mass", t[0].cast<std::string>()}, {"stiffness", t[1].cast<std::string>()},
+                 {"gyro", t[2].cast<std::string>()}, {"velocity", t[3].cast<std::string>()}};
+  }
+  json j = coupling_report_json(input, ph ? ph->model.str() : horizon, request.options.digits, *r.report);
   if (r.band) j["band"] = app::band_result_json(bq, *r.band);
+  if (request.qdot0 != 1) j["qdot0"] = rational_str(request.qdot0);
+  if (request.plant) {  // as `gyrores coupling --json` with a plant
+    j["plant"] = app::plant_json(*request.plant, *numbers);
+    j["horizon_s"] = horizon_s.is_none() ? json(nullptr) : json(horizon_s.cast<std::string>());
+    j["horizon_exact"] = !ph || ph->exact;
+  }
+  if ((request.qdot0 != 1 || request.plant) && j.contains("below")) j["below"]["level_given"] = below.cast<std::string>();
   return to_python(j);
+}
+
+// The plant's own numbers (app/plant.hpp) as `gyrores coupling --json` gives them.
+py::object plant_dict(const py::object& plant, long long digits) {
+  const plant_inputs p = plant_of(plant);
+  return to_python(app::plant_json(p, app::plant_numbers_of(p, checked_digits(digits, 1, report_digits_max))));
 }
 
 struct coupling_columns {
@@ -163,8 +235,11 @@ py::tuple couplings_columns(const py::list& couplings, bool is_n2, const py::lis
 void bind_coupling(py::module_& m) {
   m.def("_coupling", &coupling_dict, py::arg("n"), py::arg("n2"), py::arg("horizon"), py::arg("below"),
         py::arg("convergents"), py::arg("digits"), py::arg("band") = py::none(), py::arg("tolerance") = py::none(),
-        py::arg("band_digits") = 0,
+        py::arg("band_digits") = 0, py::arg("qdot0") = "1", py::arg("pair") = py::none(), py::arg("plant") = py::none(),
+        py::arg("horizon_s") = py::none(),
         "The dict of `gyrores coupling --json` (with --band N1:N2 or --tolerance P%). Use gyrores.coupling.");
+  m.def("_plant", &plant_dict, py::arg("plant"), py::arg("digits"),
+        "The \"plant\" object of `gyrores coupling --json` with a plant. Use gyrores.plant.");
   m.def("_couplings", &couplings_columns, py::arg("couplings"), py::arg("is_n2"), py::arg("horizons"),
         py::arg("below"), py::arg("progress"),
         "Columns (h_min_horizon, t_min_horizon, min_at_horizon_end, t_below, resonant) of every "

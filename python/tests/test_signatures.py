@@ -10,7 +10,7 @@ import gyrores.plot
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 PUBLIC = ["pair", "pairs", "asymptotics", "certify", "check", "design", "pareto", "coupling", "couplings",
-          "enumerate_pairs", "sweep"]
+          "enumerate_pairs", "sweep", "plant"]
 PLOTS = ["phase", "energy", "pareto", "coupling_floor"]
 
 

@@ -27,6 +27,9 @@ band_result run_band(const band_request& request) {
   check_coupling_limits(request.n2 * request.n2, "the band's upper end squared");
   check_horizon_limits(request.horizon, "the horizon");
   if (request.below) check_level_limits(*request.below, "the level");
+  if (!(request.qdot0 > 0)) throw usage_error("qdot0 must be > 0, got " + rational_str(request.qdot0));
+  if (request.certificate && request.qdot0 != 1)
+    throw usage_error("a band certificate states the unit impulse (qdot0 = 1): drop qdot0 or the certificate");
   if (request.certificate) {  // what a band certificate states, gyrores check must read
     check_band_certificate_horizon(request.horizon);
     if (request.digits > unsigned(gyrores_checker::band_max_digits))
@@ -39,6 +42,8 @@ band_result run_band(const band_request& request) {
   opt.max_intervals = request.max_intervals;
   opt.stop = request.stop;
   opt.progress = request.progress;
+  opt.energy_scale = request.qdot0 * request.qdot0;
+  const report_scales scales = report_scales::of_qdot0(request.qdot0);
   band_result r;
   r.absorption = prove_band_absorption(request.n1, request.n2, request.horizon, opt);
   if (!r.absorption.interrupted) r.containment = prove_band_containment(request.n1, request.n2, request.horizon, opt);
@@ -65,8 +70,10 @@ band_result run_band(const band_request& request) {
   // Each extreme's own coupling, its lobe and time (the horizon theorem at the digits asked).
   r.absorption_at = attained(r.absorption.at);
   r.containment_at = attained(r.containment->at);
-  r.absorption_at->minimum = report_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop);
-  r.containment_at->minimum = report_horizon_minimum(r.containment->at.spec, request.horizon, request.digits, request.stop);
+  r.absorption_at->minimum =
+      report_horizon_minimum(r.absorption.at.spec, request.horizon, request.digits, request.stop, proof_use::report, scales);
+  r.containment_at->minimum =
+      report_horizon_minimum(r.containment->at.spec, request.horizon, request.digits, request.stop, proof_use::report, scales);
   if (r.below) {
     r.below_at = attained(r.below->at);
     r.below_at->first_below = report_first_below(r.below->at.spec, *request.below, request.digits, request.stop);

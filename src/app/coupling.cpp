@@ -3,6 +3,7 @@
 
 #include <limits>
 
+#include <gyrores/app/plant.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/model/inputs.hpp>
 
@@ -19,6 +20,18 @@ coupling_result run_coupling(const coupling_request& request) {
   check_horizon_limits(opt.horizon, "the horizon");
   if (opt.below) check_level_limits(*opt.below, "the level");
   if (request.certificate) check_certificate_horizon(opt.horizon);
+  if (!(request.qdot0 > 0)) throw usage_error("qdot0 must be > 0, got " + rational_str(request.qdot0));
+  if (request.plant && request.qdot0 != 1) throw usage_error("give a plant's velocity or qdot0, not both");
+  if (request.certificate && (request.qdot0 != 1 || request.plant))
+    throw usage_error("a coupling certificate states the unit impulse in model units (qdot0 = 1): drop the plant or qdot0, or the certificate");
+  if (request.plant) {
+    if (request.plant->n2() != request.spec.n2)
+      throw usage_error("the coupling's n^2 is not the plant's g^2/(m k) = " + rational_str(request.plant->n2()));
+    opt.scales = plant_scales(*request.plant);
+  } else if (request.qdot0 != 1) {
+    opt.scales = report_scales::of_qdot0(request.qdot0);
+    opt.pair_qdot0 = request.qdot0;
+  }
   opt.use = request.certificate ? proof_use::certificate : proof_use::report;
   coupling_result out{analyse_coupling(request.spec, opt), std::nullopt};
   if (!request.certificate) return out;

@@ -1,5 +1,8 @@
-// gyrores coupling N | --n2 P/Q [--horizon T] [--below E] [--convergents K] [--digits D] [--json]
-//                  [--certificate FILE] [--band N1:N2 | --tolerance P%]
+// gyrores coupling N | --n2 P/Q | --pair TAU SIGMA [--qdot0 V] [--horizon T] [--below E]
+//                  [--convergents K] [--digits D] [--json] [--certificate FILE]
+//                  [--band N1:N2 | --tolerance P%]
+// gyrores coupling --mass M --stiffness K --gyro G --velocity V [--horizon-s T] [--below E] ...
+//                  (a physical plant, app/plant.hpp, docs/units.md: joules and seconds)
 // Any coupling n (app/coupling.hpp, report/coupling_report.hpp): exact resonance test on n^2;
 // the pair analysis when resonant; the minimum of H_q over [0, T] with its first time and the
 // first time H_q <= E (the horizon theorem, proved), with their certificate from the same
@@ -13,6 +16,7 @@
 
 #include <gyrores/app/band.hpp>
 #include <gyrores/app/coupling.hpp>
+#include <gyrores/app/plant.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/band_certificate_json.hpp>
@@ -36,7 +40,9 @@ using frontend::plain;
 namespace {
 
 struct coupling_args {
-  std::string n, n2, horizon = "100", below, band, tolerance, certificate;
+  std::string n, n2, horizon, below, band, tolerance, certificate, qdot0;
+  std::vector<std::string> pair;                     // --pair TAU SIGMA
+  std::string mass, stiffness, gyro, velocity, horizon_s;  // a plant (docs/units.md)
   int band_digits = 0;  // 0: --digits
   int digits = 12;
   std::int64_t convergents = 8;
@@ -44,9 +50,10 @@ struct coupling_args {
 };
 
 // "(p, q)" padded, then n, r_res, t_first of each convergent's pair.
-void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows, unsigned digits) {
+void convergents_text(std::ostringstream& os, const std::vector<coupling_convergent>& rows, unsigned digits, bool model_units) {
   if (rows.empty()) return;
-  os << "resonant approximations (continued-fraction convergents of W1/W2):\n"
+  os << "resonant approximations (continued-fraction convergents of W1/W2" << (model_units ? "; model units, qdot0 = 1" : "")
+     << "):\n"
      << "  a_k    pair                  " << value_columns_header({"n", "r_res", "t_first"}, digits) << "\n";
   for (const auto& r : rows) {
     std::string pr = "(" + r.convergent.p.str() + ", " + r.convergent.q.str() + ")";
@@ -65,13 +72,56 @@ std::string lobe_text(const std::optional<horizon_lobe>& lobe) {
   return "lobe k = " + lobe->k.str() + ", ||k x - 1/2|| ~ " + nu + " (exact: --json)";
 }
 
-std::string coupling_text(const coupling_args& a, const coupling_report& r) {
+// The units of a request: the impulse qdot0 (model units), or a physical plant (J, s, m).
+struct unit_choice {
+  big_rational qdot0 = 1;
+  std::optional<plant_inputs> plant;
+  std::optional<app::plant_numbers> numbers;  // the plant's own numbers at --digits
+  std::optional<app::plant_horizon> horizon;  // --horizon-s as the model's horizon
+  std::string horizon_text;                  // the horizon as the text says it ("100", "2 s")
+  big_rational energy_scale() const { return plant ? big_rational(plant->mass * plant->velocity * plant->velocity) : big_rational(qdot0 * qdot0); }
+  std::string energy_unit() const { return plant ? " J" : ""; }
+  std::string time_unit() const { return plant ? " s" : ""; }
+};
+
+// An energy with its unit and its share of H_q(0).
+std::string energy_in(const unit_choice& u, const proved_real& e, const proved_real& share) {
+  const std::string t = energy_text(e.value, share.value);
+  if (u.energy_unit().empty() || t == "0 (exact)") return t;
+  return plain(e) + u.energy_unit() + t.substr(plain(e).size());
+}
+
+std::string plant_text(const unit_choice& u, unsigned digits) {
+  const plant_inputs& p = *u.plant;
+  const app::plant_numbers& v = *u.numbers;
+  std::ostringstream os;
+  os << "plant m = " << decimal_text(p.mass, digits) << " kg, k = " << decimal_text(p.stiffness, digits)
+     << " N/m, g = " << decimal_text(p.gyro, digits) << " N s/m, struck to q'(0) = V = " << decimal_text(p.velocity, digits)
+     << " m/s (docs/units.md)\n"
+     << "  omega0 = sqrt(k/m)      " << plain(v.omega0) << " rad/s\n"
+     << "  n = g/sqrt(m k)         " << plain(v.n) << "\n"
+     << "  time unit 1/omega0      " << plain(v.time_scale) << " s  (model time t = omega0 t_s)\n"
+     << "  H_q(0) = m V^2/2        " << decimal_text(v.h_q0, digits)
+     << " J  (the energy (m q'^2 + k q^2)/2 of q is m V^2 H_q: below, energies in J, times in s)\n";
+  if (u.horizon && !u.horizon->exact)
+    os << "  horizon                 " << u.horizon_text << " = T/omega0 with T irrational: proved over [0, T'], T' = "
+       << plain(format_rational_scientific(u.horizon->model.value, digits + 20)) << (u.horizon->model.times_pi ? " pi" : "")
+       << " >= T (T'/T - 1 < 10^-" << digits + 19 << ")\n";
+  return os.str();
+}
+
+std::string coupling_text(const coupling_args& a, const unit_choice& u, const coupling_report& r) {
   std::ostringstream os;
   const auto& spec = r.spec;
+  if (u.plant) os << plant_text(u, unsigned(a.digits));
   const horizon_minimum_report& h = r.horizon;
   const quadratic_number& x = h.proof.x;
   os << "coupling n^2 = " << rational_str(spec.n2) << (spec.n ? "  (n = " + rational_str(*spec.n) + ", exact)" : "") << "\n"
-     << "  |n|           " << plain(r.abs_n) << (r.n_negative ? "  (n < 0 mirrors the motion; |n| is used)" : "") << "\n"
+     << "  |n|           " << plain(r.abs_n) << (r.n_negative ? "  (n < 0 mirrors the motion; |n| is used)" : "") << "\n";
+  if (u.qdot0 != 1)
+    os << "  qdot0         " << decimal_text(u.qdot0, unsigned(a.digits)) << "  (H_q(0) = qdot0^2/2 = "
+       << decimal_text(u.qdot0 * u.qdot0 / 2, unsigned(a.digits)) << ")\n";
+  os
      << "  x = n/sqrt(n^2+4) = " << (x.str().size() <= 60 ? x.str() : "(exact: --json)")
      << (x.is_rational() ? "" : ", a quadratic irrational") << "\n"
      << "  resonance     D = P (P + 4Q) = " << spec.discriminant().str()
@@ -80,28 +130,35 @@ std::string coupling_text(const coupling_args& a, const coupling_report& r) {
     os << "  r_res         " << radius_text(*r.pair_values) << "\n"
        << "  H_q min       " << energy_text(*r.pair_values) << "\n"
        << "  t_first       " << plain(r.pair_values->t_first) << "\n"
-       << "  (more: gyrores pair " << r.pair->tau().str() << " " << r.pair->sigma().str() << ")\n";
+       << "  (more: gyrores pair " << r.pair->tau().str() << " " << r.pair->sigma().str()
+       << (u.qdot0 != 1 ? " --qdot0 " + a.qdot0 : std::string()) << ")\n";
+    if (u.plant) os << "  (the pair's values in model units: time t omega0, qdot0 = 1)\n";
   }
-  os << "  pi/|n|        " << plain(r.t_min_paper) << "  (the paper's proxy)\n"
-     << "over [0, " << a.horizon << "]:\n"
-     << "  min H_q       " << energy_text(h.h_min.value, h.h_min_share.value) << "  (radius " << plain(h.r_min) << ")\n"
-     << "  first at t =  " << plain(h.t_min) << "\n"
+  os << "  pi/|n|        " << plain(r.t_min_paper) << u.time_unit() << "  (the paper's proxy)\n"
+     << "over [0, " << u.horizon_text << "]:\n"
+     << "  min H_q       " << energy_in(u, h.h_min, h.h_min_share) << "  (" << (u.plant ? "amplitude " : "radius ")
+     << plain(h.r_min) << (u.plant ? " m" : "") << ")\n"
+     << "  first at t =  " << plain(h.t_min) << u.time_unit() << "\n"
      << "  from          "
      << (h.proof.at_horizon_end ? "the end point t = T: H_q still decreases there (lobe " + h.proof.cut_lobe.str() + " is cut before its minimum)"
                           : lobe_text(h.lobe) + " (the smallest of the lobes inside [0, T])")
      << "\n";
   if (r.below) {
     const first_below_report& b = *r.below;
-    os << "first time H_q <= " << a.below << ":\n";
+    os << "first time H_q <= " << a.below << u.energy_unit() << ":\n";
     if (b.never) os << "  never         " << b.reason << "\n";
-    else os << "  t =           " << plain(b.t_below) << "\n  because       " << b.reason << "\n";
+    else os << "  t =           " << plain(b.t_below) << u.time_unit() << "\n  because       " << b.reason << "\n";
   }
   os << "over all time:\n"
-     << "  inf H_q       " << (r.pair ? energy_text(*r.pair_values) : r.inf_all_time + " (not attained)") << "\n"
+     << "  inf H_q       " << (r.pair ? energy_text(*r.pair_values) + (u.plant ? "  (model units, qdot0 = 1)" : "")
+                                       : r.inf_all_time + " (not attained)") << "\n"
      << "  because       " << r.inf_reason << "\n";
-  convergents_text(os, r.convergents, unsigned(a.digits));
+  convergents_text(os, r.convergents, unsigned(a.digits), bool(u.plant));
   os << "  " << a.digits << " digits, each the correct rounding of a proved enclosure (" << horizon_theorem_id
-     << ", lattice-theorem/1; qdot0 = 1, H_q(0) = 1/2)\n";
+     << ", lattice-theorem/1; "
+     << (u.plant ? std::string("energies in J and times in s: the unit impulse's times m V^2 and sqrt(m/k)")
+                 : "qdot0 = " + rational_str(u.qdot0) + ", H_q(0) = " + rational_str(u.qdot0 * u.qdot0 / 2))
+     << ")\n";
   return os.str();
 }
 
@@ -122,9 +179,9 @@ std::string attained_text(const app::band_attained& a, unsigned digits) {
 
 // A guarantee (an energy) with its share of H_q(0) = 1/2: the share correctly rounded when its
 // enclosure decides it, else its proved bracket (report/share.hpp).
-std::string extreme_text(const band_extreme& e, unsigned digits) {
+std::string extreme_text(const band_extreme& e, unsigned digits, const big_rational& qdot0) {
   if (e.settled && e.value.hi_rational() == 0) return "0 (exactly)";
-  const enclosure share = scaled(e.value, share_factor());
+  const enclosure share = scaled(e.value, share_factor(qdot0));
   const unsigned sd = std::min(digits, share_digits);
   const auto rounded_share = share.rounded(sd);
   const auto [slo, shi] = share.outward(sd);
@@ -139,13 +196,14 @@ std::string extreme_text(const band_extreme& e, unsigned digits) {
 std::string band_text(const coupling_args& a, const app::band_request& q, const app::band_result& b, const std::string& note) {
   std::ostringstream os;
   const unsigned d = q.digits;
-  os << "band n in [" << decimal_text(q.n1, d) << ", " << decimal_text(q.n2, d) << "], over [0, " << a.horizon << "]:\n";
+  os << "band n in [" << decimal_text(q.n1, d) << ", " << decimal_text(q.n2, d) << "], over [0, "
+     << (a.horizon.empty() ? "100" : a.horizon) << "]:\n";
   if (!note.empty()) os << "  " << note << "\n";
   os
-     << "  absorption guarantee   " << extreme_text(b.absorption, d) << "\n"
+     << "  absorption guarantee   " << extreme_text(b.absorption, d, q.qdot0) << "\n"
      << "                         every n of the band has min H_q <= this over [0, T] (the highest minimum)\n";
   if (b.absorption_at) os << "                         " << attained_text(*b.absorption_at, d) << "\n";
-  os << "  containment guarantee  " << (b.containment ? extreme_text(*b.containment, d) : "not started (interrupted)") << "\n"
+  os << "  containment guarantee  " << (b.containment ? extreme_text(*b.containment, d, q.qdot0) : "not started (interrupted)") << "\n"
      << "                         every n of the band keeps H_q >= this on [0, T] (the lowest minimum)\n";
   if (b.containment_at) os << "                         " << attained_text(*b.containment_at, d) << "\n";
   if (b.below) {
@@ -218,36 +276,101 @@ struct band_choice {
   std::string note;  // why the ends are not those of the request (n irrational), else empty
 };
 
-// --band N1:N2, or --tolerance P% around N or around sqrt(--n2): with n irrational, rational ends
-// enclosing n (1 -+ P%) outward (model/inputs.hpp); a band's guarantees hold for a band inside it
-// (the absorption guarantee is its highest minimum, the containment guarantee its lowest, the
-// first time below E its latest).
-std::optional<band_choice> band_of(const coupling_args& a) {
+// The coupling given: N, --n2 P/Q or --pair TAU SIGMA (exactly one; the plant's, with a plant),
+// and its n^2 for a tolerance around it. Named as the text of a tolerance says it.
+struct coupling_given {
+  coupling_spec spec;
+  std::optional<big_rational> n;  // N when given (a tolerance around it is exact)
+  std::string name;               // "sqrt(1/12)", for the note of an irrational n
+};
+
+std::optional<coupling_given> coupling_of(const coupling_args& a, const unit_choice& u) {
+  const int given = int(!a.n.empty()) + int(!a.n2.empty()) + int(!a.pair.empty());
+  if (u.plant) {
+    if (given > 0)
+      throw usage_error(std::string("the plant gives the coupling n = g/sqrt(m k): drop ") +
+                        (!a.n.empty() ? "N" : !a.n2.empty() ? "--n2" : "--pair") + " or the plant options");
+    return coupling_given{coupling_spec::from_n2(u.plant->n2()), std::nullopt, "sqrt(" + rational_str(u.plant->n2()) + ")"};
+  }
+  if (given > 1) throw usage_error("give exactly one of N (the coupling), --n2 P/Q (its square) or --pair TAU SIGMA");
+  if (given == 0) return std::nullopt;
+  if (!a.n.empty()) {
+    const big_rational n = parse_rational(a.n, "N");
+    return coupling_given{coupling_spec::from_n(n), n, ""};
+  }
+  big_rational n2;
+  if (!a.n2.empty()) n2 = parse_rational(a.n2, "--n2");
+  else {
+    if (a.pair.size() != 2) throw usage_error("--pair takes two integers TAU SIGMA, got " + std::to_string(a.pair.size()) + " values");
+    const resonant_pair<big_int> p = parse_pair_arguments(a.pair[0], a.pair[1]);
+    n2 = pair_coupling_n2(p.tau(), p.sigma());
+  }
+  return coupling_given{coupling_spec::from_n2(n2), std::nullopt, "sqrt(" + rational_str(n2) + ")"};
+}
+
+// --band N1:N2, or --tolerance P% around N, sqrt(--n2) or a pair's n: with n irrational, rational
+// ends enclosing n (1 -+ P%) outward (model/inputs.hpp); a band's guarantees hold for a band
+// inside it (the absorption guarantee is its highest minimum, the containment guarantee its
+// lowest, the first time below E its latest).
+std::optional<band_choice> band_of(const coupling_args& a, const std::optional<coupling_given>& c, const unit_choice& u) {
   if (!a.band.empty() && !a.tolerance.empty()) throw usage_error("give at most one of --band and --tolerance");
+  if (u.plant && (!a.band.empty() || !a.tolerance.empty()))
+    throw usage_error("--band and --tolerance take the model's couplings, not a plant: give --n2 " + rational_str(u.plant->n2()) +
+                      " (the plant's n^2) with --qdot0 for the impulse");
   if (!a.band.empty()) return band_choice{parse_band(a.band, "--band"), ""};
   if (a.tolerance.empty()) return std::nullopt;
-  if (!a.n.empty() && !a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
-  if (a.n.empty() && a.n2.empty()) throw usage_error("--tolerance needs the coupling N or --n2 P/Q");
-  if (!a.n.empty()) return band_choice{parse_tolerance_band(parse_rational(a.n, "N"), a.tolerance, "--tolerance"), ""};
-  const big_rational n2 = parse_rational(a.n2, "--n2");
-  const tolerance_band_ends t = parse_tolerance_band_n2(n2, a.tolerance, "--tolerance");
-  band_choice c{{t.n1, t.n2}, ""};
+  if (!c) throw usage_error("--tolerance needs the coupling N, --n2 P/Q or --pair TAU SIGMA");
+  if (c->n) return band_choice{parse_tolerance_band(*c->n, a.tolerance, "--tolerance"), ""};
+  const tolerance_band_ends t = parse_tolerance_band_n2(c->spec.n2, a.tolerance, "--tolerance");
+  band_choice b{{t.n1, t.n2}, ""};
   if (!t.exact)
-    c.note = "this band contains the band n (1 -+ " + a.tolerance + ") asked, n = sqrt(" + rational_str(n2) +
-             ") irrational: its ends are rounded outward (exact: --json); the guarantees of a band hold for every band inside it";
-  return c;
+    b.note = "this band contains the band n (1 -+ " + a.tolerance + ") asked, n = " + c->name +
+             " irrational: its ends are rounded outward (exact: --json); the guarantees of a band hold for every band inside it";
+  return b;
+}
+
+// --qdot0 V, or the plant of --mass, --stiffness, --gyro, --velocity (all four, no --qdot0), and
+// the horizon: --horizon T (model units, default 100) or, with a plant, --horizon-s T (seconds).
+unit_choice units_of(const coupling_args& a) {
+  unit_choice u;
+  const std::string* plant_flags[4] = {&a.mass, &a.stiffness, &a.gyro, &a.velocity};
+  static const std::string names[4] = {"--mass", "--stiffness", "--gyro", "--velocity"};
+  int plant_given = 0;
+  for (const std::string* f : plant_flags) plant_given += int(!f->empty());
+  if (plant_given > 0 && plant_given < 4)
+    for (int i = 0; i < 4; ++i)
+      if (plant_flags[i]->empty())
+        throw usage_error("a plant needs --mass, --stiffness, --gyro and --velocity: " + names[i] + " is missing");
+  if (!a.horizon_s.empty() && plant_given == 0) throw usage_error("--horizon-s (seconds) needs a plant (--mass, --stiffness, --gyro, --velocity)");
+  if (!a.horizon_s.empty() && !a.horizon.empty()) throw usage_error("give at most one of --horizon (model time) and --horizon-s (seconds)");
+  u.horizon_text = a.horizon.empty() ? "100" : a.horizon;
+  if (plant_given == 0) {
+    if (!a.qdot0.empty()) u.qdot0 = parse_qdot0(a.qdot0, "--qdot0");
+    return u;
+  }
+  if (!a.qdot0.empty()) throw usage_error("--velocity sets the plant's impulse: drop --qdot0");
+  u.plant = parse_plant(a.mass, a.stiffness, a.gyro, a.velocity, names);
+  check_digits_flag(a.digits, 1, int(app::coupling_digits_max));
+  u.numbers = app::plant_numbers_of(*u.plant, unsigned(a.digits));
+  if (!a.horizon_s.empty()) {
+    u.horizon = app::plant_horizon_of(*u.plant, parse_horizon_time(a.horizon_s, "--horizon-s"), unsigned(a.digits));
+    check_horizon_limits(u.horizon->model, "--horizon-s times omega0");
+    u.horizon_text = a.horizon_s + " s";
+  } else u.horizon_text += " (model time t omega0)";
+  return u;
 }
 
 // The band request of --band/--tolerance: its digits are --band-digits, else --digits.
 app::band_request band_request_of(const coupling_args& a, const std::pair<big_rational, big_rational>& band,
-                                  const horizon_time& T) {
+                                  const horizon_time& T, const unit_choice& u) {
   app::band_request q;
+  q.qdot0 = u.qdot0;
   q.certificate = !a.certificate.empty();
   if (q.certificate) check_output_path(a.certificate);  // before the work
   q.n1 = band.first;
   q.n2 = band.second;
   q.horizon = T;
-  if (!a.below.empty()) q.below = parse_energy_level(a.below, "--below");
+  if (!a.below.empty()) q.below = parse_energy_level(a.below, "--below", u.energy_scale());
   q.digits = unsigned(a.band_digits > 0 ? a.band_digits : a.digits);
   check_flag_range(std::int64_t(q.digits), 1, std::int64_t(report_digits_max), a.band_digits > 0 ? "--band-digits" : "--digits");
   return q;
@@ -276,25 +399,47 @@ std::string band_output(const coupling_args& a, app::band_request& q, const std:
   return out;
 }
 
-std::string run_coupling(const coupling_args& a) {
-  const auto band = band_of(a);
-  if (band && a.n.empty() && a.n2.empty()) {
-    app::band_request q = band_request_of(a, band->ends, parse_horizon_time(a.horizon, "--horizon"));
+// The JSON of the units: "qdot0" (when not 1), or "plant" and the horizon in seconds; the level
+// of --below as given (its "level" is the unit impulse's).
+void units_json(json& j, const coupling_args& a, const unit_choice& u) {
+  if (u.qdot0 != 1) j["qdot0"] = rational_str(u.qdot0);
+  if (u.plant) {
+    j["plant"] = app::plant_json(*u.plant, *u.numbers);
+    j["horizon_s"] = a.horizon_s.empty() ? json(nullptr) : json(a.horizon_s);
+    j["horizon_exact"] = !u.horizon || u.horizon->exact;
+  }
+  if ((u.qdot0 != 1 || u.plant) && j.contains("below")) j["below"]["level_given"] = a.below;
+}
+
+std::string run_coupling(const coupling_args& given) {
+  coupling_args a = given;
+  const unit_choice u = units_of(a);
+  if (a.horizon.empty()) a.horizon = "100";
+  const horizon_time T = u.horizon ? u.horizon->model : parse_horizon_time(a.horizon, "--horizon");
+  if (u.horizon) a.horizon = T.str();  // the model's horizon, as the JSON states it
+  const std::optional<coupling_given> c = coupling_of(a, u);
+  const auto band = band_of(a, c, u);
+  if (band && !c) {
+    app::band_request q = band_request_of(a, band->ends, T, u);
     return band_output(a, q, band->note, "", nullptr);
   }
   // With a band, --certificate is the band's certificate (both guarantees), refused before the work.
   const bool band_certificate = band && !a.certificate.empty();
-  if (a.n.empty() == a.n2.empty()) throw usage_error("give exactly one of N (the coupling) or --n2 P/Q (its square)");
+  if (!c) throw usage_error("give exactly one of N (the coupling), --n2 P/Q (its square) or --pair TAU SIGMA");
   check_digits_flag(a.digits, 1, int(app::coupling_digits_max));
   check_flag_range(a.convergents, 0, std::int64_t(app::coupling_convergents_max), "--convergents");
   app::coupling_request request;
-  request.spec = a.n.empty() ? coupling_spec::from_n2(parse_rational(a.n2, "--n2")) : coupling_spec::from_n(parse_rational(a.n, "N"));
+  request.spec = c->spec;
+  request.qdot0 = u.qdot0;
+  request.plant = u.plant;
   coupling_report_options& opt = request.options;
-  opt.horizon = parse_horizon_time(a.horizon, "--horizon");
-  if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below");
+  opt.horizon = T;
+  if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below", u.energy_scale());
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   request.certificate = !a.certificate.empty() && !band_certificate;
+  if (!a.certificate.empty() && (u.qdot0 != 1 || u.plant))
+    throw usage_error("--certificate states the unit impulse in model units: drop --qdot0 or the plant options, or --certificate");
   if (band_certificate) {
     check_output_path(a.certificate);
     check_band_certificate_horizon(opt.horizon);
@@ -306,13 +451,16 @@ std::string run_coupling(const coupling_args& a) {
   const app::coupling_result result = app::run_coupling(request);
   const coupling_report& r = result.report;
   if (result.certificate) write_file_atomically(a.certificate, coupling_certificate_text(*result.certificate));
-  const json input = a.n.empty() ? json{{"n2", a.n2}} : json{{"n", a.n}};
+  json input = !a.n.empty() ? json{{"n", a.n}} : !a.n2.empty() ? json{{"n2", a.n2}} : json::object();
+  if (!a.pair.empty()) input["pair"] = json::array({a.pair[0], a.pair[1]});
+  if (u.plant) input = json{{"mass", a.mass}, {"stiffness", a.stiffness}, {"gyro", a.gyro}, {"velocity", a.velocity}};
   json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
+  units_json(j, a, u);
   if (band) {
-    app::band_request q = band_request_of(a, band->ends, opt.horizon);
-    return band_output(a, q, band->note, coupling_text(a, r), &j);
+    app::band_request q = band_request_of(a, band->ends, opt.horizon, u);
+    return band_output(a, q, band->note, coupling_text(a, u, r), &j);
   }
-  if (!a.json) return coupling_text(a, r);
+  if (!a.json) return coupling_text(a, u, r);
   return json_dump(j) + "\n";
 }
 
@@ -321,12 +469,19 @@ command_runner install_coupling(CLI::App& app) {
   auto sub = options(app).subcommand("coupling", "Any coupling n: resonance test, min of H_q over a horizon, resonant approximations");
   sub.add("N", a->n, "the coupling n: decimal (0.25, 1e-3) or fraction (1/4)");
   sub.add("--n2", a->n2, "the square n^2 as a fraction or decimal (e.g. 1/12 for n = 1/sqrt(12))");
-  sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi)", show::with_default);
+  sub.add("--pair", a->pair, "TAU SIGMA: the coupling of a resonant pair, n^2 = (tau - sigma)^2/(tau sigma) (e.g. with --tolerance)");
+  sub.add("--qdot0", a->qdot0, "impulse amplitude qdot0 = q'(0) > 0 (exact decimal or fraction; default 1): energies scale by qdot0^2, radii by qdot0, times not");
+  sub.add("--horizon", a->horizon, "horizon T: minimum of H_q over [0, T] (decimal, 1e30, fraction, or 100pi; model time t omega0; default 100)");
+  sub.add("--mass", a->mass, "a physical plant (docs/units.md): the modes' mass m in kg (with --stiffness, --gyro, --velocity; instead of N)");
+  sub.add("--stiffness", a->stiffness, "the plant's stiffness k in N/m");
+  sub.add("--gyro", a->gyro, "the plant's gyroscopic coefficient g in N s/m: n = g/sqrt(m k)");
+  sub.add("--velocity", a->velocity, "the plant's initial velocity q'(0) = V in m/s (an impulse J gives V = J/m): energies in J, times in s");
+  sub.add("--horizon-s", a->horizon_s, "with a plant: the horizon in seconds (instead of --horizon)");
   sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE, or with --band/--tolerance the band's (both guarantees): gyrores check FILE");
   sub.add("--band", a->band, "a band of couplings N1:N2: its absorption and containment guarantees over [0, T], proved (N optional)");
-  sub.add("--tolerance", a->tolerance, "the band n (1 -+ P%) around N or sqrt(--n2), e.g. 1% (n irrational: ends rounded outward)");
+  sub.add("--tolerance", a->tolerance, "the band n (1 -+ P%) around N, sqrt(--n2) or --pair's n, e.g. 1% (n irrational: ends rounded outward)");
   sub.add("--band-digits", a->band_digits, "digits of the band's guarantees (default: --digits)");
-  sub.add("--below", a->below, "level E: the first time H_q <= E (an energy, or a percentage of H_q(0) = 1/2: 1%); with a band, the latest over the band");
+  sub.add("--below", a->below, "level E: the first time H_q <= E (an energy at this qdot0, in J with a plant, or a percentage of H_q(0) = qdot0^2/2: 1%); with a band, the latest over the band");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);
   add_digits_option(sub, a->digits);
   add_json_flag(sub, a->json);

@@ -148,7 +148,7 @@ std::string run_design(const design_args& a) {
 
 command_runner install_design(CLI::App& app) {
   auto a = std::make_shared<design_args>();
-  auto sub = options(app).subcommand("design", "Choose a resonant pair: absorb (min r_res) or contain (max r_res) under a time limit");
+  auto sub = options(app).subcommand("design", "Choose a resonant pair: absorb (min r_res) or contain (max r_res) under a time limit (qdot0 = 1: r_res scales by qdot0, the choice does not; docs/units.md)");
   sub.add("PROBLEM", a->problem, "absorb or contain", show::required);
   sub.add("--tmax", a->tmax, "time limit T (decimal or fraction); constraint time <= T", show::required);
   sub.add("--max-order", a->max_order, "search pairs with tau + sigma <= M (3..5000)", show::with_default);

@@ -100,7 +100,7 @@ std::string run_pareto(const pareto_args& a) {
 
 command_runner install_pareto(CLI::App& app) {
   auto a = std::make_shared<pareto_args>();
-  auto sub = options(app).subcommand("pareto", "Pareto front of (r_res, first-hit time) over resonant pairs");
+  auto sub = options(app).subcommand("pareto", "Pareto front of (r_res, first-hit time) over resonant pairs (qdot0 = 1: r_res scales by qdot0, the front does not; docs/units.md)");
   sub.add("--max-order", a->max_order, "pairs with tau + sigma <= M (3..5000)", show::required);
   sub.add("--orientation", a->orientation, "absorb (min r_res, min time) or contain (max r_res, min time)", show::with_default);
   sub.flag("--proxy", a->proxy, "use the paper's proxy pi/|n| as the time");

@@ -23,6 +23,7 @@ struct band_request {
   horizon_time horizon;           // T >= 0
   std::optional<big_rational> below;  // a level E: the band-wide first time H_q <= E
   unsigned digits = 6;            // of every real, [1, report_digits_max]
+  big_rational qdot0 = 1;         // the impulse: the guarantees times qdot0^2 (below: a unit-impulse level); no certificate
   std::size_t max_intervals = 100000;
   bool certificate = false;       // also the band certificate, from these very proofs (record_cover)
   stop_token stop;

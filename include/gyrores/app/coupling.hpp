@@ -26,7 +26,15 @@ inline constexpr std::size_t coupling_convergents_max = 60;
 struct coupling_request {
   coupling_spec spec;
   coupling_report_options options;  // digits, horizon, below, convergents (<= coupling_convergents_max), stop
-  bool certificate = false;         // also the certificate (T a rational > 0)
+  bool certificate = false;         // also the certificate (T a rational > 0; qdot0 = 1, no plant)
+  // The impulse q'(0) = qdot0 (model/inputs.hpp parse_qdot0): the energies times qdot0^2, the
+  // radii times qdot0, the times unchanged; options.below is a unit-impulse level
+  // (parse_energy_level with the energy scale qdot0^2).
+  big_rational qdot0 = 1;
+  // A physical plant (app/plant.hpp): spec must be its n^2; the horizon values and pi/|n| in
+  // joules and seconds (options.horizon and options.below in model units: plant_horizon_of and
+  // parse_energy_level with the energy scale m V^2); the pair's values stay in model units.
+  std::optional<plant_inputs> plant;
 };
 
 struct coupling_result {

@@ -4,6 +4,8 @@
 //   horizons  "37", "1e30", "5/2", "100pi", "100*pi"   -> horizon_time (exact, or exact times pi)
 //   levels    "1e-3", "1/200", "1%" (of H_q(0) = 1/2)  -> an exact energy E >= 0
 //   bands     "N1:N2"; a tolerance "P%" around n        -> exact ends 0 < n1 < n2
+//   qdot0     "1", "0.1", "1/3" (the impulse amplitude)  -> an exact rational > 0
+//   a plant   mass, stiffness, gyroscopic coefficient, velocity (docs/units.md) -> exact rationals > 0
 // Each value must also lie in the envelope of model/limits.hpp (the checks below, which the
 // parsers and the app layer call): outside it, usage_error with the limit.
 #pragma once
@@ -30,6 +32,32 @@ horizon_time parse_horizon_time(const std::string& text, const std::string& what
 // E as text: an energy (H_q(0) = qdot0^2/2 = 1/2), or a percentage of the initial energy
 // ("1%" is 1/200); usage_error naming `what` for anything else, E < 0 or E outside the limits.
 big_rational parse_energy_level(const std::string& text, const std::string& what);
+
+// The impulse amplitude qdot0 = q'(0) > 0 as text (exact decimal or fraction); usage_error naming
+// `what` unless 10^-100 <= qdot0 <= 10^100.
+big_rational parse_qdot0(const std::string& text, const std::string& what);
+
+// A level as parse_energy_level reads it, at the impulse whose H_q(0) is `energy_scale` times the
+// unit impulse's (qdot0^2, or m V^2 for a plant): the level the theorems take (unit impulse). A
+// percentage is a share of H_q(0), the same at every impulse; an absolute energy E becomes
+// E / energy_scale. The limits apply to that unit level.
+big_rational parse_energy_level(const std::string& text, const std::string& what, const big_rational& energy_scale);
+
+// The coupling of a resonant pair: n^2 = (tau - sigma)^2 / (tau sigma), exactly.
+big_rational pair_coupling_n2(const big_int& tau, const big_int& sigma);
+
+// A physical plant (docs/units.md): two equal-frequency modes with mass m, stiffness k and
+// gyroscopic coefficient g (m q'' + g z' + k q = 0, m z'' - g q' + k z = 0), struck so that
+// q'(0) = V. Every value an exact rational > 0 in SI units (kg, N/m, N s/m, m/s).
+struct plant_inputs {
+  big_rational mass, stiffness, gyro, velocity;
+  big_rational n2() const { return gyro * gyro / (mass * stiffness); }  // n = g / sqrt(m k)
+};
+// Each text parsed as an exact decimal or fraction, usage_error naming its flag (`names`: mass,
+// stiffness, gyro, velocity in that order) unless > 0 and within [10^-100, 10^100]; the coupling
+// n^2 = g^2/(m k) must lie within the coupling limits.
+plant_inputs parse_plant(const std::string& mass, const std::string& stiffness, const std::string& gyro,
+                         const std::string& velocity, const std::string (&names)[4]);
 
 // The envelope (model/limits.hpp), each a usage_error naming `what` and the limit it breaks:
 // T = 0 or 10^-1000 <= T <= 10^1000 (a pi: a within them); 10^-300 <= n^2 <= 10^300; E = 0 or

@@ -5,7 +5,7 @@
 //
 // Every number is proved: the correct rounding of an enclosure (the horizon theorem for the
 // minimum over [0, T] and the first time below a level, the lattice theorem for the pair).
-// Impulse qdot0 = 1 throughout (H_q(0) = 1/2). The horizon reports keep the proofs they
+// Impulse qdot0 = 1 (H_q(0) = 1/2) unless the options scale it (report/scales.hpp). The horizon reports keep the proofs they
 // rounded: `gyrores coupling --certificate` writes its certificate from them (app/coupling.hpp).
 #pragma once
 #include <cstddef>
@@ -29,6 +29,8 @@ struct coupling_report_options {
   std::size_t convergents = 8;           // how many convergents of W1/W2
   stop_token stop;                       // Ctrl-C
   proof_use use = proof_use::report;     // certificate: the horizon proofs made to be certified too
+  report_scales scales;                  // the units of the horizon values and of pi/|n| (below: a unit-impulse level)
+  big_rational pair_qdot0 = 1;           // the impulse of the pair's and the convergents' values
 };
 
 // One convergent p/q of W1/W2: the resonant pair (p, q) when p > q, with its proved values.

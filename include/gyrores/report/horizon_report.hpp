@@ -4,7 +4,8 @@
 // an exact zero, t = 0) are rounded once from their rational. The precision of the proof rises
 // until every rounding is decided, and the report keeps the proof it rounded: a certificate is
 // written from that same proof (certify/horizon_certificate.hpp), never from a second one.
-// Impulse qdot0 = 1 (H_q(0) = 1/2).
+// The proofs are at the impulse qdot0 = 1 (H_q(0) = 1/2); with `scales` (report/scales.hpp) the
+// energies, radius and times are rounded in those units (the share of H_q(0) does not change).
 #pragma once
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 #include <gyrores/core/stop.hpp>
 #include <gyrores/model/coupling.hpp>
 #include <gyrores/model/inputs.hpp>
+#include <gyrores/report/scales.hpp>
 #include <gyrores/theorem/horizon.hpp>
 
 namespace gyrores {
@@ -23,7 +25,7 @@ struct horizon_minimum_report {
   std::optional<horizon_lobe> lobe;  // the lobe of the minimum (none when at the horizon's end)
   proved_real h_min, t_min;          // min of H_q over [0, T] and the first time it is attained
   proved_real r_min;                 // the radius sqrt(2 h_min) = sqrt(q^2 + q'^2) there
-  proved_real h_min_share;           // h_min as a percentage of H_q(0) = 1/2 (report/share.hpp)
+  proved_real h_min_share;           // h_min as a percentage of H_q(0) (report/share.hpp)
 };
 
 // With proof_use::certificate the proof is one a certificate can be written from
@@ -31,7 +33,8 @@ struct horizon_minimum_report {
 // compute_error when the end point ties a lobe value (not decided within tie_bits_cap);
 // interrupted when `stop` is set.
 horizon_minimum_report report_horizon_minimum(const coupling_spec& c, const horizon_time& horizon, unsigned digits,
-                                              stop_token stop = {}, proof_use use = proof_use::report);
+                                              stop_token stop = {}, proof_use use = proof_use::report,
+                                              const report_scales& scales = {});
 
 struct first_below_report {
   unsigned digits = 0;
@@ -42,8 +45,9 @@ struct first_below_report {
   proved_real t_below;               // the first t with H_q(t) <= E (when not never)
 };
 
-// The first time H_q <= E (E >= 0). Throws as report_horizon_minimum.
+// The first time H_q <= E (E >= 0, at the unit impulse). Throws as report_horizon_minimum.
 first_below_report report_first_below(const coupling_spec& c, const big_rational& level, unsigned digits,
-                                      stop_token stop = {}, proof_use use = proof_use::report);
+                                      stop_token stop = {}, proof_use use = proof_use::report,
+                                      const report_scales& scales = {});
 
 }  // namespace gyrores

@@ -11,7 +11,8 @@
 // x) and from the end point R(T); every split point is a coupling with rational n^2, whose minimum
 // the horizon theorem proves. The search stops when the best proved value and the best remaining
 // bound round alike to the digits asked: the extreme is then settled, attained at that coupling
-// (a resonant pair when x is rational). Everything here is in H_q units (R/2), qdot0 = 1.
+// (a resonant pair when x is rational). Everything here is in H_q units (R/2), qdot0 = 1, but for
+// the extremes' reported values when options.energy_scale = qdot0^2 is given.
 #pragma once
 #include <cstddef>
 #include <functional>
@@ -49,6 +50,7 @@ struct band_options {
   unsigned digits = 6;                 // the extremes are settled to this many digits, [1, report_digits_max]
   std::size_t max_intervals = 100000;  // a cap on the intervals of one branch and bound (then: not settled)
   std::optional<big_rational> versus;  // H_q: stop as soon as the extreme is proved on one side of it
+  big_rational energy_scale = 1;       // the extremes are reported and settled as H_q times this (qdot0^2), exactly
   bool record_cover = false;           // keep the final covering of the band (for a certificate)
   stop_token stop;                     // Ctrl-C: the search returns the bracket so far (interrupted)
   std::function<void(const band_progress&)> progress;  // called as the search goes (optional)

@@ -88,6 +88,45 @@ big_rational parse_energy_level(const std::string& given, const std::string& wha
   return e;
 }
 
+namespace {
+
+// A value > 0 within [10^-100, 10^100] (qdot0 and the plant's quantities).
+big_rational parse_positive(const std::string& given, const std::string& what) {
+  const big_rational v = parse_rational(given, what);
+  if (!(v > 0)) throw usage_error(what + " must be > 0, got " + shown_input(given));
+  const long e = 100;
+  if (v > big_rational(pow10(e)) || v < big_rational(big_int(1), pow10(e)))
+    throw usage_error(what + " must lie in [" + power_text(-e) + ", " + power_text(e) + "], got " + magnitude_text(v));
+  check_chars(v, what);
+  return v;
+}
+
+}  // namespace
+
+big_rational parse_qdot0(const std::string& text, const std::string& what) { return parse_positive(text, what); }
+
+big_rational parse_energy_level(const std::string& given, const std::string& what, const big_rational& energy_scale) {
+  if (!given.empty() && given.back() == '%') return parse_energy_level(given, what);
+  big_rational e = parse_rational(given, what);
+  if (e < 0) throw usage_error(what + " must be >= 0, got " + shown_input(given));
+  e /= energy_scale;
+  check_level_limits(e, what + " (at the unit impulse)");
+  return e;
+}
+
+big_rational pair_coupling_n2(const big_int& tau, const big_int& sigma) {
+  const big_int b = tau - sigma;
+  return big_rational(b * b, tau * sigma);
+}
+
+plant_inputs parse_plant(const std::string& mass, const std::string& stiffness, const std::string& gyro,
+                         const std::string& velocity, const std::string (&names)[4]) {
+  plant_inputs p{parse_positive(mass, names[0]), parse_positive(stiffness, names[1]), parse_positive(gyro, names[2]),
+                 parse_positive(velocity, names[3])};
+  check_coupling_limits(p.n2(), "the plant's coupling n^2 = g^2/(m k)");
+  return p;
+}
+
 void check_band(const big_rational& n1, const big_rational& n2, const std::string& what) {
   if (!(n1 > 0) || !(n2 > n1)) throw usage_error(what + " needs 0 < n1 < n2, got " + rational_str(n1) + ":" + rational_str(n2));
 }

@@ -10,7 +10,8 @@ namespace {
 
 // |n| = sqrt(n^2) and pi/|n|, proved: the correct roundings of enclosures (the precision doubles
 // until both ends round alike; sqrt(n^2) is rounded once from the rational when n^2 is a square).
-void prove_coupling_numbers(coupling_report& r, unsigned digits, const stop_token& stop) {
+// pi/|n| is a time: times sqrt(time2) in the report's units (report/scales.hpp).
+void prove_coupling_numbers(coupling_report& r, unsigned digits, const big_rational& time2, const stop_token& stop) {
   const big_rational& n2 = r.spec.n2;
   big_int rp, rq;
   const bool rational = int_is_square(big_int(numerator(n2)), rp) && int_is_square(big_int(denominator(n2)), rq);
@@ -21,6 +22,12 @@ void prove_coupling_numbers(coupling_report& r, unsigned digits, const stop_toke
            mpfi_sqrt(n, n);
            mpfi_const_pi(t);
            mpfi_div(t, t, n);
+           if (time2 != 1) {
+             fixed_mpfi k(bits);
+             mpfi_set_q(k, time2.backend().data());
+             mpfi_sqrt(k, k);
+             mpfi_mul(t, t, k);
+           }
            auto abs_n = rational ? enclosure::exact(big_rational(rp, rq)).rounded(digits) : enclosure(n).rounded(digits);
            auto t_min = enclosure(t).rounded(digits);
            if (!abs_n || !t_min) {
@@ -49,8 +56,9 @@ void set_infimum(coupling_report& r) {
 }
 
 // A pair's values as design, Pareto and coupling list them (no asymptotics), stoppable.
-pair_report pair_values(const resonant_pair<big_int>& p, unsigned digits, const stop_token& stop) {
+pair_report pair_values(const resonant_pair<big_int>& p, unsigned digits, const big_rational& qdot0, const stop_token& stop) {
   pair_report_options o;
+  o.qdot0 = qdot0;
   o.digits = digits;
   o.asymptotics = false;
   o.enclosures = true;  // as prove_pair_values
@@ -59,13 +67,13 @@ pair_report pair_values(const resonant_pair<big_int>& p, unsigned digits, const 
 }
 
 std::vector<coupling_convergent> proved_convergents(const coupling_spec& spec, std::size_t count, unsigned digits,
-                                                    const stop_token& stop) {
+                                                    const big_rational& qdot0, const stop_token& stop) {
   std::vector<coupling_convergent> out;
   for (auto& c : coupling_convergents(spec, count)) {
     coupling_convergent row{c, std::nullopt, std::nullopt};
     if (c.p > c.q) {
       row.pair = resonant_pair<big_int>(c.p, c.q);
-      row.values = pair_values(*row.pair, digits, stop);
+      row.values = pair_values(*row.pair, digits, qdot0, stop);
     }
     out.push_back(row);
   }
@@ -82,12 +90,12 @@ coupling_report analyse_coupling(const coupling_spec& spec, const coupling_repor
   r.spec = spec;
   r.n_negative = spec.n && *spec.n < 0;
   r.pair = coupling_resonant_pair(spec);
-  if (r.pair) r.pair_values = pair_values(*r.pair, opt.digits, opt.stop);
-  prove_coupling_numbers(r, opt.digits, opt.stop);
-  r.horizon = report_horizon_minimum(spec, opt.horizon, opt.digits, opt.stop, opt.use);
-  if (opt.below) r.below = report_first_below(spec, *opt.below, opt.digits, opt.stop, opt.use);
+  if (r.pair) r.pair_values = pair_values(*r.pair, opt.digits, opt.pair_qdot0, opt.stop);
+  prove_coupling_numbers(r, opt.digits, opt.scales.time2, opt.stop);
+  r.horizon = report_horizon_minimum(spec, opt.horizon, opt.digits, opt.stop, opt.use, opt.scales);
+  if (opt.below) r.below = report_first_below(spec, *opt.below, opt.digits, opt.stop, opt.use, opt.scales);
   set_infimum(r);
-  r.convergents = proved_convergents(spec, opt.convergents, opt.digits, opt.stop);
+  r.convergents = proved_convergents(spec, opt.convergents, opt.digits, opt.pair_qdot0, opt.stop);
   return r;
 }
 

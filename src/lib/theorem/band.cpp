@@ -240,7 +240,7 @@ fraction search::middle(const interval& J) const {
 }
 
 bool search::settled(const big_rational& lo, const big_rational& hi) const {
-  const enclosure e = band_detail::enclosure_of_rationals(lo / 2, hi / 2);
+  const enclosure e = band_detail::enclosure_of_rationals(lo * opt_.energy_scale / 2, hi * opt_.energy_scale / 2);
   return e.rounded(opt_.digits).has_value();
 }
 
@@ -259,12 +259,12 @@ band_extreme search::result(const big_rational& lo, const big_rational& hi, bool
     std::sort(r.cover.begin(), r.cover.end(),
               [](const band_cover_interval& u, const band_cover_interval& v) { return less_than(u.a.x, v.a.x); });
   }
-  r.value = band_detail::enclosure_of_rationals(lo / 2, hi / 2);
+  r.value = band_detail::enclosure_of_rationals(lo * opt_.energy_scale / 2, hi * opt_.energy_scale / 2);
   r.settled = !interrupted && why.empty() && r.value.rounded(opt_.digits).has_value();
   r.interrupted = interrupted;
   r.unsettled_reason = why;
   r.at = best_at_;
-  r.at_value = band_detail::enclosure_of_rationals(best_lo_ / 2, best_hi_ / 2);
+  r.at_value = band_detail::enclosure_of_rationals(best_lo_ * opt_.energy_scale / 2, best_hi_ * opt_.energy_scale / 2);
   r.intervals = intervals_;
   r.couplings = couplings_;
   return r;
@@ -289,7 +289,7 @@ band_extreme search::run() {
     const big_rational hi = absorption() ? (top > best_hi_ ? top : best_hi_) : best_hi_;
     if (opt_.progress) {
       band_progress p{absorption() ? "absorption" : "containment", intervals_, couplings_,
-                      (lo / 2).convert_to<double>(), (hi / 2).convert_to<double>()};
+                      (lo * opt_.energy_scale / 2).convert_to<double>(), (hi * opt_.energy_scale / 2).convert_to<double>()};
       opt_.progress(p);
     }
     if (!absorption() && best_hi_ == 0) return finish(0, 0, false, "");  // an exact zero: B = 0
@@ -462,6 +462,7 @@ void first_below_search(const big_rational& n1, const big_rational& n2, const bi
   band_options decide = opt;
   decide.versus = E;
   decide.progress = nullptr;
+  decide.energy_scale = 1;  // compared with E, a unit-impulse level
   // W(T) <= E decided at T; the search's witness raises the lower end when it is not.
   const auto drains_by = [&](const big_rational& T) {
     const slong bits = std::max(prec, start_bits(opt.digits, n2 * n2, horizon_time(T)));

@@ -1,0 +1,25 @@
+// include/gyrores/report/scales.hpp: proved values in the user's units.
+#include <gyrores/report/scales.hpp>
+
+#include <algorithm>
+
+#include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/report/share.hpp>
+
+namespace gyrores {
+
+enclosure scaled_sqrt(const enclosure& e, const big_rational& k2, mpfr_prec_t bits) {
+  big_int rp, rq;
+  if (int_is_square(big_int(numerator(k2)), rp) && int_is_square(big_int(denominator(k2)), rq))
+    return scaled(e, big_rational(rp, rq));
+  const mpfr_prec_t prec = (e.is_exact() ? bits : std::max(mpfr_get_prec(e.lo()), mpfr_get_prec(e.hi()))) + 64;
+  fixed_mpfi v(prec), k(prec);
+  if (e.is_exact()) mpfi_set_q(v, e.lo_rational().backend().data());
+  else mpfi_interv_fr(v, e.lo(), e.hi());
+  mpfi_set_q(k, k2.backend().data());
+  mpfi_sqrt(k, k);
+  mpfi_mul(v, v, k);
+  return enclosure(v);
+}
+
+}  // namespace gyrores

@@ -1,0 +1,191 @@
+// Consistent flags and physical units (docs/units.md): --qdot0 on coupling (energies times
+// qdot0^2, radii times qdot0, times unchanged, an absolute level at that impulse), --pair with
+// --tolerance, and a physical plant (--mass, --stiffness, --gyro, --velocity): energies in J and
+// times in s. The references are independent of the code under test: the dimensionless answers
+// scaled by hand at 200 bits (Boost's MPFR type), and a direct RK4 simulation of the dimensional
+// equations m q'' + g z' + k q = 0, m z'' - g q' + k z = 0.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <boost/multiprecision/mpfr.hpp>
+#include <cmath>
+#include <string>
+
+#include "cli_checks.hpp"
+#include "testing/cli_run.hpp"
+
+using gyrores::test::check_rejected;
+using gyrores::test::cli_available;
+using gyrores::test::cli_json;
+using gyrores::test::cli_run;
+using big_real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>>;
+
+namespace {
+
+big_real real_of(const std::string& text) {
+  big_real v;
+  v.precision(70);
+  v = big_real(text);
+  return v;
+}
+
+// `shown` (a correct rounding to `digits` digits) is within half a unit of its last digit of `exact`.
+bool rounds_from(const std::string& shown, const big_real& exact, int digits) {
+  const big_real s = real_of(shown);
+  if (exact == 0) return s == 0;
+  const big_real e = floor(log10(abs(exact)));
+  const big_real half_ulp = pow(big_real(10), e - (digits - 1)) / 2;
+  return abs(s - exact) <= half_ulp * big_real("1.0000001");
+}
+
+// The dimensional plant integrated by RK4 with step dt over [0, T_s]: the least energy of mode q,
+// (m q'^2 + k q^2)/2, and the first time it is attained (sampled at the steps).
+struct simulated {
+  double e_min = 0, t_min = 0;
+};
+simulated simulate(double m, double k, double g, double V, double Ts, double dt) {
+  double s[4] = {0, V, 0, 0};  // q, q', z, z'
+  const auto f = [&](const double* x, double* d) {
+    d[0] = x[1];
+    d[1] = -(g * x[3] + k * x[0]) / m;
+    d[2] = x[3];
+    d[3] = (g * x[1] - k * x[2]) / m;
+  };
+  simulated out{m * V * V / 2, 0};
+  const long steps = long(std::llround(Ts / dt));
+  for (long i = 1; i <= steps; ++i) {
+    double k1[4], k2[4], k3[4], k4[4], t[4];
+    f(s, k1);
+    for (int j = 0; j < 4; ++j) t[j] = s[j] + dt / 2 * k1[j];
+    f(t, k2);
+    for (int j = 0; j < 4; ++j) t[j] = s[j] + dt / 2 * k2[j];
+    f(t, k3);
+    for (int j = 0; j < 4; ++j) t[j] = s[j] + dt * k3[j];
+    f(t, k4);
+    for (int j = 0; j < 4; ++j) s[j] += dt / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+    const double e = (m * s[1] * s[1] + k * s[0] * s[0]) / 2;
+    if (e < out.e_min) out = {e, double(i) * dt};
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("units: --qdot0 scales energies by qdot0^2 and radii by qdot0, not times", "[units][cli]") {
+  if (!cli_available()) return;
+  const auto unit = cli_json("coupling 2 --horizon 37 --below 1e-3 --digits 40 --json --convergents 0");
+  const auto q = cli_json("coupling 2 --horizon 37 --qdot0 3/7 --below 9/49000 --digits 20 --json --convergents 0");
+  const big_real v = real_of("3") / 7;
+  CHECK(rounds_from(q["h_min_horizon"], real_of(unit["h_min_horizon"]) * v * v, 20));
+  CHECK(rounds_from(q["r_min_horizon"], real_of(unit["r_min_horizon"]) * v, 20));
+  CHECK(rounds_from(q["t_min_horizon"], real_of(unit["t_min_horizon"]), 20));
+  // The level 9/49000 at qdot0 = 3/7 is 1e-3 at the unit impulse: the same first time.
+  CHECK(rounds_from(q["t_below"], real_of(unit["t_below"]), 20));
+  CHECK(q["qdot0"] == "3/7");
+  CHECK(q["below"]["level"] == "1/1000");
+  // Must fail: the energy scaled by qdot0 (not its square) is another number.
+  CHECK_FALSE(rounds_from(q["h_min_horizon"], real_of(unit["h_min_horizon"]) * v, 20));
+  // A percentage is a share of H_q(0) at every impulse: the same first time.
+  const auto p1 = cli_json("coupling 2 --horizon 37 --below 1% --json --convergents 0");
+  const auto p2 = cli_json("coupling 2 --horizon 37 --below 1% --qdot0 5 --json --convergents 0");
+  CHECK(p1["t_below"] == p2["t_below"]);
+  // qdot0 = 1 given is the default, byte for byte.
+  CHECK(cli_run("coupling --n2 1/12 --qdot0 1").out == cli_run("coupling --n2 1/12").out);
+  // A resonant coupling's pair values take the impulse too (as gyrores pair --qdot0).
+  const auto r = cli_json("coupling --n2 1/30 --qdot0 2 --json --convergents 0");
+  const auto pr = cli_json("pair 6 5 --qdot0 2 --json --digits 12");
+  CHECK(r["pair_analysis"]["r_res"] == pr["r_res"]);
+  check_rejected("coupling 2 --qdot0 0", 2, "--qdot0");
+  check_rejected("coupling 2 --qdot0 -1", 2, "--qdot0");
+  check_rejected("coupling 2 --qdot0 2 --certificate c.json", 2, "--certificate");
+}
+
+TEST_CASE("units: --qdot0 with a band scales its guarantees by qdot0^2", "[units][cli]") {
+  if (!cli_available()) return;
+  const auto a = cli_json("coupling --band 0.5:0.6 --horizon 20 --json --digits 30");
+  const auto b = cli_json("coupling --band 0.5:0.6 --horizon 20 --json --qdot0 2 --digits 12");
+  CHECK(rounds_from(b["band"]["absorption"]["h_min"], real_of(a["band"]["absorption"]["h_min"]) * 4, 12));
+  CHECK(rounds_from(b["band"]["containment"]["h_min"], real_of(a["band"]["containment"]["h_min"]) * 4, 12));
+}
+
+TEST_CASE("units: --pair with --tolerance is the band around the pair's exact coupling", "[units][cli]") {
+  if (!cli_available()) return;
+  // (6, 5): n^2 = 1/30 exactly.
+  const auto p = cli_json("coupling --pair 6 5 --tolerance 1% --horizon 20 --json --convergents 0 --quiet");
+  const auto n = cli_json("coupling --n2 1/30 --tolerance 1% --horizon 20 --json --convergents 0 --quiet");
+  CHECK(p["n2"] == "1/30");
+  CHECK(p["band"]["n1"] == n["band"]["n1"]);
+  CHECK(p["band"]["n2"] == n["band"]["n2"]);
+  CHECK(p["band"]["absorption"]["h_min"] == n["band"]["absorption"]["h_min"]);
+  CHECK(p["input"]["pair"] == nlohmann::json::array({"6", "5"}));
+  check_rejected("coupling --pair 6 --tolerance 1%", 2, "--pair");
+  check_rejected("coupling --pair 6 4 --tolerance 1%", 2);
+  check_rejected("coupling 0.2 --pair 6 5", 2, "exactly one");
+}
+
+TEST_CASE("units: a plant in joules and seconds, against a simulation of the dimensional equations", "[units][cli]") {
+  if (!cli_available()) return;
+  struct plant_case {
+    const char* m;
+    const char* k;
+    const char* g;
+    const char* V;
+    const char* Ts;
+    bool exact_horizon;
+  };
+  for (const auto& c : {plant_case{"0.5", "200", "4", "0.1", "2", true}, plant_case{"0.3", "200", "3", "0.2", "1.5", false}}) {
+    const std::string plant = std::string("--mass ") + c.m + " --stiffness " + c.k + " --gyro " + c.g + " --velocity " + c.V;
+    INFO(plant);
+    const auto j = cli_json("coupling " + plant + " --horizon-s " + c.Ts + " --json --convergents 0");
+    const double m = std::stod(c.m), k = std::stod(c.k), g = std::stod(c.g), V = std::stod(c.V);
+    CHECK(j["horizon_exact"] == c.exact_horizon);
+    const simulated s = simulate(m, k, g, V, std::stod(c.Ts), 1e-6);
+    const double e = std::stod(j["h_min_horizon"].get<std::string>()), t = std::stod(j["t_min_horizon"].get<std::string>());
+    CHECK(std::abs(e - s.e_min) <= 1e-6 * m * V * V);
+    CHECK(std::abs(t - s.t_min) <= 2e-6);
+    // The scaling by hand at 200 bits: t_s = t sqrt(m/k), E = m V^2 H_q, amplitude V sqrt(m/k) r.
+    const auto u = cli_json("coupling --n2 " + j["n2"].get<std::string>() + " --horizon " + j["horizon"].get<std::string>() +
+                            " --json --digits 40 --convergents 0");
+    const big_real bm = real_of(c.m), bk = real_of(c.k), bV = real_of(c.V);
+    CHECK(rounds_from(j["t_min_horizon"], real_of(u["t_min_horizon"]) * sqrt(bm / bk), 12));
+    CHECK(rounds_from(j["h_min_horizon"], real_of(u["h_min_horizon"]) * bm * bV * bV, 12));
+    CHECK(rounds_from(j["r_min_horizon"], real_of(u["r_min_horizon"]) * bV * sqrt(bm / bk), 12));
+    CHECK(rounds_from(j["t_min_paper"], real_of(u["t_min_paper"]) * sqrt(bm / bk), 12));
+    // Must fail: time scaled by sqrt(k/m) instead.
+    CHECK_FALSE(rounds_from(j["t_min_horizon"], real_of(u["t_min_horizon"]) * sqrt(bk / bm), 12));
+    CHECK(j["plant"]["units"]["time"] == "s");
+  }
+  // n^2 = g^2/(m k) exactly; omega0 = 20 rad/s, 1/omega0 = 0.05 s, H_q(0) = m V^2/2 = 1/400 J.
+  const auto j = cli_json("coupling --mass 0.5 --stiffness 200 --gyro 4 --velocity 0.1 --json --convergents 0");
+  CHECK(j["n2"] == "4/25");
+  CHECK(j["plant"]["omega0"] == "2.00000000000e+01");
+  CHECK(j["plant"]["time_scale"] == "5.00000000000e-02");
+  CHECK(j["plant"]["h_q0"] == "1/400");
+  // --below in joules: 1e-5 J is the unit-impulse level 1e-5 / (m V^2) = 1/500.
+  const auto b = cli_json("coupling --mass 0.5 --stiffness 200 --gyro 4 --velocity 0.1 --below 1e-5 --json --convergents 0");
+  CHECK(b["below"]["level"] == "1/500");
+  const auto ub = cli_json("coupling --n2 4/25 --below 1/500 --json --convergents 0 --digits 40");
+  CHECK(rounds_from(b["t_below"], real_of(ub["t_below"]) / 20, 12));
+  // The text says the units.
+  const auto text = cli_run("coupling --mass 0.5 --stiffness 200 --gyro 4 --velocity 0.1 --horizon-s 2").out;
+  CHECK(text.find(" rad/s") != std::string::npos);
+  CHECK(text.find(" J  (") != std::string::npos);
+  CHECK(text.find("first at t =  ") != std::string::npos);
+  CHECK(text.find(" s\n") != std::string::npos);
+}
+
+TEST_CASE("units: bad plant inputs are refused with one line and exit 2", "[units][cli]") {
+  if (!cli_available()) return;
+  const std::string ok = " --stiffness 200 --gyro 4 --velocity 0.1";
+  check_rejected("coupling --mass -0.5" + ok, 2, "--mass");
+  check_rejected("coupling --mass 0" + ok, 2, "--mass");
+  check_rejected("coupling --mass 0.5 --stiffness 0 --gyro 4 --velocity 0.1", 2, "--stiffness");
+  check_rejected("coupling --mass 0.5 --stiffness 200 --gyro 4", 2, "--velocity is missing");
+  check_rejected("coupling 0.4 --mass 0.5" + ok, 2, "drop N");
+  check_rejected("coupling --n2 4/25 --mass 0.5" + ok, 2, "drop --n2");
+  check_rejected("coupling --mass 0.5" + ok + " --qdot0 2", 2, "--qdot0");
+  check_rejected("coupling --mass 0.5" + ok + " --tolerance 1%", 2, "--tolerance");
+  check_rejected("coupling --mass 0.5" + ok + " --horizon 3 --horizon-s 2", 2, "--horizon-s");
+  check_rejected("coupling 0.4 --horizon-s 2", 2, "--horizon-s");
+  check_rejected("coupling --mass abc" + ok, 2, "--mass");
+}
