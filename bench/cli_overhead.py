@@ -190,12 +190,13 @@ def markdown(a, sweeps, pair):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--build", default="build")
+    ap.add_argument("--cli", help="the gyrores binary to measure (default: BUILD/src/gyrores; e.g. an older one)")
     ap.add_argument("--orders", default="3000,5000,8000")
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--start-runs", type=int, default=41)
     ap.add_argument("--markdown", help="write the section to this file (else stdout only)")
     a = ap.parse_args()
-    a.cli = os.path.abspath(os.path.join(a.build, "src", "gyrores"))
+    a.cli = os.path.abspath(a.cli or os.path.join(a.build, "src", "gyrores"))
     a.limit = os.path.abspath(os.path.join(a.build, "bench", "gyrores-sweep-limit"))
     a.bare = os.path.abspath(os.path.join(a.build, "bench", "gyrores-bare-start"))
     for p in (a.cli, a.limit, a.bare):
