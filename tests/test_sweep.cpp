@@ -1015,6 +1015,42 @@ TEST_CASE("sweep: values spilled to the state's file give the in-memory summary,
   }
 }
 
+TEST_CASE("sweep: values kept in memory through checkpoints and resumes give the same summary", "[sweep]") {
+  // A run within the memory budget writes its values only at checkpoints and keeps them in
+  // memory: here a checkpoint after every block, and stops and resumes (the resumed runs read
+  // the earlier runs' values from the state's file and keep their own in memory).
+  temp_dir d("test_sweep_mem");
+  const sweep_config c = config(60);
+  sweep_files mem;
+  mem.summary_path = d / "mem.json";
+  REQUIRE(app::sweep_to_files<double>(c, mem, engine(2)).complete);
+  const json want = sweep_summary_core(read_json(mem.summary_path));
+  REQUIRE(want.at("t_first_over_proxy").at("count").get<std::uint64_t>() > 400);
+
+  sweep_files f;
+  f.summary_path = d / "checkpointed.json";
+  f.checkpoint_seconds = 1e-9;  // after every block
+  REQUIRE(f.values_in_memory >= (std::size_t(1) << 20));  // the default budget holds this run
+  auto e = engine(2, 16);
+  e.max_pairs = 200;
+  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
+  const std::string values = sweep_default_state_path(f) + ".values";
+  REQUIRE(path_exists(values));
+  f.resume = true;
+  REQUIRE_FALSE(app::sweep_to_files<double>(c, f, e).complete);
+  e.max_pairs = 0;
+  REQUIRE(app::sweep_to_files<double>(c, f, e).complete);
+  CHECK(sweep_summary_core(read_json(f.summary_path)) == want);
+  CHECK_FALSE(path_exists(values));
+
+  // And in one run with a checkpoint after every block: the file written, memory read.
+  sweep_files g;
+  g.summary_path = d / "one_run.json";
+  g.checkpoint_seconds = 1e-9;
+  REQUIRE(app::sweep_to_files<double>(c, g, engine(2, 16)).complete);
+  CHECK(sweep_summary_core(read_json(g.summary_path)) == want);
+}
+
 // ---- the fast path without rows (src/lib/sweep/fast.cpp) ----
 
 namespace {

@@ -17,6 +17,10 @@
 
 namespace gyrores {
 
+// The default memory budget of a sweep's values: 2^27 values (1 GiB), or an eighth of the
+// machine's physical memory if that is less (at least 2^20 values, 8 MB).
+std::size_t sweep_default_values_in_memory();
+
 struct sweep_files {
   std::string rows_path;  // empty: no rows
   sweep_format rows_format = sweep_format::csv;
@@ -29,8 +33,11 @@ struct sweep_files {
   // the reason) instead of refused, for a state path nobody named (./gyrores-sweep.resume).
   std::function<void(const std::string&)> on_lock_wait;
   double checkpoint_seconds = 300;  // periodic checkpoints (0: only when stopping early)
-  // t_first/proxy values held in memory before they go to the state's values file (8 MB).
-  std::size_t values_in_memory = std::size_t(1) << 20;
+  // The memory budget of the t_first/proxy values, in values (8 bytes each): a run with at most
+  // this many pairs holds its values in memory and the quantiles read them there; a larger one
+  // (or one holding more than this many at once) writes them to the state's values file as they
+  // pile up, and the quantiles read them back from it (docs/formats.md, "Quantiles").
+  std::size_t values_in_memory = sweep_default_values_in_memory();
 };
 
 struct sweep_progress_info {
@@ -76,6 +83,7 @@ class sweep_file_session {
   void restore_values(std::uint64_t count);
   void check_state_counts(std::uint64_t values_count) const;
   void check_rows_boundary() const;
+  void write_values();
   void spill_values();
   void finish_complete(unsigned threads, sweep_report& rep);
   double elapsed() const;
@@ -88,10 +96,14 @@ class sweep_file_session {
   std::string state_, values_, rows_part_;
   bool rows_;
   append_file rows_file_;
-  append_file values_file_;  // the state's values file: acc_'s values go there as they pile up
+  append_file values_file_;  // the state's values file: at checkpoints, and beyond the budget
   sweep_accumulator acc_;
   std::uint64_t total_ = 0, start_ = 0, done_ = 0;
-  std::uint64_t values_written_ = 0;  // values in the values file (acc_.t_ratios holds the rest)
+  // The values are numbered in enumeration order. The values file holds [0, values_written_);
+  // acc_.t_ratios' memory holds [memory_first_, memory_first_ + its size), memory_first_ <=
+  // values_written_: a checkpoint writes the values in memory but keeps them there.
+  std::uint64_t values_written_ = 0, memory_first_ = 0;
+  std::size_t spill_at_ = 0;  // values in memory that go to the file (the budget, or 2^20)
   std::uint64_t rows_bytes_ = 0;      // bytes of rows_part holding whole, delivered blocks
   double seconds_before_ = 0, last_checkpoint_ = 0;
   sweep_pair_id last_{0, 0};

@@ -42,6 +42,8 @@ class sweep_values {
   // Room for n more values in memory (a block knows how many it will add).
   void reserve(std::size_t n) { memory_.reserve(memory_.size() + n); }
   std::uint64_t size() const { return elsewhere_ + memory_.size(); }
+  // Every value is in memory (no source).
+  bool in_memory() const { return sources_.empty(); }
   // The values not handed to a source yet.
   const std::vector<double>& memory() const { return memory_; }
   // The owner has stored the values in memory elsewhere (and will add a source for them). The
