@@ -145,7 +145,9 @@ std::string coupling_text(const coupling_args& a, const unit_choice& u, const co
      << "\n";
   if (r.below) {
     const first_below_report& b = *r.below;
-    os << "first time H_q <= " << a.below << u.energy_unit() << ":\n";
+    // A percentage is a share of H_q(0) in any units; only an absolute level carries the unit.
+    const bool share = !a.below.empty() && a.below.back() == '%';
+    os << "first time H_q <= " << a.below << (share ? (u.plant ? " of H_q(0)" : "") : u.energy_unit()) << ":\n";
     if (b.never) os << "  never         " << b.reason << "\n";
     else os << "  t =           " << plain(b.t_below) << u.time_unit() << "\n  because       " << b.reason << "\n";
   }
