@@ -21,7 +21,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
-#include <set>
+#include <array>
 #include <stdexcept>
 #include <vector>
 
@@ -54,8 +54,8 @@ struct certificate {
   bracket u_star, r_res, theta_first, t_first;
 };
 
-const std::set<std::string> top_keys{"format", "theorem", "tau", "sigma", "digits", "degenerate", "m_min",
-                                     "minimiser_count", "minimiser_lobes", "u_star", "claims"};
+constexpr std::array<std::string_view, 11> top_keys{"format", "theorem", "tau", "sigma", "digits", "degenerate",
+                                                    "m_min", "minimiser_count", "minimiser_lobes", "u_star", "claims"};
 
 certificate read(const std::string& text) {
   json j;
@@ -68,9 +68,9 @@ certificate read(const std::string& text) {
   }
   if (!j.is_object()) throw malformed("not a JSON object");
   for (auto it = j.begin(); it != j.end(); ++it)
-    if (!top_keys.count(it.key())) throw malformed("unknown field '" + it.key() + "'");
-  for (const auto& key : top_keys)
-    if (!j.contains(key)) throw malformed("missing field '" + key + "'");
+    if (std::count(top_keys.begin(), top_keys.end(), it.key()) == 0) throw malformed("unknown field '" + it.key() + "'");
+  for (const std::string_view key : top_keys)
+    if (!j.contains(key)) throw malformed("missing field '" + std::string(key) + "'");
   if (j["format"] != "gyrores-certificate/2") throw malformed("format is not gyrores-certificate/2");
   if (j["theorem"] != "lattice-theorem/1") throw fails("theorem is not lattice-theorem/1 (the one this checker knows)");
   certificate c;

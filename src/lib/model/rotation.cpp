@@ -8,9 +8,17 @@
 namespace gyrores {
 namespace {
 
-const quadratic_number one(1), half(1, 2);
+// Built on first use, not at start-up: every run of the command would pay for them otherwise.
+const quadratic_number& one() {
+  static const quadratic_number v(1);
+  return v;
+}
+const quadratic_number& half() {
+  static const quadratic_number v(1, 2);
+  return v;
+}
 
-bool in_unit_interval(const quadratic_number& v) { return v.sign() >= 0 && v < one; }
+bool in_unit_interval(const quadratic_number& v) { return v.sign() >= 0 && v < one(); }
 
 void check_arguments(const quadratic_number& alpha, const quadratic_number& beta, const big_int& K, const char* what) {
   if (!in_unit_interval(alpha) || !in_unit_interval(beta))
@@ -39,7 +47,7 @@ rotation_minimum min_frac(quadratic_number alpha, quadratic_number beta, big_int
       result = best;
       break;
     }
-    if (alpha + alpha <= one) {
+    if (alpha + alpha <= one()) {
       // Runs start where y_k crosses an integer j = 1..J: k_j = ceil((j - beta)/alpha), with
       // {y_{k_j}} = alpha {j alpha1 + beta1}. Candidates: k = 0 and the k_j.
       const big_int J = (quadratic_number(K) * alpha + beta).floor();
@@ -47,7 +55,7 @@ rotation_minimum min_frac(quadratic_number alpha, quadratic_number beta, big_int
         result = best;
         break;
       }
-      const quadratic_number alpha1 = (-(one / alpha)).frac(), beta1 = (beta / alpha).frac();
+      const quadratic_number alpha1 = (-(one() / alpha)).frac(), beta1 = (beta / alpha).frac();
       levels.push_back({true, alpha, beta, best});
       beta = (alpha1 + beta1).frac();
       alpha = alpha1;
@@ -57,7 +65,7 @@ rotation_minimum min_frac(quadratic_number alpha, quadratic_number beta, big_int
     // alpha > 1/2: with g = 1 - alpha, y_k = beta - k g (mod 1) decreases; a run ends at
     // k_j = floor((beta + j)/g), j = 0..J', with {y_{k_j}} = g {j alpha1 + beta1}; the run cut by K
     // ends at K itself.
-    const quadratic_number g = one - alpha;
+    const quadratic_number g = one() - alpha;
     best = {(beta - quadratic_number(K) * g).frac(), K};
     const big_int Jp = (quadratic_number(big_int(K + 1)) * g - beta).ceil() - 1;
     if (Jp < 0) {
@@ -65,7 +73,7 @@ rotation_minimum min_frac(quadratic_number alpha, quadratic_number beta, big_int
       break;
     }
     levels.push_back({false, g, beta, best});
-    alpha = (one / g).frac();
+    alpha = (one() / g).frac();
     beta = (beta / g).frac();
     K = Jp;
   }
@@ -104,15 +112,15 @@ std::optional<big_int> first_frac(quadratic_number alpha, quadratic_number beta,
       break;
     }
     if (K == 0 || alpha.sign() == 0) break;
-    if (alpha + alpha <= one) {
+    if (alpha + alpha <= one()) {
       // A run hits [0, w] iff its first element does (values increase along a run).
       const big_int J = (quadratic_number(K) * alpha + beta).floor();
       if (J < 1) break;
       if (!(w < alpha)) {  // the first run's first element {alpha + beta - 1} < alpha <= w
-        result = ((one - beta) / alpha).ceil();
+        result = ((one() - beta) / alpha).ceil();
         break;
       }
-      const quadratic_number alpha1 = (-(one / alpha)).frac(), beta1 = (beta / alpha).frac();
+      const quadratic_number alpha1 = (-(one() / alpha)).frac(), beta1 = (beta / alpha).frac();
       levels.push_back({true, alpha, beta, w, 0, 0});
       beta = (alpha1 + beta1).frac();
       w = w / alpha;
@@ -122,7 +130,7 @@ std::optional<big_int> first_frac(quadratic_number alpha, quadratic_number beta,
     }
     // alpha > 1/2: values decrease along a run; the first run whose last element is <= w holds the
     // first hit, at its first element <= w: k = max(run start, ceil((beta + j - w)/g)).
-    const quadratic_number g = one - alpha;
+    const quadratic_number g = one() - alpha;
     const big_int Jp = (quadratic_number(big_int(K + 1)) * g - beta).ceil() - 1;
     levels.push_back({false, g, beta, w, K, Jp});
     if (Jp < 0) break;      // only the run cut by K (resolved on the way up)
@@ -130,7 +138,7 @@ std::optional<big_int> first_frac(quadratic_number alpha, quadratic_number beta,
       result = big_int(0);  // j = 0, lifted by this level
       break;
     }
-    alpha = (one / g).frac();
+    alpha = (one() / g).frac();
     beta = (beta / g).frac();
     w = w / g;
     K = Jp;
@@ -162,7 +170,7 @@ std::optional<big_int> first_frac(quadratic_number alpha, quadratic_number beta,
 }
 
 void check_x(const quadratic_number& x, const char* what) {
-  if (!(x.sign() > 0 && x < one)) throw usage_error(std::string(what) + ": x must lie in (0, 1)");
+  if (!(x.sign() > 0 && x < one())) throw usage_error(std::string(what) + ": x must lie in (0, 1)");
 }
 
 }  // namespace
@@ -184,7 +192,7 @@ rotation_minimum min_distance_to_half(const quadratic_number& x, const big_int& 
   check_x(x, "min_distance_to_half");
   if (K < 0) throw usage_error("min_distance_to_half: K must be >= 0");
   // ||k x - 1/2|| = min({k x + 1/2}, {k (1 - x) + 1/2}): the two one-sided problems.
-  const rotation_minimum up = min_frac(x, half, K, stop), down = min_frac(one - x, half, K, stop);
+  const rotation_minimum up = min_frac(x, half(), K, stop), down = min_frac(one() - x, half(), K, stop);
   if (up.value < down.value) return up;
   if (down.value < up.value) return down;
   return up.k <= down.k ? up : down;
@@ -195,19 +203,19 @@ std::optional<big_int> first_distance_to_half_at_most(const quadratic_number& x,
   check_x(x, "first_distance_to_half_at_most");
   if (K < 0) throw usage_error("first_distance_to_half_at_most: K must be >= 0");
   if (delta.sign() < 0) throw usage_error("first_distance_to_half_at_most: delta must be >= 0");
-  if (delta >= half) return big_int(0);
+  if (delta >= half()) return big_int(0);
   // ||y|| <= delta  <=>  {y + delta} <= 2 delta, with y = k x - 1/2.
-  return first_frac(x, (half + delta).frac(), delta + delta, K, stop);
+  return first_frac(x, (half() + delta).frac(), delta + delta, K, stop);
 }
 
 quadratic_number distance_to_half(const quadratic_number& x, const big_int& k) {
-  const quadratic_number f = (quadratic_number(k) * x - half).frac();
-  const quadratic_number g = one - f;
+  const quadratic_number f = (quadratic_number(k) * x - half()).frac();
+  const quadratic_number g = one() - f;
   return f <= g ? f : g;
 }
 
 int lobe_offset_sign(const quadratic_number& x, const big_int& k) {
-  return (half - (quadratic_number(k) * x).frac()).sign();
+  return (half() - (quadratic_number(k) * x).frac()).sign();
 }
 
 }  // namespace gyrores
