@@ -145,6 +145,20 @@ template <class F> Z largest(F pred, long& work) {
     if (++work > 200000) throw fails("work bound: the fraction search did not end");
   }
 }
+// The largest m >= 0 with (p + m dp)/(q + m dq) <= y (side -1) or >= y (side +1).
+Z largest_step(const Z& p, const Z& q, const Z& dp, const Z& dq, const point& y, int side, long& work) {
+  return largest(
+      [&](const Z& m) {
+        Z a, b;
+        fmpz_set(a.v, p.v);
+        fmpz_addmul(a.v, m.v, dp.v);
+        fmpz_set(b.v, q.v);
+        fmpz_addmul(b.v, m.v, dq.v);
+        const int c = cmp_frac(a, b, y);
+        return side < 0 ? c <= 0 : c >= 0;
+      },
+      work);
+}
 // The fraction of least denominator strictly between y1 < y2 in (0, 1]: the Stern-Brocot
 // descent, each run of one direction taken at once.
 frac simplest(const point& y1, const point& y2, long& work) {
@@ -154,29 +168,11 @@ frac simplest(const point& y1, const point& y2, long& work) {
     fmpz_add(pm.v, pl.v, pr.v);
     fmpz_add(qm.v, ql.v, qr.v);
     if (cmp_frac(pm, qm, y1) <= 0) {  // L + k R <= y1: advance L
-      const Z k = largest(
-          [&](const Z& m) {
-            Z a, b;
-            fmpz_set(a.v, pl.v);
-            fmpz_addmul(a.v, m.v, pr.v);
-            fmpz_set(b.v, ql.v);
-            fmpz_addmul(b.v, m.v, qr.v);
-            return cmp_frac(a, b, y1) <= 0;
-          },
-          work);
+      const Z k = largest_step(pl, ql, pr, qr, y1, -1, work);
       fmpz_addmul(pl.v, k.v, pr.v);
       fmpz_addmul(ql.v, k.v, qr.v);
     } else if (cmp_frac(pm, qm, y2) >= 0) {  // k L + R >= y2: advance R
-      const Z k = largest(
-          [&](const Z& m) {
-            Z a, b;
-            fmpz_set(a.v, pr.v);
-            fmpz_addmul(a.v, m.v, pl.v);
-            fmpz_set(b.v, qr.v);
-            fmpz_addmul(b.v, m.v, ql.v);
-            return cmp_frac(a, b, y2) >= 0;
-          },
-          work);
+      const Z k = largest_step(pr, qr, pl, ql, y2, +1, work);
       fmpz_addmul(pr.v, k.v, pl.v);
       fmpz_addmul(qr.v, k.v, ql.v);
     } else
