@@ -20,6 +20,7 @@
 #include <gyrores/model/inputs.hpp>
 
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -164,31 +165,26 @@ TEST_CASE("band certificates: the tamper catalogue", "[band][certificate]") {
   }
 
   SECTION("the claims and the attaining couplings") {
+    // One field of `good` forged, and what the verdict must say.
+    using forgery = std::pair<const char*, std::function<void(checker_json&)>>;
+    for (const auto& [why, forge] : std::vector<forgery>{
+             {"above 2 hi", [](checker_json& j) { j["absorption"]["value"][1] = j["absorption"]["value"][0]; }},
+             {"lo is above the attaining coupling's minimum",
+              [](checker_json& j) { j["absorption"]["value"][0] = j["absorption"]["value"][1]; }},
+             {"hi is below the attaining coupling's minimum",
+              [](checker_json& j) { j["containment"]["value"][1] = j["containment"]["value"][0]; }},
+             {"below 2 lo", [](checker_json& j) { j["containment"]["value"][0] = j["containment"]["value"][1]; }},
+             {"0 <= lo <= hi", [](checker_json& j) { j["absorption"]["value"][0] = "1"; }},
+             {"not in the band", [](checker_json& j) { j["absorption"]["at"]["n2"] = "100"; }},
+             {"its horizon is not the certificate's",
+              [](checker_json& j) { j["containment"]["at"]["horizon"] = "11"; }},
+             {"absorption.at: FAILS", [](checker_json& j) { j["absorption"]["at"]["minimum"]["cut_lobe"] = "0"; }},
+         }) {
+      checker_json j = good;
+      forge(j);
+      refused(j, why);
+    }
     checker_json j = good;
-    j["absorption"]["value"][1] = j["absorption"]["value"][0];
-    refused(j, "above 2 hi");
-    j = good;
-    j["absorption"]["value"][0] = j["absorption"]["value"][1];
-    refused(j, "lo is above the attaining coupling's minimum");
-    j = good;
-    j["containment"]["value"][1] = j["containment"]["value"][0];
-    refused(j, "hi is below the attaining coupling's minimum");
-    j = good;
-    j["containment"]["value"][0] = j["containment"]["value"][1];
-    refused(j, "below 2 lo");
-    j = good;
-    j["absorption"]["value"][0] = "1";
-    refused(j, "0 <= lo <= hi");
-    j = good;
-    j["absorption"]["at"]["n2"] = "100";
-    refused(j, "not in the band");
-    j = good;
-    j["containment"]["at"]["horizon"] = "11";
-    refused(j, "its horizon is not the certificate's");
-    j = good;
-    j["absorption"]["at"]["minimum"]["cut_lobe"] = "0";
-    refused(j, "absorption.at: FAILS");
-    j = good;
     j["absorption"]["at"] = j["containment"]["at"];
     CHECK(check(j).status != 0);
   }

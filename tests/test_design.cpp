@@ -360,10 +360,8 @@ TEST_CASE("cli design: infeasible exits 3, bad input exits 2, nothing on stdout"
 
 TEST_CASE("cli pareto: CSV and JSON", "[pareto][cli]") {
   if (!cli_available()) return;
-  gyrores::test::temp_dir tmp("pareto");
-  const std::string dir = tmp.path();
-  REQUIRE(!dir.empty());
-  auto r = cli_run("pareto --max-order 40 --out " + dir + "/front.csv --json --digits 6");
+  gyrores::test::temp_dir dir("pareto");
+  auto r = cli_run("pareto --max-order 40 --out " + dir / "front.csv" + " --json --digits 6");
   REQUIRE(r.status == 0);
   auto j = nlohmann::json::parse(r.out);
   CHECK(j["orientation"] == "absorb");
@@ -371,7 +369,7 @@ TEST_CASE("cli pareto: CSV and JSON", "[pareto][cli]") {
   CHECK(j["front"][0]["tau"] == 5);
   CHECK(j["front"][0]["sigma"] == 1);
   CHECK(j["front"].back()["tau"] == 3);
-  std::ifstream in(dir + "/front.csv");
+  std::ifstream in(dir / "front.csv");
   std::string head;
   std::getline(in, head);
   CHECK(head == "tau,sigma,order,delta,degenerate,n,r_res,t_first,t_min_paper");

@@ -145,6 +145,20 @@ template <class F> Z largest(F pred, long& work) {
     if (++work > 200000) throw fails("work bound: the fraction search did not end");
   }
 }
+// The largest m >= 0 with (p + m dp)/(q + m dq) <= y (side -1) or >= y (side +1).
+Z largest_step(const Z& p, const Z& q, const Z& dp, const Z& dq, const point& y, int side, long& work) {
+  return largest(
+      [&](const Z& m) {
+        Z a, b;
+        fmpz_set(a.v, p.v);
+        fmpz_addmul(a.v, m.v, dp.v);
+        fmpz_set(b.v, q.v);
+        fmpz_addmul(b.v, m.v, dq.v);
+        const int c = cmp_frac(a, b, y);
+        return side < 0 ? c <= 0 : c >= 0;
+      },
+      work);
+}
 // The fraction of least denominator strictly between y1 < y2 in (0, 1]: the Stern-Brocot
 // descent, each run of one direction taken at once.
 frac simplest(const point& y1, const point& y2, long& work) {
@@ -154,29 +168,11 @@ frac simplest(const point& y1, const point& y2, long& work) {
     fmpz_add(pm.v, pl.v, pr.v);
     fmpz_add(qm.v, ql.v, qr.v);
     if (cmp_frac(pm, qm, y1) <= 0) {  // L + k R <= y1: advance L
-      const Z k = largest(
-          [&](const Z& m) {
-            Z a, b;
-            fmpz_set(a.v, pl.v);
-            fmpz_addmul(a.v, m.v, pr.v);
-            fmpz_set(b.v, ql.v);
-            fmpz_addmul(b.v, m.v, qr.v);
-            return cmp_frac(a, b, y1) <= 0;
-          },
-          work);
+      const Z k = largest_step(pl, ql, pr, qr, y1, -1, work);
       fmpz_addmul(pl.v, k.v, pr.v);
       fmpz_addmul(ql.v, k.v, qr.v);
     } else if (cmp_frac(pm, qm, y2) >= 0) {  // k L + R >= y2: advance R
-      const Z k = largest(
-          [&](const Z& m) {
-            Z a, b;
-            fmpz_set(a.v, pr.v);
-            fmpz_addmul(a.v, m.v, pl.v);
-            fmpz_set(b.v, qr.v);
-            fmpz_addmul(b.v, m.v, ql.v);
-            return cmp_frac(a, b, y2) >= 0;
-          },
-          work);
+      const Z k = largest_step(pr, qr, pl, ql, y2, +1, work);
       fmpz_addmul(pr.v, k.v, pl.v);
       fmpz_addmul(qr.v, k.v, ql.v);
     } else
@@ -322,56 +318,42 @@ QD F_of(const coupling& c, const Z& K) {
 }
 Z floor_kx(const coupling& c, const Z& k) { return floor_of(c.F, mul(c.F, integer(k), c.x)); }
 
-// Lobe k's first minimiser after its start is reached on [a, b]: k pi + u* <= alpha_T(a) for
-// every x (u* largest at a for mu(a) >= 0, else -H_b^{-1}(|mu(a)|)); horizon Step 12 (a).
-bool reached_on(const ctx& C, const Z& k, const coupling& a, const coupling& b, const at_x& A, const at_x& Bb) {
-  if (fmpz_sgn(k.v) < 0) return false;
-  B u, top;
-  if (fmpz_is_zero(k.v)) {
-    u = root_end(C, A, C.half, +1);
-    if (arb_le(u.v, A.alpha_T.v)) return true;
-    if (arb_gt(u.v, A.alpha_T.v)) return false;
-    throw undecided{};
-  }
-  if (!fmpz_equal(floor_kx(a, k).v, floor_kx(b, k).v)) return false;
-  const QD mu = mu_of(a, k);
-  const bool pos = sign(a.F, mu) >= 0;
-  const B nu = ball_qd(a.F, pos ? mu : neg(mu), C.prec);
-  if (pos) u = root_end(C, A, nu, +1);
+// k pi + u* of lobe k's first minimiser (k >= 0) at its extreme over [a, b] against alpha_T there
+// (horizon Step 12 (a)): side +1 its largest, at X = a (u* largest at a for mu(a) >= 0, else
+// -H_b^{-1}(|mu(a)|)), side -1 its least, at X = b (Y the other end). True when it is <= alpha_T
+// at X, false when it is above; undecided when the balls overlap.
+bool first_minimiser_before(const ctx& C, const Z& k, const coupling& c, const at_x& X, const at_x& Y, int side) {
+  B u;
+  if (fmpz_is_zero(k.v)) u = root_end(C, X, C.half, side);
   else {
-    u = root_end(C, Bb, nu, -1);
-    arb_neg(u.v, u.v);
+    const QD mu = mu_of(c, k);
+    const bool pos = sign(c.F, mu) >= 0;
+    const B nu = ball_qd(c.F, pos ? mu : neg(mu), C.prec);
+    if (pos) u = root_end(C, X, nu, side);
+    else {
+      u = root_end(C, Y, nu, -side);
+      arb_neg(u.v, u.v);
+    }
+    B top;
+    arb_mul_fmpz(top.v, C.pi.v, k.v, C.prec);
+    arb_add(u.v, top.v, u.v, C.prec);
   }
-  arb_mul_fmpz(top.v, C.pi.v, k.v, C.prec);
-  arb_add(top.v, top.v, u.v, C.prec);
-  if (arb_le(top.v, A.alpha_T.v)) return true;
-  if (arb_gt(top.v, A.alpha_T.v)) return false;
+  if (arb_le(u.v, X.alpha_T.v)) return true;
+  if (arb_gt(u.v, X.alpha_T.v)) return false;
   throw undecided{};
 }
-// Lobe k's first minimiser lies after T on all of [a, b]: k pi + u* > alpha_T(b) for every x.
+// Lobe k's first minimiser after its start is reached on all of [a, b] (k pi + u* <= alpha_T(a)),
+// or lies after T on all of it (k pi + u* > alpha_T(b)); false for k < 0 or where floor(k x)
+// changes on [a, b].
+bool reached_on(const ctx& C, const Z& k, const coupling& a, const coupling& b, const at_x& A, const at_x& Bb) {
+  if (fmpz_sgn(k.v) < 0) return false;
+  if (!fmpz_is_zero(k.v) && !fmpz_equal(floor_kx(a, k).v, floor_kx(b, k).v)) return false;
+  return first_minimiser_before(C, k, a, A, Bb, +1);
+}
 bool unreached_on(const ctx& C, const Z& k, const coupling& a, const coupling& b, const at_x& A, const at_x& Bb) {
   if (fmpz_sgn(k.v) < 0) return false;
-  B u, bottom;
-  if (fmpz_is_zero(k.v)) {
-    u = root_end(C, Bb, C.half, -1);
-    if (arb_gt(u.v, Bb.alpha_T.v)) return true;
-    if (arb_le(u.v, Bb.alpha_T.v)) return false;
-    throw undecided{};
-  }
-  if (!fmpz_equal(floor_kx(a, k).v, floor_kx(b, k).v)) return false;
-  const QD mu = mu_of(b, k);
-  const bool pos = sign(b.F, mu) >= 0;
-  const B nu = ball_qd(b.F, pos ? mu : neg(mu), C.prec);
-  if (pos) u = root_end(C, Bb, nu, -1);
-  else {
-    u = root_end(C, A, nu, +1);
-    arb_neg(u.v, u.v);
-  }
-  arb_mul_fmpz(bottom.v, C.pi.v, k.v, C.prec);
-  arb_add(bottom.v, bottom.v, u.v, C.prec);
-  if (arb_gt(bottom.v, Bb.alpha_T.v)) return true;
-  if (arb_le(bottom.v, Bb.alpha_T.v)) return false;
-  throw undecided{};
+  if (!fmpz_is_zero(k.v) && !fmpz_equal(floor_kx(a, k).v, floor_kx(b, k).v)) return false;
+  return !first_minimiser_before(C, k, b, Bb, A, -1);
 }
 
 // g = (pi k - u)(1 - x^2) - x^2 tan u at (x, u) = (c, u) with u an exact end (Step 4).
@@ -782,14 +764,7 @@ void check_claim_side(const json& j, const std::string& which, const Qr& n1sq, c
 verdict check_band_certificate(const std::string& json_text) {
   return verdict_of<verdict>([&]() -> verdict {
     if (json_text.size() > (std::size_t(4) << 20)) throw fails("work bound: the certificate is larger than 4 MiB");
-    json j;
-    try {
-      j = parse_without_duplicate_keys(json_text);
-    } catch (const malformed&) {
-      throw;
-    } catch (const std::exception& e) {
-      throw malformed(std::string("not JSON: ") + e.what());
-    }
+    json j = parse_without_duplicate_keys(json_text);
     exact_keys(j, {"format", "theorem", "n1", "n2", "horizon", "digits", "absorption", "containment"}, "the certificate");
     if (j["format"] != band_certificate_format) throw malformed(std::string("format is not ") + band_certificate_format);
     if (j["theorem"] != "band-theorem/1") throw fails("theorem is not band-theorem/1 (the one this checker knows)");

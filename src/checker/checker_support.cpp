@@ -62,7 +62,13 @@ json parse_without_duplicate_keys(const std::string& text) {
       throw malformed("the key '" + parsed.get<std::string>().substr(0, 60) + "' appears twice in one object");
     return true;
   };
-  return json::parse(text, on_event);
+  try {
+    return json::parse(text, on_event);
+  } catch (const malformed&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw malformed(std::string("not JSON: ") + e.what());
+  }
 }
 
 std::string one_line(const std::string& s) {

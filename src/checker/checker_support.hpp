@@ -93,7 +93,8 @@ int claim_holds(const bracket& claim, const B& enclosure, long digits, const cha
 B ball_of(const std::string& decimal, long prec);
 
 // json::parse, refusing an object with a key twice (nlohmann keeps the last: a certificate could
-// otherwise show a reader one value and the checker another; docs/formats.md).
+// otherwise show a reader one value and the checker another; docs/formats.md); malformed "not
+// JSON: ..." for text that is not JSON.
 json parse_without_duplicate_keys(const std::string& text);
 
 // The verdict is one line: a field quoted in a message may hold a newline or another control

@@ -113,14 +113,7 @@ lobe_data lobe_field(const json& j, const std::string& name) {
 }
 
 certificate read(const std::string& text) {
-  json j;
-  try {
-    j = parse_without_duplicate_keys(text);
-  } catch (const malformed&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw malformed(std::string("not JSON: ") + e.what());
-  }
+  json j = parse_without_duplicate_keys(text);
   exact_keys(j, {"format", "theorem", "n2", "horizon", "digits", "minimum", "below"}, "the certificate");
   if (j["format"] != coupling_certificate_format) throw malformed(std::string("format is not ") + coupling_certificate_format);
   if (j["theorem"] != "horizon-theorem/1") throw fails("theorem is not horizon-theorem/1 (the one this checker knows)");

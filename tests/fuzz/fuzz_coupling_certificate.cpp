@@ -7,9 +7,5 @@
 #include "horizon_checker.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size > 16384) return -1;
-  const std::string text(gyrores::fuzz::as_text(data, size));
-  const auto v = gyrores_checker::check_coupling_certificate(text);
-  if (v.status < 0 || v.status > 2 || v.message.empty() || v.message.find('\n') != std::string::npos) std::abort();
-  return 0;
+  return gyrores::fuzz::checker_verdict(data, size, 16384, gyrores_checker::check_coupling_certificate);
 }

@@ -21,6 +21,15 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return std::string_view(reinterpret_cast<const char*>(data), size);
 }
 
+// The body of a checker's target: an input up to max_size bytes gets a verdict from `check`
+// (0, 1 or 2 and a one-line message), never a crash or an exception; a longer one is skipped.
+template <class Check> int checker_verdict(const std::uint8_t* data, std::size_t size, std::size_t max_size, Check check) {
+  if (size > max_size) return -1;
+  const auto v = check(std::string(as_text(data, size)));
+  if (v.status < 0 || v.status > 2 || v.message.empty() || v.message.find('\n') != std::string::npos) std::abort();
+  return 0;
+}
+
 // The pieces of `text` between occurrences of `sep`, at most `max_parts` (the last keeps the rest).
 inline std::vector<std::string> split(std::string_view text, std::string_view sep, std::size_t max_parts) {
   std::vector<std::string> parts;

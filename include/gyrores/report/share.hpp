@@ -3,8 +3,6 @@
 // enclosure times that rational (each end rounded outward), and the text is the correct rounding
 // of that enclosure (core/enclosure.hpp), never a rescaled decimal.
 #pragma once
-#include <optional>
-#include <string>
 
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/rational.hpp>
@@ -19,9 +17,5 @@ big_rational share_factor(const big_rational& qdot0 = 1);
 
 // e times k > 0: exact when e is, else each end multiplied with outward rounding.
 enclosure scaled(const enclosure& e, const big_rational& k);
-
-// The percentage of H_q(0) of the energy enclosed by e, correctly rounded to `digits`
-// significant digits (scientific text); none while the enclosure straddles a rounding boundary.
-std::optional<std::string> share_rounded(const enclosure& e, const big_rational& qdot0 = 1, unsigned digits = share_digits);
 
 }  // namespace gyrores

@@ -17,8 +17,4 @@ enclosure scaled(const enclosure& e, const big_rational& k) {
   return enclosure(lo, hi);
 }
 
-std::optional<std::string> share_rounded(const enclosure& e, const big_rational& qdot0, unsigned digits) {
-  return scaled(e, share_factor(qdot0)).rounded(digits);
-}
-
 }  // namespace gyrores

@@ -272,38 +272,26 @@ bool band_arith::unreached_on(const big_int& k, const band_coupling& a, const ba
 
 // g = (pi k - u)(1 - x^2) - x^2 tan u over [a, b] (band-theorem.md item 2, Step 4): at least its
 // value at (x, u) = (b, u+), at most its value at (a, u-), with u+ >= every u of the interval,
-// u- <= every one (u = H_x^{-1}(pi nu_k) rises with nu_k and falls with x). g_at is g at the
-// coupling c and one end of the ball u (1 - x^2 = 4/(n^2 + 4) exactly).
-void band_arith::g_at(arb_t g, const big_int& k, const band_coupling& c, arb_t u, bool upper_end) const {
-  ball t, w;
-  if (upper_end) arb_get_ubound_arf(arb_midref(u), u, prec_);
-  else arb_get_lbound_arf(arb_midref(u), u, prec_);
-  mag_zero(arb_radref(u));
+// u- <= every one (u = H_x^{-1}(pi nu_k) rises with nu_k and falls with x). g_signed is g at the
+// coupling `at` and one end of the ball u = H^{-1}(nu) at `root_at` (1 - x^2 = 4/(n^2 + 4)
+// exactly): true when it is > 0 (upper end) or < 0 (lower end).
+bool band_arith::g_signed(const big_int& k, const band_coupling& root_at, const quadratic_number& nu,
+                          const band_coupling& at, bool upper_end) const {
+  ball u, g, t, w;
+  signed_root(u, root_at, nu);
+  if (upper_end) arb_get_ubound_arf(arb_midref(u.get()), u, prec_);
+  else arb_get_lbound_arf(arb_midref(u.get()), u, prec_);
+  mag_zero(arb_radref(u.get()));
   set_int(g, k);
   arb_mul(g, g, pi_, prec_);
   arb_sub(g, g, u, prec_);
-  set_rational(w, big_rational(4) / (c.spec.n2 + 4), prec_);
+  set_rational(w, big_rational(4) / (at.spec.n2 + 4), prec_);
   arb_mul(g, g, w, prec_);
   arb_tan(t, u, prec_);
-  set_rational(w, c.spec.n2 / (c.spec.n2 + 4), prec_);
+  set_rational(w, at.spec.n2 / (at.spec.n2 + 4), prec_);
   arb_mul(t, t, w, prec_);
   arb_sub(g, g, t, prec_);
-}
-
-bool band_arith::rising_increases(const big_int& k, const band_coupling& a, const band_coupling& b,
-                                  const quadratic_number& nb) const {
-  ball u, g;
-  signed_root(u, a, nb);
-  g_at(g, k, b, u, true);
-  return arb_is_positive(g);
-}
-
-bool band_arith::rising_decreases(const big_int& k, const band_coupling& a, const band_coupling& b,
-                                  const quadratic_number& na) const {
-  ball u, g;
-  signed_root(u, b, na);
-  g_at(g, k, a, u, false);
-  return arb_is_negative(g);
+  return upper_end ? arb_is_positive(g) : arb_is_negative(g);
 }
 
 std::pair<big_rational, big_rational> band_arith::end_point_range(const band_coupling& a, const band_coupling& b) const {

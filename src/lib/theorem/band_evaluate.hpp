@@ -44,8 +44,12 @@ class band_arith {
   big_rational V_lower(const band_coupling& c, const quadratic_number& nu) const;
   // On [a, b], where nu_k rises from na to nb: g > 0 throughout (the composite increases), or
   // g < 0 throughout (it decreases); false when not proved.
-  bool rising_increases(const big_int& k, const band_coupling& a, const band_coupling& b, const quadratic_number& nb) const;
-  bool rising_decreases(const big_int& k, const band_coupling& a, const band_coupling& b, const quadratic_number& na) const;
+  bool rising_increases(const big_int& k, const band_coupling& a, const band_coupling& b, const quadratic_number& nb) const {
+    return g_signed(k, a, nb, b, true);
+  }
+  bool rising_decreases(const big_int& k, const band_coupling& a, const band_coupling& b, const quadratic_number& na) const {
+    return g_signed(k, b, na, a, false);
+  }
   // [inf, sup] of R(T) over the couplings of [a, b].
   std::pair<big_rational, big_rational> end_point_range(const band_coupling& a, const band_coupling& b) const;
   // The minimum of R over [0, T] at c, an enclosure [lo, hi] (the horizon theorem).
@@ -57,7 +61,8 @@ class band_arith {
   std::pair<big_rational, big_rational> middle_third(const band_coupling& a, const band_coupling& b) const;
 
  private:
-  void g_at(arb_t g, const big_int& k, const band_coupling& c, arb_t u, bool upper_end) const;
+  bool g_signed(const big_int& k, const band_coupling& root_at, const quadratic_number& nu, const band_coupling& at,
+                bool upper_end) const;
   void lobe_root(arb_t out, const band_coupling& c, const arb_t target) const;  // H_x^{-1}(target)
   void signed_root(arb_t out, const band_coupling& c, const quadratic_number& signed_nu) const;
   void alpha_T(arb_t out, const band_coupling& c) const;
