@@ -25,9 +25,6 @@ coupling_selection select_coupling(const coupling_given& g, const coupling_names
   if (g.plant && g.band)
     throw usage_error(names.band + " is a band of the model's couplings n, not of a plant: give " + names.tolerance +
                       " (a tolerance on the plant's n = g/sqrt(m k))");
-  if (g.plant && !g.tolerance.empty())
-    throw usage_error(names.tolerance + " takes the model's couplings, not a plant: give " + names.n2 + " " +
-                      rational_str(g.plant->n2()) + " (the plant's n^2) with " + names.qdot0 + " for the impulse");
   if (given == 0 && !g.plant && !g.band) throw usage_error(exactly_one);
   coupling_selection s;
   s.qdot0 = g.qdot0 ? *g.qdot0 : big_rational(1);
@@ -76,6 +73,7 @@ band_request band_request_of(const coupling_selection& s) {
   q.n2 = s.band->second;
   q.horizon = s.horizon;
   q.qdot0 = s.qdot0;
+  q.plant = s.plant;
   return q;
 }
 

@@ -199,6 +199,8 @@ std::string band_text(const coupling_args& a, const unit_choice& u, const app::b
   const std::string t_unit = u.time_unit();
   os << "band n in [" << decimal_text(q.n1, d) << ", " << decimal_text(q.n2, d) << "], over [0, " << u.horizon_text << "]:\n";
   if (!note.empty()) os << "  " << note << "\n";
+  if (u.plant)
+    os << "  (n = g/sqrt(m k): a tolerance on n is that tolerance on g at this m and k; energies in J, times in s)\n";
   os
      << "  absorption guarantee   " << extreme_text(b.absorption, d, u) << "\n"
      << "                         every n of the band has min H_q <= this over [0, T] (the highest minimum)\n";
