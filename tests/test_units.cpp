@@ -9,7 +9,12 @@
 
 #include <boost/multiprecision/mpfr.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+#include <unistd.h>
 
 #include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
@@ -36,6 +41,27 @@ bool rounds_from(const std::string& shown, const big_real& exact, int digits) {
   const big_real e = floor(log10(abs(exact)));
   const big_real half_ulp = pow(big_real(10), e - (digits - 1)) / 2;
   return abs(s - exact) <= half_ulp * big_real("1.0000001");
+}
+
+// The rows "t H_q H_z" of index 0 of an energy figure's data file.
+std::vector<std::vector<double>> energy_rows(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) break;  // the end of index 0
+    if (line[0] == '#') continue;
+    std::istringstream is(line);
+    double t = 0, hq = 0, hz = 0;
+    if (is >> t >> hq >> hz) rows.push_back({t, hq, hz});
+  }
+  return rows;
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
 }
 
 // The dimensional plant integrated by RK4 with step dt over [0, T_s]: the least energy of mode q,
@@ -232,4 +258,38 @@ TEST_CASE("units: bad plant inputs are refused with one line and exit 2", "[unit
   check_rejected("coupling --mass 0.5" + ok + " --horizon 3 --horizon-s 2", 2, "--horizon-s");
   check_rejected("coupling 0.4 --horizon-s 2", 2, "--horizon-s");
   check_rejected("coupling --mass abc" + ok, 2, "--mass");
+}
+
+TEST_CASE("units: plot energy and plot phase take --qdot0 (energies times qdot0^2, radii times qdot0)", "[units][cli]") {
+  if (!cli_available()) return;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("gyrores-units-plot-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto out = [&](const std::string& name) { return (dir / name).string(); };
+  REQUIRE(cli_run("plot energy 6 5 --out " + out("e1.svg")).status == 0);
+  REQUIRE(cli_run("plot energy 6 5 --qdot0 3 --out " + out("e3.svg")).status == 0);
+  REQUIRE(cli_run("plot energy 6 5 --qdot0 1 --out " + out("e1b.svg")).status == 0);
+  // qdot0 = 1 given is the default, byte for byte.
+  CHECK(file_text(out("e1.dat")) == file_text(out("e1b.dat")));
+  const auto a = energy_rows(out("e1.dat")), b = energy_rows(out("e3.dat"));
+  REQUIRE(a.size() > 100);
+  REQUIRE(a.size() == b.size());
+  // H_q(0) = qdot0^2/2 = 9/2 and H_q + H_z = 9/2 throughout (the whole energy; an independent value).
+  CHECK(b[0][1] == 4.5);
+  bool times_same = true, squared = true, linear = true;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    times_same = times_same && a[i][0] == b[i][0];
+    squared = squared && std::abs(b[i][1] - 9 * a[i][1]) <= 1e-8 * 4.5 && std::abs(b[i][1] + b[i][2] - 4.5) <= 1e-8;
+    linear = linear && std::abs(b[i][1] - 3 * a[i][1]) <= 1e-8 * 4.5;
+  }
+  CHECK(times_same);
+  CHECK(squared);
+  CHECK_FALSE(linear);  // must fail: the energy scaled by qdot0, not its square
+  // The phase portrait: the maximal circle is the radius qdot0 = 3/2 (index 3 of its data).
+  REQUIRE(cli_run("plot phase --n 0.3 --qdot0 3/2 --out " + out("p.svg")).status == 0);
+  const std::string phase = file_text(out("p.dat"));
+  CHECK(phase.find("# index 3: maximal circle, radius qdot0 = 1.5 ") != std::string::npos);
+  CHECK(phase.find("qdot0 = 3/2") != std::string::npos);  // in the title
+  check_rejected("plot energy 6 5 --qdot0 0 --out " + out("x.svg"), 2, "--qdot0");
+  check_rejected("plot phase 6 5 --qdot0 -1 --out " + out("x.svg"), 2, "--qdot0");
+  std::filesystem::remove_all(dir);
 }
