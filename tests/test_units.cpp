@@ -198,6 +198,10 @@ TEST_CASE("units: a plant in joules and seconds, against a simulation of the dim
   CHECK(text.find(" J  (") != std::string::npos);
   CHECK(text.find("first at t =  ") != std::string::npos);
   CHECK(text.find(" s\n") != std::string::npos);
+  // A percentage level is a share of H_q(0), without a unit; an absolute one is in J.
+  const auto share = cli_run("coupling --mass 0.5 --stiffness 200 --gyro 4 --velocity 0.1 --below 1% --convergents 0").out;
+  CHECK(share.find("first time H_q <= 1%:\n") != std::string::npos);
+  CHECK(share.find("first time H_q <= 1% J") == std::string::npos);
 }
 
 TEST_CASE("units: a plant's --tolerance is the band of its n, guarantees in J and times in s", "[units][cli]") {

@@ -809,8 +809,6 @@ def coupling(n=None, n2=None, horizon=None, below=None, convergents=8, digits=12
     """
     f = "coupling"
     d = _args.bounded(digits, f, "digits", 1, 1000)
-    if band is not None and tolerance is not None:
-        raise UsageError(f"{f}(): give at most one of band and tolerance")
     bd = d if band_digits is None else _args.bounded(band_digits, f, "band_digits", 1, 10000)
     if pair is not None and not (isinstance(pair, (tuple, list)) and len(pair) == 2):
         raise UsageError(f"{f}(): pair must be (tau, sigma), got {_args._describe(pair)}")

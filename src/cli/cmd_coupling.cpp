@@ -82,6 +82,11 @@ struct unit_choice : app::coupling_selection {
   std::string time_unit() const { return plant ? " s" : ""; }
 };
 
+// The level of --below as given, with its unit (a percentage of H_q(0) has none).
+std::string level_text(const coupling_args& a, const unit_choice& u) {
+  return a.below + (!a.below.empty() && a.below.back() == '%' ? std::string() : u.energy_unit());
+}
+
 // An energy with its unit and its share of H_q(0).
 std::string energy_in(const unit_choice& u, const proved_real& e, const proved_real& share) {
   const std::string t = energy_text(e.value, share.value);
@@ -143,7 +148,7 @@ std::string coupling_text(const coupling_args& a, const unit_choice& u, const co
      << "\n";
   if (r.below) {
     const first_below_report& b = *r.below;
-    os << "first time H_q <= " << a.below << u.energy_unit() << ":\n";
+    os << "first time H_q <= " << level_text(a, u) << ":\n";
     if (b.never) os << "  never         " << b.reason << "\n";
     else os << "  t =           " << plain(b.t_below) << u.time_unit() << "\n  because       " << b.reason << "\n";
   }
@@ -210,13 +215,13 @@ std::string band_text(const coupling_args& a, const unit_choice& u, const app::b
   if (b.containment_at) os << "                         " << attained_text(*b.containment_at, d, t_unit) << "\n";
   if (b.below) {
     const band_first_below& f = *b.below;
-    os << "  first time H_q <= " << a.below << u.energy_unit() << (f.never ? "\n  never                  " + f.reason + "\n" : "");
+    os << "  first time H_q <= " << level_text(a, u) << (f.never ? "\n  never                  " + f.reason + "\n" : "");
     if (!f.never) {
       os << "\n                         t = ";
       if (f.settled) os << plain(*f.time.rounded(d)) << t_unit;
       else {
         const auto [lo, hi] = f.time.outward(d);
-        os << "in [" << plain(lo) << ", " << plain(hi) << "]" << t_unit << " ("<< (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
+        os << "in [" << plain(lo) << ", " << plain(hi) << "]" << t_unit << " (" << (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
       }
       os << ": every n of the band has H_q <= E by then (the latest first time)\n";
       if (b.below_at) os << "                         " << attained_text(*b.below_at, d, t_unit) << "\n";
