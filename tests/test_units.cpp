@@ -1,7 +1,7 @@
 // Consistent flags and physical units (docs/units.md): --qdot0 on coupling (energies times
 // qdot0^2, radii times qdot0, times unchanged, an absolute level at that impulse), --pair with
 // --tolerance, and a physical plant (--mass, --stiffness, --gyro, --velocity): energies in J and
-// times in s. The references are independent of the code under test: the dimensionless answers
+// times in s, also over the band of its --tolerance. The references are independent of the code under test: the dimensionless answers
 // scaled by hand at 200 bits (Boost's MPFR type), and a direct RK4 simulation of the dimensional
 // equations m q'' + g z' + k q = 0, m z'' - g q' + k z = 0.
 #include <catch2/catch.hpp>
@@ -9,7 +9,12 @@
 
 #include <boost/multiprecision/mpfr.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+#include <unistd.h>
 
 #include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
@@ -36,6 +41,27 @@ bool rounds_from(const std::string& shown, const big_real& exact, int digits) {
   const big_real e = floor(log10(abs(exact)));
   const big_real half_ulp = pow(big_real(10), e - (digits - 1)) / 2;
   return abs(s - exact) <= half_ulp * big_real("1.0000001");
+}
+
+// The rows "t H_q H_z" of index 0 of an energy figure's data file.
+std::vector<std::vector<double>> energy_rows(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) break;  // the end of index 0
+    if (line[0] == '#') continue;
+    std::istringstream is(line);
+    double t = 0, hq = 0, hz = 0;
+    if (is >> t >> hq >> hz) rows.push_back({t, hq, hz});
+  }
+  return rows;
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
 }
 
 // The dimensional plant integrated by RK4 with step dt over [0, T_s]: the least energy of mode q,
@@ -172,6 +198,54 @@ TEST_CASE("units: a plant in joules and seconds, against a simulation of the dim
   CHECK(text.find(" J  (") != std::string::npos);
   CHECK(text.find("first at t =  ") != std::string::npos);
   CHECK(text.find(" s\n") != std::string::npos);
+  // A percentage level is a share of H_q(0), without a unit; an absolute one is in J.
+  const auto share = cli_run("coupling --mass 0.5 --stiffness 200 --gyro 4 --velocity 0.1 --below 1% --convergents 0").out;
+  CHECK(share.find("first time H_q <= 1%:\n") != std::string::npos);
+  CHECK(share.find("first time H_q <= 1% J") == std::string::npos);
+}
+
+TEST_CASE("units: a plant's --tolerance is the band of its n, guarantees in J and times in s", "[units][cli]") {
+  if (!cli_available()) return;
+  // n^2 = 3/20 (n irrational: ends rounded outward); sqrt(k/m) irrational: the model horizon T'.
+  const std::string plant = "coupling --mass 0.3 --stiffness 200 --gyro 3 --velocity 0.2 --horizon-s 1.5 ";
+  const auto j = cli_json(plant + "--tolerance 1% --below 1e-4 --json --convergents 0 --quiet");
+  CHECK(j["horizon_exact"] == false);
+  CHECK(j["below"]["level"] == "1/120");  // 1e-4 J / (m V^2 = 0.012 J)
+  // The reference: the dimensionless band of n^2 = 3/20 over the same model horizon at the unit
+  // level, at 30 digits, scaled by hand at 200 bits: E = m V^2 H_q, t_s = t sqrt(m/k).
+  const auto u = cli_json("coupling --n2 3/20 --tolerance 1% --horizon " + j["horizon"].get<std::string>() +
+                          " --below 1/120 --json --convergents 0 --band-digits 30 --quiet");
+  const auto& b = j["band"];
+  const auto& ub = u["band"];
+  CHECK(b["n1"] == ub["n1"]);
+  CHECK(b["n2"] == ub["n2"]);
+  const big_real mV2 = real_of("0.3") * real_of("0.2") * real_of("0.2"), ts = sqrt(real_of("0.3") / 200);
+  for (const char* g : {"absorption", "containment"}) {
+    INFO(g);
+    CHECK(b[g]["settled"] == true);
+    CHECK(rounds_from(b[g]["h_min"], real_of(ub[g]["h_min"]) * mV2, 12));
+    CHECK(rounds_from(b[g]["at"]["t_min"], real_of(ub[g]["at"]["t_min"]) * ts, 12));
+    CHECK(b[g]["at"]["n2"] == ub[g]["at"]["n2"]);
+    // Must fail: the energy scaled by m V (not m V^2).
+    CHECK_FALSE(rounds_from(b[g]["h_min"], real_of(ub[g]["h_min"]) * real_of("0.3") * real_of("0.2"), 12));
+  }
+  CHECK(b["first_below"]["settled"] == true);
+  CHECK(rounds_from(b["first_below"]["t_below"], real_of(ub["first_below"]["t_below"]) * ts, 12));
+  CHECK(rounds_from(b["first_below"]["at"]["t_below"], real_of(ub["first_below"]["at"]["t_below"]) * ts, 12));
+  // Must fail: the time scaled by sqrt(k/m).
+  CHECK_FALSE(rounds_from(b["first_below"]["t_below"], real_of(ub["first_below"]["t_below"]) / ts, 12));
+  // n = g/sqrt(m k) = 2/5 rational: the exact band n (1 -+ 1%); the text in J and s.
+  const auto e = cli_json("coupling --mass 0.5 --stiffness 200 --gyro 4 --velocity 0.1 --tolerance 1% --horizon-s 2 --json --quiet");
+  CHECK(e["band"]["n1"] == "99/250");
+  CHECK(e["band"]["n2"] == "101/250");
+  const auto text = cli_run(plant + "--tolerance 1% --below 1e-4 --quiet").out;
+  CHECK(text.find("band n in [") != std::string::npos);
+  CHECK(text.find("over [0, 1.5 s]:") != std::string::npos);
+  CHECK(text.find(" J  (") != std::string::npos);
+  CHECK(text.find(" s: every n of the band has H_q <= E by then") != std::string::npos);
+  check_rejected(plant + "--band 0.3:0.5", 2, "--band");
+  check_rejected(plant + "--tolerance 1% --certificate c.json", 2, "--certificate");
+  check_rejected(plant + "--tolerance 1% --qdot0 2", 2, "--qdot0");
 }
 
 TEST_CASE("units: bad plant inputs are refused with one line and exit 2", "[units][cli]") {
@@ -184,8 +258,42 @@ TEST_CASE("units: bad plant inputs are refused with one line and exit 2", "[unit
   check_rejected("coupling 0.4 --mass 0.5" + ok, 2, "drop N");
   check_rejected("coupling --n2 4/25 --mass 0.5" + ok, 2, "drop --n2");
   check_rejected("coupling --mass 0.5" + ok + " --qdot0 2", 2, "--qdot0");
-  check_rejected("coupling --mass 0.5" + ok + " --tolerance 1%", 2, "--tolerance");
+  check_rejected("coupling --mass 0.5" + ok + " --band 0.1:0.2", 2, "--band");
   check_rejected("coupling --mass 0.5" + ok + " --horizon 3 --horizon-s 2", 2, "--horizon-s");
   check_rejected("coupling 0.4 --horizon-s 2", 2, "--horizon-s");
   check_rejected("coupling --mass abc" + ok, 2, "--mass");
+}
+
+TEST_CASE("units: plot energy and plot phase take --qdot0 (energies times qdot0^2, radii times qdot0)", "[units][cli]") {
+  if (!cli_available()) return;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("gyrores-units-plot-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto out = [&](const std::string& name) { return (dir / name).string(); };
+  REQUIRE(cli_run("plot energy 6 5 --out " + out("e1.svg")).status == 0);
+  REQUIRE(cli_run("plot energy 6 5 --qdot0 3 --out " + out("e3.svg")).status == 0);
+  REQUIRE(cli_run("plot energy 6 5 --qdot0 1 --out " + out("e1b.svg")).status == 0);
+  // qdot0 = 1 given is the default, byte for byte.
+  CHECK(file_text(out("e1.dat")) == file_text(out("e1b.dat")));
+  const auto a = energy_rows(out("e1.dat")), b = energy_rows(out("e3.dat"));
+  REQUIRE(a.size() > 100);
+  REQUIRE(a.size() == b.size());
+  // H_q(0) = qdot0^2/2 = 9/2 and H_q + H_z = 9/2 throughout (the whole energy; an independent value).
+  CHECK(b[0][1] == 4.5);
+  bool times_same = true, squared = true, linear = true;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    times_same = times_same && a[i][0] == b[i][0];
+    squared = squared && std::abs(b[i][1] - 9 * a[i][1]) <= 1e-8 * 4.5 && std::abs(b[i][1] + b[i][2] - 4.5) <= 1e-8;
+    linear = linear && std::abs(b[i][1] - 3 * a[i][1]) <= 1e-8 * 4.5;
+  }
+  CHECK(times_same);
+  CHECK(squared);
+  CHECK_FALSE(linear);  // must fail: the energy scaled by qdot0, not its square
+  // The phase portrait: the maximal circle is the radius qdot0 = 3/2 (index 3 of its data).
+  REQUIRE(cli_run("plot phase --n 0.3 --qdot0 3/2 --out " + out("p.svg")).status == 0);
+  const std::string phase = file_text(out("p.dat"));
+  CHECK(phase.find("# index 3: maximal circle, radius qdot0 = 1.5 ") != std::string::npos);
+  CHECK(phase.find("qdot0 = 3/2") != std::string::npos);  // in the title
+  check_rejected("plot energy 6 5 --qdot0 0 --out " + out("x.svg"), 2, "--qdot0");
+  check_rejected("plot phase 6 5 --qdot0 -1 --out " + out("x.svg"), 2, "--qdot0");
+  std::filesystem::remove_all(dir);
 }

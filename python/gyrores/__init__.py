@@ -798,17 +798,17 @@ def coupling(n=None, n2=None, horizon=None, below=None, convergents=8, digits=12
     impulse's level). horizon: default 100 (model time t omega0).
 
     plant: a physical plant (plant(...), or mass, stiffness, gyro, velocity), instead of n, n2, pair
-    and qdot0 (no band): the horizon values (h_min_horizon in J, t_min_horizon and t_below in s,
+    and qdot0 (with tolerance, not band): the horizon values (h_min_horizon in J, t_min_horizon and t_below in s,
     r_min_horizon the amplitude in m) and t_min_paper (s) in its units, the pair's values in model
     units; horizon_s: the horizon in seconds (else horizon in model time). Adds ``plant`` (as
     plant() gives it), ``horizon_s`` and ``horizon_exact`` (False when T = horizon_s omega0 is
     irrational: the minimum is then proved over [0, T'], T' its upper rounding to digits + 20
-    significant digits, and ``horizon`` is T').
+    significant digits, and ``horizon`` is T'). tolerance with a plant: the band of the plant's
+    n = g/sqrt(m k) (the same tolerance on g), its guarantees in J and its times (the first time
+    below, each ``at``'s t_min and t_below) in s; the band's n1, n2 and horizon stay model units.
     """
     f = "coupling"
     d = _args.bounded(digits, f, "digits", 1, 1000)
-    if band is not None and tolerance is not None:
-        raise UsageError(f"{f}(): give at most one of band and tolerance")
     bd = d if band_digits is None else _args.bounded(band_digits, f, "band_digits", 1, 10000)
     if pair is not None and not (isinstance(pair, (tuple, list)) and len(pair) == 2):
         raise UsageError(f"{f}(): pair must be (tau, sigma), got {_args._describe(pair)}")

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <gyrores/app/coupling.hpp>
+#include <gyrores/app/coupling_input.hpp>
 #include <gyrores/app/plant.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/rational.hpp>
@@ -32,14 +33,6 @@ coupling_spec spec_of(const std::string& text, bool is_n2, const std::string& wh
   return is_n2 ? coupling_spec::from_n2(parse_rational(text, what)) : coupling_spec::from_n(parse_rational(text, what));
 }
 
-// n^2 = (tau - sigma)^2/(tau sigma) of pair = (tau, sigma).
-big_rational pair_n2(const py::object& pair) {
-  const py::tuple t = py::tuple(pair);
-  if (t.size() != 2) throw usage_error("pair must be (tau, sigma)");
-  const resonant_pair<big_int> p = pair_of(t[0], t[1]);
-  return pair_coupling_n2(p.tau(), p.sigma());
-}
-
 // The plant (mass, stiffness, gyro, velocity) as texts.
 plant_inputs plant_of(const py::object& plant) {
   const py::tuple t = py::tuple(plant);
@@ -49,25 +42,9 @@ plant_inputs plant_of(const py::object& plant) {
                      names);
 }
 
-// The band asked for, from "N1:N2" or a tolerance "P%" around n, as the CLI reads them
-// (src/cli/cmd_coupling.cpp); checked before any work (the coupling's own analysis comes first).
-std::optional<std::pair<big_rational, big_rational>> band_of(const py::object& n, const py::object& n2, const py::object& band,
-                                                             const py::object& tolerance, const py::object& pair) {
-  if (!band.is_none() && !tolerance.is_none()) throw usage_error("give at most one of band and tolerance");
-  std::optional<std::pair<big_rational, big_rational>> b;
-  if (!band.is_none()) b = parse_band(band.cast<std::string>(), "band");
-  if (!tolerance.is_none()) {
-    if (n.is_none() && n2.is_none() && pair.is_none()) throw usage_error("tolerance needs the coupling n, n2 or pair");
-    if (!n.is_none()) b = parse_tolerance_band(parse_rational(rational_text(n), "n"), tolerance.cast<std::string>(), "tolerance");
-    else {  // n = sqrt(n2): the exact band, or (n irrational) rational ends enclosing it outward
-      const big_rational c2 = n2.is_none() ? pair_n2(pair) : parse_rational(rational_text(n2), "n2");
-      const tolerance_band_ends t = parse_tolerance_band_n2(c2, tolerance.cast<std::string>(), "tolerance");
-      b.emplace(t.n1, t.n2);
-    }
-  }
-  if (b) check_band(b->first, b->second, "band");
-  return b;
-}
+// Python's spelling of each argument in a conflict's one-line message (app/coupling_input.hpp).
+const app::coupling_names python_names{"n", "n2", "pair", "plant", "qdot0", "horizon", "horizon_s", "band", "tolerance",
+                                       "certificate"};
 
 struct coupling_and_band {
   std::optional<coupling_report> report;
@@ -75,74 +52,63 @@ struct coupling_and_band {
 };
 
 // The dict of `gyrores coupling --json`, with "band" when a band or tolerance is given; a band
-// alone (no n, n2) gives the CLI's {"horizon", "theorem", "band"}.
+// alone (no n, n2, pair or plant) gives the CLI's {"horizon", "theorem", "band"}. Every argument
+// parsed here, the coupling, units, horizon and band chosen by the app layer, as the CLI does.
 py::object coupling_dict(const py::object& n, const py::object& n2, const py::object& horizon_given,
                          const py::object& below, std::int64_t convergents, long long digits, const py::object& band,
                          const py::object& tolerance, long long band_digits, const std::string& qdot0, const py::object& pair,
                          const py::object& plant, const py::object& horizon_s) {
-  const int given = int(!n.is_none()) + int(!n2.is_none()) + int(!pair.is_none());
-  const bool band_alone = given == 0 && plant.is_none() && !band.is_none();
-  app::coupling_request request;
-  coupling_report_options& opt = request.options;
-  opt.digits = checked_digits(digits, 1, report_digits_max);
-  if (!plant.is_none()) {  // the plant's coupling, units and horizon (app/plant.hpp)
-    if (given > 0) throw usage_error("the plant gives the coupling n = g/sqrt(m k): drop n, n2 or pair");
-    if (qdot0 != "1") throw usage_error("the plant's velocity sets the impulse: drop qdot0");
-    if (!band.is_none() || !tolerance.is_none())
-      throw usage_error("band and tolerance take the model's couplings, not a plant: give n2 (the plant's n2) and qdot0");
-    request.plant = plant_of(plant);
-  } else {
-    if (!band_alone && given != 1) throw usage_error("give exactly one of n (the coupling), n2 (its square) or pair");
-    if (!horizon_s.is_none()) throw usage_error("horizon_s (seconds) needs a plant");
-    request.qdot0 = parse_qdot0(qdot0, "qdot0");
+  app::coupling_given g;
+  g.digits = checked_digits(digits, 1, report_digits_max);
+  if (!n.is_none()) g.n = parse_rational(rational_text(n), "n");
+  if (!n2.is_none()) g.n2 = parse_rational(rational_text(n2), "n2");
+  if (!pair.is_none()) {
+    const py::tuple t = py::tuple(pair);
+    if (t.size() != 2) throw usage_error("pair must be (tau, sigma)");
+    g.pair = pair_of(t[0], t[1]);
   }
-  if (!horizon_s.is_none() && !horizon_given.is_none()) throw usage_error("give at most one of horizon and horizon_s");
-  const std::string horizon = horizon_given.is_none() ? "100" : horizon_given.cast<std::string>();
-  std::optional<app::plant_numbers> numbers;
-  std::optional<app::plant_horizon> ph;
-  if (request.plant) {
-    numbers = app::plant_numbers_of(*request.plant, opt.digits);
-    if (!horizon_s.is_none())
-      ph = app::plant_horizon_of(*request.plant, horizon_of(horizon_s.cast<std::string>(), "horizon_s"), opt.digits);
-  }
-  const big_rational energy_scale =
-      request.plant ? big_rational(request.plant->mass * request.plant->velocity * request.plant->velocity)
-                    : big_rational(request.qdot0 * request.qdot0);
+  if (!plant.is_none()) g.plant = plant_of(plant);
+  if (const big_rational q = parse_qdot0(qdot0, "qdot0"); q != 1) g.qdot0 = q;  // qdot0 = 1 is the default
+  if (!horizon_given.is_none()) g.horizon = horizon_of(horizon_given.cast<std::string>(), "horizon");
+  if (!horizon_s.is_none()) g.horizon_s = horizon_of(horizon_s.cast<std::string>(), "horizon_s");
+  if (!band.is_none()) g.band = parse_band(band.cast<std::string>(), "band");
+  if (!tolerance.is_none()) g.tolerance = tolerance.cast<std::string>();
+  const app::coupling_selection s = app::select_coupling(g, python_names);
   if (convergents < 0 || convergents > std::int64_t(app::coupling_convergents_max))
     throw usage_error("convergents must be in [0, " + std::to_string(app::coupling_convergents_max) + "]");
-  opt.convergents = std::size_t(convergents);
-  opt.horizon = ph ? ph->model : horizon_of(horizon, "horizon");
-  if (ph) check_horizon_limits(opt.horizon, "horizon_s times omega0");
-  if (!below.is_none()) opt.below = level_of(below.cast<std::string>(), energy_scale);
-  if (request.plant) request.spec = coupling_spec::from_n2(request.plant->n2());
-  else if (!band_alone)
-    request.spec = !n.is_none()  ? spec_of(rational_text(n), false, "n")
-                   : !n2.is_none() ? spec_of(rational_text(n2), true, "n2")
-                                   : coupling_spec::from_n2(pair_n2(pair));
-  const auto ends = band_of(n, n2, band, tolerance, pair);
+  std::optional<big_rational> level;
+  if (!below.is_none()) level = level_of(below.cast<std::string>(), s.energy_scale());
+  app::coupling_request request;
+  if (s.spec) {
+    request = app::coupling_request_of(s);
+    request.options.digits = g.digits;
+    request.options.convergents = std::size_t(convergents);
+    request.options.below = level;
+  }
   app::band_request bq;
-  bq.qdot0 = request.qdot0;
-  if (ends) {
-    bq.n1 = ends->first;
-    bq.n2 = ends->second;
-    bq.horizon = opt.horizon;
-    bq.below = opt.below;
+  if (s.band) {
+    bq = app::band_request_of(s);
+    bq.below = level;
     // 0: the coupling's own digits, as the CLI's --band-digits (17 when Python wants floats).
-    bq.digits = band_digits > 0 ? checked_digits(band_digits, 1, report_digits_max) : opt.digits;
+    bq.digits = band_digits > 0 ? checked_digits(band_digits, 1, report_digits_max) : g.digits;
   }
   // The stop flag goes into the library: on Ctrl-C the proofs end at their next safe point (a
   // band's bracket so far is then not returned: KeyboardInterrupt).
-  const coupling_and_band r = run_interruptible<coupling_and_band>([band_alone, request, ends, bq](stop_token stop) mutable {
+  const bool analyse = s.spec.has_value(), prove_band = s.band.has_value();
+  const coupling_and_band r = run_interruptible<coupling_and_band>([analyse, prove_band, request, bq](stop_token stop) mutable {
     coupling_and_band out;
     request.options.stop = bq.stop = stop;
-    if (!band_alone) out.report = app::run_coupling(request).report;
-    if (ends) {
+    if (analyse) out.report = app::run_coupling(request).report;
+    if (prove_band) {
       out.band = app::run_band(bq);
       if (out.band->interrupted) throw interrupted();
     }
     return out;
   });
-  if (band_alone)
+  // The horizon as the CLI's JSON states it: as given, or the model's horizon of horizon_s.
+  const std::string horizon =
+      s.horizon_s ? s.horizon.str() : horizon_given.is_none() ? std::string("100") : horizon_given.cast<std::string>();
+  if (!analyse)
     return to_python(json{{"horizon", horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(bq, *r.band)}});
   json input = !n.is_none() ? json{{"n", rational_text(n)}} : !n2.is_none() ? json{{"n2", rational_text(n2)}} : json::object();
   if (!pair.is_none()) {  // as the CLI echoes --pair TAU SIGMA
@@ -154,15 +120,10 @@ py::object coupling_dict(const py::object& n, const py::object& n2, const py::ob
     input = json{{"mass", t[0].cast<std::string>()}, {"stiffness", t[1].cast<std::string>()},
                  {"gyro", t[2].cast<std::string>()}, {"velocity", t[3].cast<std::string>()}};
   }
-  json j = coupling_report_json(input, ph ? ph->model.str() : horizon, request.options.digits, *r.report);
+  json j = coupling_report_json(input, horizon, g.digits, *r.report);
+  app::add_units_json(j, s, horizon_s.is_none() ? std::nullopt : std::optional<std::string>(horizon_s.cast<std::string>()),
+                      below.is_none() ? std::nullopt : std::optional<std::string>(below.cast<std::string>()));
   if (r.band) j["band"] = app::band_result_json(bq, *r.band);
-  if (request.qdot0 != 1) j["qdot0"] = rational_str(request.qdot0);
-  if (request.plant) {  // as `gyrores coupling --json` with a plant
-    j["plant"] = app::plant_json(*request.plant, *numbers);
-    j["horizon_s"] = horizon_s.is_none() ? json(nullptr) : json(horizon_s.cast<std::string>());
-    j["horizon_exact"] = !ph || ph->exact;
-  }
-  if ((request.qdot0 != 1 || request.plant) && j.contains("below")) j["below"]["level_given"] = below.cast<std::string>();
   return to_python(j);
 }
 

@@ -71,12 +71,40 @@ def test_pair_tolerance_is_the_band_around_its_coupling():
     assert a.band.absorption.h_min == b.band.absorption.h_min
 
 
+def test_plant_tolerance_is_the_band_of_its_n_in_joules_and_seconds():
+    p = gyrores.plant(mass="0.3", stiffness=200, gyro=3, velocity="0.2")
+    r = gyrores.coupling(plant=p, tolerance="1%", horizon_s="1.5", below="1e-4", convergents=0)
+    # The reference: the dimensionless band over the same model horizon at the unit level, at 30
+    # digits, scaled by hand with mpmath: E = m V^2 H_q, t_s = t sqrt(m/k).
+    u = gyrores.coupling(n2=p.n2, tolerance="1%", horizon=r.horizon, below=r.below.level, convergents=0, band_digits=30)
+    assert r.below.level == Fraction(1, 120) and not r.horizon_exact
+    assert (r.band.n1, r.band.n2) == (u.band.n1, u.band.n2)
+    with mpmath.workdps(60):
+        mv2, ts = mpmath.mpf("0.3") * mpmath.mpf("0.2") ** 2, mpmath.sqrt(mpmath.mpf("0.3") / 200)
+        for g in ("absorption", "containment"):
+            assert _close(r.band[g].h_min, mpmath.mpf(u.band[g].h_min) * mv2, 12)
+            assert _close(r.band[g].at.t_min, mpmath.mpf(u.band[g].at.t_min) * ts, 12)
+            # Must fail: the energy scaled by m V.
+            assert not _close(r.band[g].h_min, mpmath.mpf(u.band[g].h_min) * mpmath.mpf("0.06"), 12)
+        assert _close(r.band.first_below.t_below, mpmath.mpf(u.band.first_below.t_below) * ts, 12)
+        # Must fail: the time scaled by sqrt(k/m).
+        assert not _close(r.band.first_below.t_below, mpmath.mpf(u.band.first_below.t_below) / ts, 12)
+
+
+def test_plant_tolerance_is_the_cli(cli_json):
+    got = gyrores._gyrores._coupling(None, None, None, "1e-5", 0, 12, None, "1%", 0, "1", None,
+                                     ("0.5", "200", "4", "0.1"), "2")
+    assert got == cli_json("coupling", "--mass", "0.5", "--stiffness", "200", "--gyro", "4", "--velocity", "0.1",
+                           "--horizon-s", "2", "--below", "1e-5", "--tolerance", "1%", "--convergents", "0", "--quiet")
+
+
 @pytest.mark.parametrize("call, message", [
     (lambda: gyrores.plant(mass=-1, stiffness=200, gyro=4, velocity=1), "mass must be > 0"),
     (lambda: gyrores.plant(mass=1, stiffness=0, gyro=4, velocity=1), "stiffness must be > 0"),
     (lambda: gyrores.coupling(0.4, plant=(1, 200, 4, 1)), "drop n"),
     (lambda: gyrores.coupling(plant=(1, 200, 4, 1), qdot0=2), "qdot0"),
-    (lambda: gyrores.coupling(plant=(1, 200, 4, 1), tolerance="1%"), "tolerance"),
+    (lambda: gyrores.coupling(plant=(1, 200, 4, 1), band=(0.1, 0.2)), "band is a band of the model's couplings"),
+    (lambda: gyrores.coupling(plant=(1, 200, 4, 1), horizon=3, horizon_s=1), "give at most one of horizon \\(model time\\) and horizon_s"),
     (lambda: gyrores.coupling(2, horizon_s=1), "horizon_s"),
     (lambda: gyrores.coupling(2, qdot0=0), "qdot0"),
     (lambda: gyrores.coupling(pair=(6,), tolerance="1%"), "pair"),

@@ -1,7 +1,11 @@
 // include/gyrores/app/band.hpp
 #include <gyrores/app/band.hpp>
 
+#include <algorithm>
+
+#include <gyrores/app/plant.hpp>
 #include <gyrores/core/enclosure.hpp>
+#include <gyrores/core/real.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/report_json.hpp>
 #include <gyrores/model/inputs.hpp>
@@ -17,6 +21,28 @@ band_attained attained(const band_coupling& c) {
   return {c, coupling_resonant_pair(c.spec), std::nullopt, std::nullopt};
 }
 
+// The band-wide first time below, in the units sqrt(time2) (a plant's seconds; 1: model time).
+// The proof settles the model time's rounding; the scaled enclosure (report/scales.hpp) may still
+// straddle a rounding boundary, so the proof is asked for guard digits, and more while the
+// scaled rounding is undecided. The bracket of an interrupted proof is scaled alike.
+band_first_below first_below_in(const band_request& request, band_options opt, const big_rational& time2) {
+  if (time2 == 1) return prove_band_first_below(request.n1, request.n2, *request.below, opt);
+  const mpfr_prec_t bits = mpfr_prec_t(digits10_to_bits(request.digits + 20));
+  for (unsigned guard = 3;; guard *= 2) {
+    opt.digits = std::min(request.digits + guard, unsigned(report_digits_max));
+    band_first_below b = prove_band_first_below(request.n1, request.n2, *request.below, opt);
+    if (b.never) return b;
+    const enclosure t = scaled_sqrt(b.time, time2, bits);
+    const bool decided = t.rounded(request.digits).has_value();
+    if (b.settled && !decided && opt.digits < report_digits_max && guard < 200) continue;
+    b.time = t;
+    b.at_time = scaled_sqrt(b.at_time, time2, bits);
+    if (b.settled && !decided) b.unsettled_reason = "the rounding of the time in seconds was not decided";
+    b.settled = b.settled && decided;
+    return b;
+  }
+}
+
 }  // namespace
 
 band_result run_band(const band_request& request) {
@@ -30,6 +56,9 @@ band_result run_band(const band_request& request) {
   if (!(request.qdot0 > 0)) throw usage_error("qdot0 must be > 0, got " + rational_str(request.qdot0));
   if (request.certificate && request.qdot0 != 1)
     throw usage_error("a band certificate states the unit impulse (qdot0 = 1): drop qdot0 or the certificate");
+  if (request.plant && request.qdot0 != 1) throw usage_error("give a plant's velocity or qdot0, not both");
+  if (request.plant && request.certificate)
+    throw usage_error("a band certificate states the unit impulse in model units: drop the plant or the certificate");
   if (request.certificate) {  // what a band certificate states, gyrores check must read
     check_band_certificate_horizon(request.horizon);
     if (request.digits > unsigned(gyrores_checker::band_max_digits))
@@ -42,14 +71,14 @@ band_result run_band(const band_request& request) {
   opt.max_intervals = request.max_intervals;
   opt.stop = request.stop;
   opt.progress = request.progress;
-  opt.energy_scale = request.qdot0 * request.qdot0;
-  const report_scales scales = report_scales::of_qdot0(request.qdot0);
+  const report_scales scales = request.plant ? plant_scales(*request.plant) : report_scales::of_qdot0(request.qdot0);
+  opt.energy_scale = scales.energy;
   band_result r;
   r.absorption = prove_band_absorption(request.n1, request.n2, request.horizon, opt);
   if (!r.absorption.interrupted) r.containment = prove_band_containment(request.n1, request.n2, request.horizon, opt);
   r.interrupted = r.absorption.interrupted || (r.containment && r.containment->interrupted);
   if (request.below && !r.interrupted) {
-    r.below = prove_band_first_below(request.n1, request.n2, *request.below, opt);
+    r.below = first_below_in(request, opt, scales.time2);
     r.interrupted = r.below->interrupted;
   }
   if (r.interrupted) return r;
@@ -76,7 +105,8 @@ band_result run_band(const band_request& request) {
       report_horizon_minimum(r.containment->at.spec, request.horizon, request.digits, request.stop, proof_use::report, scales);
   if (r.below) {
     r.below_at = attained(r.below->at);
-    r.below_at->first_below = report_first_below(r.below->at.spec, *request.below, request.digits, request.stop);
+    r.below_at->first_below =
+        report_first_below(r.below->at.spec, *request.below, request.digits, request.stop, proof_use::report, scales);
   }
   return r;
 }

@@ -1,13 +1,14 @@
 // gyrores coupling N | --n2 P/Q | --pair TAU SIGMA [--qdot0 V] [--horizon T] [--below E]
 //                  [--convergents K] [--digits D] [--json] [--certificate FILE]
 //                  [--band N1:N2 | --tolerance P%]
-// gyrores coupling --mass M --stiffness K --gyro G --velocity V [--horizon-s T] [--below E] ...
-//                  (a physical plant, app/plant.hpp, docs/units.md: joules and seconds)
+// gyrores coupling --mass M --stiffness K --gyro G --velocity V [--horizon-s T] [--below E]
+//                  [--tolerance P%] ... (a physical plant, app/plant.hpp, docs/units.md: joules and seconds)
 // Any coupling n (app/coupling.hpp, report/coupling_report.hpp): exact resonance test on n^2;
 // the pair analysis when resonant; the minimum of H_q over [0, T] with its first time and the
 // first time H_q <= E (the horizon theorem, proved), with their certificate from the same
 // proofs; the infimum over all time; the continued-fraction convergents of W1/W2 as resonant
-// pairs. The band of couplings is still proved here by theorem/band.hpp.
+// pairs; the guarantees over a band of couplings (app/band.hpp). This file parses, asks the app
+// layer (app/coupling_input.hpp chooses the coupling, units and band) and prints.
 #include <unistd.h>
 
 #include <chrono>
@@ -16,6 +17,7 @@
 
 #include <gyrores/app/band.hpp>
 #include <gyrores/app/coupling.hpp>
+#include <gyrores/app/coupling_input.hpp>
 #include <gyrores/app/plant.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/io/files.hpp>
@@ -72,17 +74,18 @@ std::string lobe_text(const std::optional<horizon_lobe>& lobe) {
   return "lobe k = " + lobe->k.str() + ", ||k x - 1/2|| ~ " + nu + " (exact: --json)";
 }
 
-// The units of a request: the impulse qdot0 (model units), or a physical plant (J, s, m).
-struct unit_choice {
-  big_rational qdot0 = 1;
-  std::optional<plant_inputs> plant;
-  std::optional<app::plant_numbers> numbers;  // the plant's own numbers at --digits
-  std::optional<app::plant_horizon> horizon;  // --horizon-s as the model's horizon
-  std::string horizon_text;                  // the horizon as the text says it ("100", "2 s")
-  big_rational energy_scale() const { return plant ? big_rational(plant->mass * plant->velocity * plant->velocity) : big_rational(qdot0 * qdot0); }
+// The coupling, units, horizon and band chosen (app/coupling_input.hpp), with what the text says
+// of them: the horizon as given ("100", "2 s") and the units of energies and times.
+struct unit_choice : app::coupling_selection {
+  std::string horizon_text;
   std::string energy_unit() const { return plant ? " J" : ""; }
   std::string time_unit() const { return plant ? " s" : ""; }
 };
+
+// The level of --below as given, with its unit (a percentage of H_q(0) has none).
+std::string level_text(const coupling_args& a, const unit_choice& u) {
+  return a.below + (!a.below.empty() && a.below.back() == '%' ? std::string() : u.energy_unit());
+}
 
 // An energy with its unit and its share of H_q(0).
 std::string energy_in(const unit_choice& u, const proved_real& e, const proved_real& share) {
@@ -103,9 +106,9 @@ std::string plant_text(const unit_choice& u, unsigned digits) {
      << "  time unit 1/omega0      " << plain(v.time_scale) << " s  (model time t = omega0 t_s)\n"
      << "  H_q(0) = m V^2/2        " << decimal_text(v.h_q0, digits)
      << " J  (the energy (m q'^2 + k q^2)/2 of q is m V^2 H_q: below, energies in J, times in s)\n";
-  if (u.horizon && !u.horizon->exact)
+  if (u.horizon_s && !u.horizon_s->exact)
     os << "  horizon                 " << u.horizon_text << " = T/omega0 with T irrational: proved over [0, T'], T' = "
-       << plain(format_rational_scientific(u.horizon->model.value, digits + 20)) << (u.horizon->model.times_pi ? " pi" : "")
+       << plain(format_rational_scientific(u.horizon_s->model.value, digits + 20)) << (u.horizon_s->model.times_pi ? " pi" : "")
        << " >= T (T'/T - 1 < 10^-" << digits + 19 << ")\n";
   return os.str();
 }
@@ -145,9 +148,7 @@ std::string coupling_text(const coupling_args& a, const unit_choice& u, const co
      << "\n";
   if (r.below) {
     const first_below_report& b = *r.below;
-    // A percentage is a share of H_q(0) in any units; only an absolute level carries the unit.
-    const bool share = !a.below.empty() && a.below.back() == '%';
-    os << "first time H_q <= " << a.below << (share ? (u.plant ? " of H_q(0)" : "") : u.energy_unit()) << ":\n";
+    os << "first time H_q <= " << level_text(a, u) << ":\n";
     if (b.never) os << "  never         " << b.reason << "\n";
     else os << "  t =           " << plain(b.t_below) << u.time_unit() << "\n  because       " << b.reason << "\n";
   }
@@ -165,61 +166,65 @@ std::string coupling_text(const coupling_args& a, const unit_choice& u, const co
 }
 
 // Where a guarantee is attained: the exact coupling, its pair, its own minimum's lobe and time.
-std::string attained_text(const app::band_attained& a, unsigned digits) {
+std::string attained_text(const app::band_attained& a, unsigned digits, const std::string& time_unit) {
   // A long fraction (an end of a band rounded outward) as its decimal; exact in --json.
   const std::string n2 = rational_str(a.coupling.spec.n2);
   std::string out = "at n^2 = " + (n2.size() <= 40 ? n2 : "~" + plain(format_rational_scientific(a.coupling.spec.n2, digits)) + " (exact: --json)");
   if (a.pair) out += ", the pair " + a.pair->str();
   if (a.minimum) {
     const horizon_minimum_report& m = *a.minimum;
-    out += m.proof.at_horizon_end ? ", at the horizon's end t = " + plain(m.t_min)
-                            : ", lobe k = " + (m.lobe ? m.lobe->k.str() : std::string("?")) + ", t = " + plain(m.t_min);
+    out += m.proof.at_horizon_end ? ", at the horizon's end t = " + plain(m.t_min) + time_unit
+                            : ", lobe k = " + (m.lobe ? m.lobe->k.str() : std::string("?")) + ", t = " + plain(m.t_min) + time_unit;
   }
-  if (a.first_below) out += a.first_below->never ? ", never" : ", its first time " + plain(a.first_below->t_below);
+  if (a.first_below) out += a.first_below->never ? ", never" : ", its first time " + plain(a.first_below->t_below) + time_unit;
   return out;
 }
 
-// A guarantee (an energy) with its share of H_q(0) = 1/2: the share correctly rounded when its
-// enclosure decides it, else its proved bracket (report/share.hpp).
-std::string extreme_text(const band_extreme& e, unsigned digits, const big_rational& qdot0) {
+// A guarantee (an energy, times the unit impulse's by energy_scale, in `unit`) with its share of
+// H_q(0): the share correctly rounded when its enclosure decides it, else its proved bracket
+// (report/share.hpp).
+std::string extreme_text(const band_extreme& e, unsigned digits, const unit_choice& u) {
   if (e.settled && e.value.hi_rational() == 0) return "0 (exactly)";
-  const enclosure share = scaled(e.value, share_factor(qdot0));
+  const enclosure share = scaled(e.value, share_factor() / u.energy_scale());
   const unsigned sd = std::min(digits, share_digits);
   const auto rounded_share = share.rounded(sd);
   const auto [slo, shi] = share.outward(sd);
   const std::string share_text =
       "  (" + (rounded_share ? plain(*rounded_share) : "in [" + plain(slo) + ", " + plain(shi) + "]") + "% of H_q(0))";
-  if (e.settled) return plain(*e.value.rounded(digits)) + share_text;
+  if (e.settled) return plain(*e.value.rounded(digits)) + u.energy_unit() + share_text;
   const auto [lo, hi] = e.value.outward(digits);
-  return "in [" + plain(lo) + ", " + plain(hi) + "]" + share_text + " (" +
+  return "in [" + plain(lo) + ", " + plain(hi) + "]" + u.energy_unit() + share_text + " (" +
          (e.interrupted ? std::string("interrupted") : "not settled: " + e.unsettled_reason) + ")";
 }
 
-std::string band_text(const coupling_args& a, const app::band_request& q, const app::band_result& b, const std::string& note) {
+std::string band_text(const coupling_args& a, const unit_choice& u, const app::band_request& q, const app::band_result& b,
+                      const std::string& note) {
   std::ostringstream os;
   const unsigned d = q.digits;
-  os << "band n in [" << decimal_text(q.n1, d) << ", " << decimal_text(q.n2, d) << "], over [0, "
-     << (a.horizon.empty() ? "100" : a.horizon) << "]:\n";
+  const std::string t_unit = u.time_unit();
+  os << "band n in [" << decimal_text(q.n1, d) << ", " << decimal_text(q.n2, d) << "], over [0, " << u.horizon_text << "]:\n";
   if (!note.empty()) os << "  " << note << "\n";
+  if (u.plant)
+    os << "  (n = g/sqrt(m k): a tolerance on n is that tolerance on g at this m and k; energies in J, times in s)\n";
   os
-     << "  absorption guarantee   " << extreme_text(b.absorption, d, q.qdot0) << "\n"
+     << "  absorption guarantee   " << extreme_text(b.absorption, d, u) << "\n"
      << "                         every n of the band has min H_q <= this over [0, T] (the highest minimum)\n";
-  if (b.absorption_at) os << "                         " << attained_text(*b.absorption_at, d) << "\n";
-  os << "  containment guarantee  " << (b.containment ? extreme_text(*b.containment, d, q.qdot0) : "not started (interrupted)") << "\n"
+  if (b.absorption_at) os << "                         " << attained_text(*b.absorption_at, d, t_unit) << "\n";
+  os << "  containment guarantee  " << (b.containment ? extreme_text(*b.containment, d, u) : "not started (interrupted)") << "\n"
      << "                         every n of the band keeps H_q >= this on [0, T] (the lowest minimum)\n";
-  if (b.containment_at) os << "                         " << attained_text(*b.containment_at, d) << "\n";
+  if (b.containment_at) os << "                         " << attained_text(*b.containment_at, d, t_unit) << "\n";
   if (b.below) {
     const band_first_below& f = *b.below;
-    os << "  first time H_q <= " << a.below << (f.never ? "\n  never                  " + f.reason + "\n" : "");
+    os << "  first time H_q <= " << level_text(a, u) << (f.never ? "\n  never                  " + f.reason + "\n" : "");
     if (!f.never) {
       os << "\n                         t = ";
-      if (f.settled) os << plain(*f.time.rounded(d));
+      if (f.settled) os << plain(*f.time.rounded(d)) << t_unit;
       else {
         const auto [lo, hi] = f.time.outward(d);
-        os << "in [" << plain(lo) << ", " << plain(hi) << "] (" << (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
+        os << "in [" << plain(lo) << ", " << plain(hi) << "]" << t_unit << " (" << (f.interrupted ? "interrupted" : "not settled: " + f.unsettled_reason) << ")";
       }
       os << ": every n of the band has H_q <= E by then (the latest first time)\n";
-      if (b.below_at) os << "                         " << attained_text(*b.below_at, d) << "\n";
+      if (b.below_at) os << "                         " << attained_text(*b.below_at, d, t_unit) << "\n";
     }
   }
   const bool settled = b.absorption.settled && (!b.containment || b.containment->settled) && (!b.below || b.below->settled);
@@ -272,69 +277,21 @@ app::band_result run_band(app::band_request& q, signal_scope& signals, bool quie
   return app::run_band(q);
 }
 
-// The band of --band N1:N2 or --tolerance P%, and what the text says of it.
-struct band_choice {
-  std::pair<big_rational, big_rational> ends;
-  std::string note;  // why the ends are not those of the request (n irrational), else empty
-};
+// The CLI's spelling of each argument in a conflict's one-line message (app/coupling_input.hpp).
+const app::coupling_names cli_names{"N", "--n2 P/Q", "--pair TAU SIGMA", "--mass, --stiffness, --gyro, --velocity",
+                                    "--qdot0", "--horizon", "--horizon-s", "--band", "--tolerance", "--certificate"};
 
-// The coupling given: N, --n2 P/Q or --pair TAU SIGMA (exactly one; the plant's, with a plant),
-// and its n^2 for a tolerance around it. Named as the text of a tolerance says it.
-struct coupling_given {
-  coupling_spec spec;
-  std::optional<big_rational> n;  // N when given (a tolerance around it is exact)
-  std::string name;               // "sqrt(1/12)", for the note of an irrational n
-};
-
-std::optional<coupling_given> coupling_of(const coupling_args& a, const unit_choice& u) {
-  const int given = int(!a.n.empty()) + int(!a.n2.empty()) + int(!a.pair.empty());
-  if (u.plant) {
-    if (given > 0)
-      throw usage_error(std::string("the plant gives the coupling n = g/sqrt(m k): drop ") +
-                        (!a.n.empty() ? "N" : !a.n2.empty() ? "--n2" : "--pair") + " or the plant options");
-    return coupling_given{coupling_spec::from_n2(u.plant->n2()), std::nullopt, "sqrt(" + rational_str(u.plant->n2()) + ")"};
-  }
-  if (given > 1) throw usage_error("give exactly one of N (the coupling), --n2 P/Q (its square) or --pair TAU SIGMA");
-  if (given == 0) return std::nullopt;
-  if (!a.n.empty()) {
-    const big_rational n = parse_rational(a.n, "N");
-    return coupling_given{coupling_spec::from_n(n), n, ""};
-  }
-  big_rational n2;
-  if (!a.n2.empty()) n2 = parse_rational(a.n2, "--n2");
-  else {
-    if (a.pair.size() != 2) throw usage_error("--pair takes two integers TAU SIGMA, got " + std::to_string(a.pair.size()) + " values");
-    const resonant_pair<big_int> p = parse_pair_arguments(a.pair[0], a.pair[1]);
-    n2 = pair_coupling_n2(p.tau(), p.sigma());
-  }
-  return coupling_given{coupling_spec::from_n2(n2), std::nullopt, "sqrt(" + rational_str(n2) + ")"};
-}
-
-// --band N1:N2, or --tolerance P% around N, sqrt(--n2) or a pair's n: with n irrational, rational
-// ends enclosing n (1 -+ P%) outward (model/inputs.hpp); a band's guarantees hold for a band
-// inside it (the absorption guarantee is its highest minimum, the containment guarantee its
-// lowest, the first time below E its latest).
-std::optional<band_choice> band_of(const coupling_args& a, const std::optional<coupling_given>& c, const unit_choice& u) {
-  if (!a.band.empty() && !a.tolerance.empty()) throw usage_error("give at most one of --band and --tolerance");
-  if (u.plant && (!a.band.empty() || !a.tolerance.empty()))
-    throw usage_error("--band and --tolerance take the model's couplings, not a plant: give --n2 " + rational_str(u.plant->n2()) +
-                      " (the plant's n^2) with --qdot0 for the impulse");
-  if (!a.band.empty()) return band_choice{parse_band(a.band, "--band"), ""};
-  if (a.tolerance.empty()) return std::nullopt;
-  if (!c) throw usage_error("--tolerance needs the coupling N, --n2 P/Q or --pair TAU SIGMA");
-  if (c->n) return band_choice{parse_tolerance_band(*c->n, a.tolerance, "--tolerance"), ""};
-  const tolerance_band_ends t = parse_tolerance_band_n2(c->spec.n2, a.tolerance, "--tolerance");
-  band_choice b{{t.n1, t.n2}, ""};
-  if (!t.exact)
-    b.note = "this band contains the band n (1 -+ " + a.tolerance + ") asked, n = " + c->name +
-             " irrational: its ends are rounded outward (exact: --json); the guarantees of a band hold for every band inside it";
-  return b;
-}
-
-// --qdot0 V, or the plant of --mass, --stiffness, --gyro, --velocity (all four, no --qdot0), and
-// the horizon: --horizon T (model units, default 100) or, with a plant, --horizon-s T (seconds).
+// Every argument parsed (each parser names its flag), then the coupling, its units, the horizon
+// and the band chosen by the app layer. A plant is the four flags --mass, --stiffness, --gyro,
+// --velocity together.
 unit_choice units_of(const coupling_args& a) {
-  unit_choice u;
+  app::coupling_given g;
+  if (!a.n.empty()) g.n = parse_rational(a.n, "N");
+  if (!a.n2.empty()) g.n2 = parse_rational(a.n2, "--n2");
+  if (!a.pair.empty()) {
+    if (a.pair.size() != 2) throw usage_error("--pair takes two integers TAU SIGMA, got " + std::to_string(a.pair.size()) + " values");
+    g.pair = parse_pair_arguments(a.pair[0], a.pair[1]);
+  }
   const std::string* plant_flags[4] = {&a.mass, &a.stiffness, &a.gyro, &a.velocity};
   static const std::string names[4] = {"--mass", "--stiffness", "--gyro", "--velocity"};
   int plant_given = 0;
@@ -343,54 +300,46 @@ unit_choice units_of(const coupling_args& a) {
     for (int i = 0; i < 4; ++i)
       if (plant_flags[i]->empty())
         throw usage_error("a plant needs --mass, --stiffness, --gyro and --velocity: " + names[i] + " is missing");
-  if (!a.horizon_s.empty() && plant_given == 0) throw usage_error("--horizon-s (seconds) needs a plant (--mass, --stiffness, --gyro, --velocity)");
-  if (!a.horizon_s.empty() && !a.horizon.empty()) throw usage_error("give at most one of --horizon (model time) and --horizon-s (seconds)");
-  u.horizon_text = a.horizon.empty() ? "100" : a.horizon;
-  if (plant_given == 0) {
-    if (!a.qdot0.empty()) u.qdot0 = parse_qdot0(a.qdot0, "--qdot0");
-    return u;
+  if (plant_given == 4) {
+    check_digits_flag(a.digits, 1, int(app::coupling_digits_max));  // the plant's numbers are printed at --digits
+    g.plant = parse_plant(a.mass, a.stiffness, a.gyro, a.velocity, names);
+    g.digits = unsigned(a.digits);
   }
-  if (!a.qdot0.empty()) throw usage_error("--velocity sets the plant's impulse: drop --qdot0");
-  u.plant = parse_plant(a.mass, a.stiffness, a.gyro, a.velocity, names);
-  check_digits_flag(a.digits, 1, int(app::coupling_digits_max));
-  u.numbers = app::plant_numbers_of(*u.plant, unsigned(a.digits));
-  if (!a.horizon_s.empty()) {
-    u.horizon = app::plant_horizon_of(*u.plant, parse_horizon_time(a.horizon_s, "--horizon-s"), unsigned(a.digits));
-    check_horizon_limits(u.horizon->model, "--horizon-s times omega0");
-    u.horizon_text = a.horizon_s + " s";
-  } else u.horizon_text += " (model time t omega0)";
+  if (!a.qdot0.empty()) g.qdot0 = parse_qdot0(a.qdot0, "--qdot0");
+  if (!a.horizon.empty()) g.horizon = parse_horizon_time(a.horizon, "--horizon");
+  if (!a.horizon_s.empty()) g.horizon_s = parse_horizon_time(a.horizon_s, "--horizon-s");
+  if (!a.band.empty()) g.band = parse_band(a.band, "--band");
+  g.tolerance = a.tolerance;
+  g.certificate = !a.certificate.empty();
+  unit_choice u;
+  static_cast<app::coupling_selection&>(u) = app::select_coupling(g, cli_names);
+  u.horizon_text = u.horizon_s ? a.horizon_s + " s" : (a.horizon.empty() ? "100" : a.horizon) + (u.plant ? " (model time t omega0)" : "");
   return u;
 }
 
 // The band request of --band/--tolerance: its digits are --band-digits, else --digits.
-app::band_request band_request_of(const coupling_args& a, const std::pair<big_rational, big_rational>& band,
-                                  const horizon_time& T, const unit_choice& u) {
-  app::band_request q;
-  q.qdot0 = u.qdot0;
+app::band_request band_request_of(const coupling_args& a, const unit_choice& u) {
+  app::band_request q = app::band_request_of(u);
   q.certificate = !a.certificate.empty();
   if (q.certificate) check_output_path(a.certificate);  // before the work
-  q.n1 = band.first;
-  q.n2 = band.second;
-  q.horizon = T;
   if (!a.below.empty()) q.below = parse_energy_level(a.below, "--below", u.energy_scale());
   q.digits = unsigned(a.band_digits > 0 ? a.band_digits : a.digits);
   check_flag_range(std::int64_t(q.digits), 1, std::int64_t(report_digits_max), a.band_digits > 0 ? "--band-digits" : "--digits");
   return q;
 }
-
 // A band's text or JSON; a Ctrl-C still prints the bracket reached, then exits 130.
-std::string band_output(const coupling_args& a, app::band_request& q, const std::string& note, const std::string& before,
-                        json* whole) {
+std::string band_output(const coupling_args& a, const unit_choice& u, app::band_request& q, const std::string& note,
+                        const std::string& before, json* whole, const std::string& horizon) {
   signal_scope signals;
   const app::band_result b = run_band(q, signals, a.quiet);
   // The band certificate, from the very proofs printed below (not when interrupted).
   if (b.certificate) write_file_atomically(a.certificate, band_certificate_text(*b.certificate));
   std::string out;
-  if (!a.json) out = before + band_text(a, q, b, note);
+  if (!a.json) out = before + band_text(a, u, q, b, note);
   else if (whole) {
     (*whole)["band"] = app::band_result_json(q, b);
     out = json_dump(*whole) + "\n";
-  } else out = json_dump(json{{"horizon", a.horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(q, b)}}) + "\n";
+  } else out = json_dump(json{{"horizon", horizon}, {"theorem", band_theorem_id}, {"band", app::band_result_json(q, b)}}) + "\n";
   if (b.interrupted) throw partial_answer{out, ""};
   // A certificate asked for and not written says so on the one stderr line.
   const std::string no_certificate =
@@ -401,47 +350,29 @@ std::string band_output(const coupling_args& a, app::band_request& q, const std:
   return out;
 }
 
-// The JSON of the units: "qdot0" (when not 1), or "plant" and the horizon in seconds; the level
-// of --below as given (its "level" is the unit impulse's).
-void units_json(json& j, const coupling_args& a, const unit_choice& u) {
-  if (u.qdot0 != 1) j["qdot0"] = rational_str(u.qdot0);
-  if (u.plant) {
-    j["plant"] = app::plant_json(*u.plant, *u.numbers);
-    j["horizon_s"] = a.horizon_s.empty() ? json(nullptr) : json(a.horizon_s);
-    j["horizon_exact"] = !u.horizon || u.horizon->exact;
-  }
-  if ((u.qdot0 != 1 || u.plant) && j.contains("below")) j["below"]["level_given"] = a.below;
-}
-
-std::string run_coupling(const coupling_args& given) {
-  coupling_args a = given;
+std::string run_coupling(const coupling_args& a) {
   const unit_choice u = units_of(a);
-  if (a.horizon.empty()) a.horizon = "100";
-  const horizon_time T = u.horizon ? u.horizon->model : parse_horizon_time(a.horizon, "--horizon");
-  if (u.horizon) a.horizon = T.str();  // the model's horizon, as the JSON states it
-  const std::optional<coupling_given> c = coupling_of(a, u);
-  const auto band = band_of(a, c, u);
-  if (band && !c) {
-    app::band_request q = band_request_of(a, band->ends, T, u);
-    return band_output(a, q, band->note, "", nullptr);
+  // The horizon as the JSON states it: as given, or the model's horizon of --horizon-s.
+  const std::string horizon = u.horizon_s ? u.horizon.str() : a.horizon.empty() ? "100" : a.horizon;
+  // --tolerance around an irrational n: the band's ends are rounded outward.
+  const std::string note =
+      u.band_outward ? "this band contains the band n (1 -+ " + a.tolerance + ") asked, n = " + u.coupling +
+                           " irrational: its ends are rounded outward (exact: --json); the guarantees of a band hold for every band inside it"
+                     : "";
+  if (!u.spec) {  // a band alone
+    app::band_request q = band_request_of(a, u);
+    return band_output(a, u, q, note, "", nullptr, horizon);
   }
   // With a band, --certificate is the band's certificate (both guarantees), refused before the work.
-  const bool band_certificate = band && !a.certificate.empty();
-  if (!c) throw usage_error("give exactly one of N (the coupling), --n2 P/Q (its square) or --pair TAU SIGMA");
+  const bool band_certificate = u.band && !a.certificate.empty();
   check_digits_flag(a.digits, 1, int(app::coupling_digits_max));
   check_flag_range(a.convergents, 0, std::int64_t(app::coupling_convergents_max), "--convergents");
-  app::coupling_request request;
-  request.spec = c->spec;
-  request.qdot0 = u.qdot0;
-  request.plant = u.plant;
+  app::coupling_request request = app::coupling_request_of(u);
   coupling_report_options& opt = request.options;
-  opt.horizon = T;
   if (!a.below.empty()) opt.below = parse_energy_level(a.below, "--below", u.energy_scale());
   opt.digits = unsigned(a.digits);
   opt.convergents = std::size_t(a.convergents);
   request.certificate = !a.certificate.empty() && !band_certificate;
-  if (!a.certificate.empty() && (u.qdot0 != 1 || u.plant))
-    throw usage_error("--certificate states the unit impulse in model units: drop --qdot0 or the plant options, or --certificate");
   if (band_certificate) {
     check_output_path(a.certificate);
     check_band_certificate_horizon(opt.horizon);
@@ -456,11 +387,12 @@ std::string run_coupling(const coupling_args& given) {
   json input = !a.n.empty() ? json{{"n", a.n}} : !a.n2.empty() ? json{{"n2", a.n2}} : json::object();
   if (!a.pair.empty()) input["pair"] = json::array({a.pair[0], a.pair[1]});
   if (u.plant) input = json{{"mass", a.mass}, {"stiffness", a.stiffness}, {"gyro", a.gyro}, {"velocity", a.velocity}};
-  json j = coupling_report_json(input, a.horizon, unsigned(a.digits), r);
-  units_json(j, a, u);
-  if (band) {
-    app::band_request q = band_request_of(a, band->ends, opt.horizon, u);
-    return band_output(a, q, band->note, coupling_text(a, u, r), &j);
+  json j = coupling_report_json(input, horizon, unsigned(a.digits), r);
+  app::add_units_json(j, u, a.horizon_s.empty() ? std::nullopt : std::optional<std::string>(a.horizon_s),
+                      a.below.empty() ? std::nullopt : std::optional<std::string>(a.below));
+  if (u.band) {
+    app::band_request q = band_request_of(a, u);
+    return band_output(a, u, q, note, coupling_text(a, u, r), &j, horizon);
   }
   if (!a.json) return coupling_text(a, u, r);
   return json_dump(j) + "\n";
@@ -481,7 +413,7 @@ command_runner install_coupling(CLI::App& app) {
   sub.add("--horizon-s", a->horizon_s, "with a plant: the horizon in seconds (instead of --horizon)");
   sub.add("--certificate", a->certificate, "write a certificate of the horizon minimum (and --below) to FILE, or with --band/--tolerance the band's (both guarantees): gyrores check FILE");
   sub.add("--band", a->band, "a band of couplings N1:N2: its absorption and containment guarantees over [0, T], proved (N optional)");
-  sub.add("--tolerance", a->tolerance, "the band n (1 -+ P%) around N, sqrt(--n2) or --pair's n, e.g. 1% (n irrational: ends rounded outward)");
+  sub.add("--tolerance", a->tolerance, "the band n (1 -+ P%) around N, sqrt(--n2), --pair's n or the plant's n = g/sqrt(m k), e.g. 1% (n irrational: ends rounded outward)");
   sub.add("--band-digits", a->band_digits, "digits of the band's guarantees (default: --digits)");
   sub.add("--below", a->below, "level E: the first time H_q <= E (an energy at this qdot0, in J with a plant, or a percentage of H_q(0) = qdot0^2/2: 1%); with a band, the latest over the band");
   sub.add("--convergents", a->convergents, "how many convergents of W1/W2 (0..60)", show::with_default);

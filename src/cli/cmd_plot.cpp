@@ -1,5 +1,5 @@
-// gyrores plot phase  TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [IMAGE OPTIONS]
-// gyrores plot energy TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [IMAGE OPTIONS]
+// gyrores plot phase  TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [--qdot0 V] [IMAGE OPTIONS]
+// gyrores plot energy TAU SIGMA | --n N | --n2 P/Q  [--tmax T] [--qdot0 V] [IMAGE OPTIONS]
 // gyrores plot pareto --max-order M [--orientation absorb|contain] [--proxy] [--exclude-degenerate]
 //                     [IMAGE OPTIONS]
 // IMAGE OPTIONS: [--out FILE.svg|png|pdf|eps] [--size WxH | 3.5in | 8.8cm | 3.5x2.5in] [--font-size PT]
@@ -11,6 +11,7 @@
 
 #include <gyrores/app/figures.hpp>
 #include <gyrores/app/pareto.hpp>
+#include <gyrores/model/inputs.hpp>
 
 #include "cli_options.hpp"
 #include "commands.hpp"
@@ -21,7 +22,7 @@ namespace gyrores::cli {
 namespace {
 
 struct plot_args {
-  std::string tau, sigma, n, n2, tmax, out, size, font_size, orientation = "absorb";
+  std::string tau, sigma, n, n2, tmax, qdot0, out, size, font_size, orientation = "absorb";
   std::int64_t max_order = 0;
   bool proxy = false, exclude_degenerate = false;
 };
@@ -46,6 +47,13 @@ double tmax_of(const plot_args& a) {
   return parse_positive_flag(a.tmax, "--tmax").convert_to<double>();
 }
 
+// The impulse of --qdot0 (default 1): the figures' radii times qdot0, energies times qdot0^2, times
+// unchanged (design/figures.hpp); the figures are drawn in doubles.
+double qdot0_of(const plot_args& a) { return a.qdot0.empty() ? 1.0 : parse_qdot0(a.qdot0, "--qdot0").convert_to<double>(); }
+
+// ", qdot0 = V" for a title when --qdot0 is given and not 1 (the titles at qdot0 = 1 as before).
+std::string qdot0_title(const plot_args& a) { return qdot0_of(a) == 1.0 ? "" : ", qdot0 = " + a.qdot0; }
+
 std::string files_text(const frontend::figure_output& f) {
   std::ostringstream os;
   for (auto& im : f.images) os << "figure: " << im.string() << "\n";
@@ -65,7 +73,7 @@ std::string run_phase(const plot_args& a) {
   const auto s = subject_of(a);
   const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "phase.svg" : a.out, a.size, 1200, 640, a.font_size);
   if (s.pair && !a.tmax.empty()) throw usage_error("--tmax does not apply to a resonant pair (one full period is drawn)");
-  const phase_portrait f = app::phase_figure(s, 1.0, tmax_of(a));
+  const phase_portrait f = app::phase_figure(s, qdot0_of(a), tmax_of(a));
   char buf[200];
   if (s.pair)
     std::snprintf(buf, sizeof buf, "%sn = %.6g, r_res = %.6g%s", pair_title(*s.pair).c_str(), f.n, f.r_inscribed,
@@ -73,17 +81,17 @@ std::string run_phase(const plot_args& a) {
   else
     std::snprintf(buf, sizeof buf, "%s, t in [0, %.6g]; min radius on span %.4g", coupling_label(a).c_str(), f.t_span,
                   f.r_inscribed);
-  return files_text(frontend::write_phase_figure(spec, f, buf));
+  return files_text(frontend::write_phase_figure(spec, f, buf + qdot0_title(a)));
 }
 
 std::string run_energy(const plot_args& a) {
   const auto s = subject_of(a);
   const auto spec = frontend::figure_spec_from_out(a.out.empty() ? "energy.svg" : a.out, a.size, 900, 500, a.font_size);
-  const energy_series e = app::energy_figure(s, 1.0, tmax_of(a));
-  if (!s.pair) return files_text(frontend::write_energy_figure(spec, e, coupling_label(a), "first min on span, t"));
+  const energy_series e = app::energy_figure(s, qdot0_of(a), tmax_of(a));
+  if (!s.pair) return files_text(frontend::write_energy_figure(spec, e, coupling_label(a) + qdot0_title(a), "first min on span, t"));
   char buf[200];
   std::snprintf(buf, sizeof buf, "%sn = %.6g, H_q min = %.6g", pair_title(*s.pair).c_str(), e.n, e.h_min);
-  return files_text(frontend::write_energy_figure(spec, e, buf, "exact t_{first}"));
+  return files_text(frontend::write_energy_figure(spec, e, buf + qdot0_title(a), "exact t_{first}"));
 }
 
 std::string run_pareto_plot(const plot_args& a) {
@@ -118,6 +126,7 @@ command_runner install_plot(CLI::App& app) {
     s.add("--n", a->n, "any coupling n (decimal or fraction)");
     s.add("--n2", a->n2, "n^2 as a fraction (e.g. 1/12)");
     s.add("--tmax", a->tmax, what);
+    s.add("--qdot0", a->qdot0, "impulse amplitude qdot0 = q'(0) > 0 (exact decimal or fraction; default 1): radii times qdot0, energies times qdot0^2, times unchanged");
     image(s);
   };
   auto phase = sub.subcommand("phase", "Phase portrait (q, q') with envelope, inscribed and maximal circles");

@@ -24,6 +24,11 @@ struct band_request {
   std::optional<big_rational> below;  // a level E: the band-wide first time H_q <= E
   unsigned digits = 6;            // of every real, [1, report_digits_max]
   big_rational qdot0 = 1;         // the impulse: the guarantees times qdot0^2 (below: a unit-impulse level); no certificate
+  // A physical plant (app/plant.hpp, docs/units.md; qdot0 = 1, no certificate): the guarantees
+  // in joules (times m V^2, exactly), the first time below and the attained couplings' times in
+  // seconds (times sqrt(m/k), a proved enclosure, the first time's proof refined until its
+  // rounding in seconds is decided); n1, n2, the horizon and below stay model units.
+  std::optional<plant_inputs> plant;
   std::size_t max_intervals = 100000;
   bool certificate = false;       // also the band certificate, from these very proofs (record_cover)
   stop_token stop;
