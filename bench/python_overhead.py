@@ -83,7 +83,14 @@ def main():
     ap.add_argument("--calls", type=int, default=2000, help="calls per round of the per-call rows")
     ap.add_argument("--sweep-order", type=int, default=5000)
     ap.add_argument("--sweep-rounds", type=int, default=3)
+    ap.add_argument("--markdown", help="also write the section to this file (bench/run appends "
+                    "bench/python_overhead.md to bench/RESULTS.md)")
     a = ap.parse_args()
+    lines = []
+
+    def say(text=""):
+        print(text)
+        lines.append(text)
 
     for digits in (17, 15):  # warm up: first calls fill MPFR's and FLINT's caches
         gyrores.pair(6, 5, digits=digits).r_res
@@ -103,14 +110,20 @@ def main():
             ratios[name].append(py_cpu / lib_cpu)
             times[name].append((py_cpu, py_wall, lib_cpu, lib_wall))
 
-    print(f"gyrores {gyrores.__version__}, python {sys.version.split()[0]}, {os.cpu_count()} CPUs, "
-          f"load {os.getloadavg()[0]:.2f}; {a.rounds} rounds of {a.calls} calls")
-    print()
-    print("| call | Python (CPU / wall) | library work (CPU / wall) | ratio (CPU, median of rounds) |")
-    print("|---|---|---|---|")
+    say("## Python at the user's end (bench/python_overhead.py)")
+    say()
+    say(f"Measured {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} by `bench/python_overhead.py` "
+        f"(not by `bench/run`, which appends this file, `bench/python_overhead.md`, as it is): gyrores "
+        f"{gyrores.__version__}, python {sys.version.split()[0]}, {os.cpu_count()} CPUs, load "
+        f"{os.getloadavg()[0]:.2f}; {a.rounds} rounds of {a.calls} calls. Targets (issue 35): a call at "
+        f"most 1.5x the library work it wraps (CPU, the same thread); `sweep()` rows within 2x of the "
+        f"CLI's wall time.")
+    say()
+    say("| call | Python (CPU / wall) | library work (CPU / wall) | ratio (CPU, median of rounds) |")
+    say("|---|---|---|---|")
     for name in cases:
         med = [statistics.median(t[i] for t in times[name]) for i in range(4)]
-        print(f"| {name} | {us(med[0])} / {us(med[1])} | {us(med[2])} / {us(med[3])} | "
+        say(f"| {name} | {us(med[0])} / {us(med[1])} | {us(med[2])} / {us(med[3])} | "
               f"{statistics.median(ratios[name]):.2f}x |")
 
     if a.sweep_order > 0 and os.access(a.cli, os.X_OK):
@@ -124,13 +137,16 @@ def main():
                 cli_t.append(c)
                 sweep_ratios.append(p / c)
         n = gyrores._gyrores._sweep_pairs(3, a.sweep_order)
-        print()
-        print("| sweep | Python rows (wall) | CLI rows to CSV (wall) | ratio (median of rounds) |")
-        print("|---|---|---|---|")
-        print(f"| sweep({a.sweep_order}), {n} pairs | {statistics.median(py_t):.2f} s | {statistics.median(cli_t):.2f} s | "
+        say()
+        say("| sweep | Python rows (wall) | CLI rows to CSV (wall) | ratio (median of rounds) |")
+        say("|---|---|---|---|")
+        say(f"| sweep({a.sweep_order}), {n} pairs | {statistics.median(py_t):.2f} s | {statistics.median(cli_t):.2f} s | "
               f"{statistics.median(sweep_ratios):.2f}x |")
     elif a.sweep_order > 0:
-        print(f"\n(sweep row skipped: no CLI at {a.cli}; pass --cli)")
+        say(f"\n(sweep row skipped: no CLI at {a.cli}; pass --cli)")
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":
