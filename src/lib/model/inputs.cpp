@@ -110,7 +110,7 @@ big_rational parse_energy_level(const std::string& given, const std::string& wha
   big_rational e = parse_rational(given, what);
   if (e < 0) throw usage_error(what + " must be >= 0, got " + shown_input(given));
   e /= energy_scale;
-  check_level_limits(e, what + " (at the unit impulse)");
+  check_level_limits(e, energy_scale == 1 ? what : what + " (at the unit impulse)");
   return e;
 }
 
