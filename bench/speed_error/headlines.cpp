@@ -42,6 +42,18 @@ double paired_ratio(const measurement& n, const measurement& d) {
   return k % 2 ? r[k / 2] : (r[k / 2 - 1] + r[k / 2]) / 2;
 }
 
+// The ratios time(num)/time(den) at `prec`, one per pair where both rows ran, in the pairs' order.
+std::vector<double> pair_ratios(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs,
+                                const std::string& num, const std::string& den, const std::string& prec) {
+  std::vector<double> r;
+  for (const auto& bp : pairs) {
+    const auto* n = find_row(rows, num, prec, bp.name);
+    const auto* d = find_row(rows, den, prec, bp.name);
+    if (n && d) r.push_back(paired_ratio(*n, *d));
+  }
+  return r;
+}
+
 // A headline target met per pair when time(num)/time(den) <= limit (at_most) or >= limit, at
 // precision `prec`: one value per pair where both rows ran, "<ratio> (<describe(num, den)>)",
 // labelled by the pair name and `suffix`.
@@ -60,6 +72,13 @@ headline new_headline(std::string id, std::string target) {
   return h;
 }
 
+// One more value of h, labelled `label`, which meets the target or not.
+void add_value(headline& h, const std::string& label, bool met, const std::string& text) {
+  ++h.total;
+  if (met) ++h.met;
+  h.values.push_back({label, text});
+}
+
 // The theorem's double row of a pair (the numerator or reference of most headlines).
 const measurement* theorem_row(const std::vector<measurement>& rows, const bench_pair& bp) {
   return find_row(rows, "theorem_double", "double", bp.name);
@@ -73,23 +92,17 @@ void add_ratios(headline& h, const std::vector<measurement>& rows, const std::ve
     const auto* d = find_row(rows, t.den, t.prec, bp.name);
     if (!n || !d) continue;
     const double r = paired_ratio(*n, *d);
-    ++h.total;
-    if (t.at_most ? r <= t.limit : r >= t.limit) ++h.met;
-    h.values.push_back({bp.name + t.suffix, ratio_text(r) + " (" + describe(*n, *d) + ")"});
+    add_value(h, bp.name + t.suffix, t.at_most ? r <= t.limit : r >= t.limit,
+              ratio_text(r) + " (" + describe(*n, *d) + ")");
   }
 }
 
 // What the double path costs in units of one evaluation of (q, q') (one_eval), and what the
 // reference lattice from before the theorem costs against it (medians over the pairs).
 std::string h1_remark(const std::vector<measurement>& rows, const std::vector<bench_pair>& pairs) {
-  std::vector<double> units, lattice;
-  for (const auto& bp : pairs) {
-    const auto* e = theorem_row(rows, bp);
-    const auto* o = find_row(rows, "one_eval", "double", bp.name);
-    const auto* l = find_row(rows, "ref_lattice", "double", bp.name);
-    if (e && o) units.push_back(paired_ratio(*e, *o));
-    if (e && l) lattice.push_back(paired_ratio(*l, *e));
-  }
+  // (theorem_row's method and precision)
+  const std::vector<double> units = pair_ratios(rows, pairs, "theorem_double", "one_eval", "double");
+  const std::vector<double> lattice = pair_ratios(rows, pairs, "ref_lattice", "theorem_double", "double");
   std::string out;
   if (!units.empty())
     out = "In double theorem_minimum_double takes the time of " + format_number("%.2g", median(units)) +
@@ -121,10 +134,9 @@ headline h1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
       continue;
     }
     const double r = paired_ratio(*e, *t);
-    ++h.total;
-    if (r <= 1.5) ++h.met;
-    h.values.push_back({bp.name, ratio_text(r) + " (theorem " + format_time(e->median_ns) + ", theta_asy " +
-                                     format_time(t->median_ns) + ")"});
+    add_value(h, bp.name, r <= 1.5,
+              ratio_text(r) + " (theorem " + format_time(e->median_ns) + ", theta_asy " + format_time(t->median_ns) +
+                  ")");
   }
   h.remark = h1_remark(rows, pairs);
   return h;
@@ -174,17 +186,16 @@ headline h3(const std::vector<measurement>& rows, const std::vector<bench_pair>&
     bool any = false;
     const measurement* best = fastest_simulation(rows, bp.name, any);
     if (!any) continue;
-    ++h.total;
     if (!best) {
-      h.values.push_back({bp.name, "no simulation setting reached 1e-8 in r_res"});
+      add_value(h, bp.name, false, "no simulation setting reached 1e-8 in r_res");
       continue;
     }
     const double r = paired_ratio(*best, *e);
     const bool full = e->digits() >= 14.5;
-    if (r >= 1000 && full) ++h.met;
-    h.values.push_back({bp.name, ratio_text(r) + " (" + best->method + ": " + format_time(best->median_ns) + ", " +
-                                     format_digits(best->digits_r) + " digits in r_res; theorem " +
-                                     format_time(e->median_ns) + ", " + format_digits(e->digits()) + " digits)"});
+    add_value(h, bp.name, r >= 1000 && full,
+              ratio_text(r) + " (" + best->method + ": " + format_time(best->median_ns) + ", " +
+                  format_digits(best->digits_r) + " digits in r_res; theorem " + format_time(e->median_ns) + ", " +
+                  format_digits(e->digits()) + " digits)");
   }
   return h;
 }
@@ -197,12 +208,7 @@ headline h4(const std::vector<measurement>& rows, const std::vector<bench_pair>&
       "A certificate at 30 digits (certify_by_theorem) costs at most 3x the theorem's proved minimum at 30 digits "
       "(prove_minimum)",
       rows, pairs, {"mp30", "certificate", "theorem_proved", true, 3, ""}, times_of("certificate", "proved"));
-  std::vector<double> lattice;
-  for (const auto& bp : pairs) {
-    const auto* c = find_row(rows, "certificate", "mp30", bp.name);
-    const auto* l = find_row(rows, "ref_lattice", "mp30", bp.name);
-    if (c && l) lattice.push_back(paired_ratio(*c, *l));
-  }
+  std::vector<double> lattice = pair_ratios(rows, pairs, "certificate", "ref_lattice", "mp30");
   if (!lattice.empty()) {
     std::sort(lattice.begin(), lattice.end());
     h.remark = "Against the unproved 30-digit value of the reference lattice from before the theorem (ref_lattice), "
@@ -268,14 +274,12 @@ headline l1(const std::vector<measurement>& rows, const std::vector<bench_pair>&
     if (!d || !(e || big)) continue;
     const measurement& n = e ? *e : *big;
     const double r = paired_ratio(n, *d);
-    ++h.total;
-    if (r <= 1.25) ++h.met;
-    h.values.push_back(
-        {bp.name, ratio_text(r) + " (" +
-                      (e ? with_digits("theorem_minimum_double", n)
-                         : "no double path: theorem_minimum_double takes orders below 2^120; the proved minimum at 16 "
-                           "digits instead, " + with_digits("prove_minimum", n)) +
-                      "; " + with_digits("peer_newton", *d) + ")"});
+    add_value(h, bp.name, r <= 1.25,
+              ratio_text(r) + " (" +
+                  (e ? with_digits("theorem_minimum_double", n)
+                     : "no double path: theorem_minimum_double takes orders below 2^120; the proved minimum at 16 "
+                       "digits instead, " + with_digits("prove_minimum", n)) +
+                  "; " + with_digits("peer_newton", *d) + ")");
   }
   h.remark = "theorem_minimum_double also forms every minimiser (2 or 4) and its lobe; peer_newton forms theta_first "
              "alone. peer_newton takes u* by Newton on H with libm's tan and atan from pi m_min/(4b); "
@@ -303,8 +307,6 @@ headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>&
       const auto* d = find_row(rows, "peer_arb_ball", prec, bp.name);
       if (!c || !d) continue;
       const double r = paired_ratio(*c, *d);
-      ++h.total;
-      if (r <= 1.3) ++h.met;
       std::string more;
       for (const auto& [label, method] : {std::pair<const char*, const char*>{"prove_minimum", "theorem_proved"},
                                           {"prove_pair", "theorem_report"},
@@ -312,8 +314,9 @@ headline l2(const std::vector<measurement>& rows, const std::vector<bench_pair>&
         const std::string t = ratio_of(rows, method, "peer_arb_ball", prec, bp.name);
         if (!t.empty()) more += "; " + std::string(label) + " " + t;
       }
-      h.values.push_back({bp.name + " " + prec, ratio_text(r) + " (" + with_digits("certificate", *c) + "; " +
-                                                     with_digits("peer_arb_ball", *d) + more + ")"});
+      add_value(h, bp.name + " " + prec, r <= 1.3,
+                ratio_text(r) + " (" + with_digits("certificate", *c) + "; " + with_digits("peer_arb_ball", *d) +
+                    more + ")");
     }
   h.remark =
       "Like for like: both prove a bracket of u* and enclosures of r_res, theta_first and t_first of relative width "
@@ -338,12 +341,7 @@ std::string peer_remark(const std::vector<measurement>& rows, const std::vector<
   for (const auto& prec : precs) {
     std::vector<std::string> items;
     for (const auto& [label, method] : methods) {
-      std::vector<double> r;
-      for (const auto& bp : pairs) {
-        const auto* n = find_row(rows, method, prec, bp.name);
-        const auto* d = find_row(rows, peer, prec, bp.name);
-        if (n && d) r.push_back(paired_ratio(*n, *d));
-      }
+      const std::vector<double> r = pair_ratios(rows, pairs, method, peer, prec);
       if (!r.empty()) items.push_back(label + " " + ratio_text(median(r)));
     }
     if (items.empty()) continue;

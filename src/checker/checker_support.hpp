@@ -25,44 +25,39 @@ struct fails : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct Z {
-  fmpz_t v;
-  Z() { fmpz_init(v); }
-  explicit Z(long x) { fmpz_init_set_si(v, x); }
-  Z(const Z& o) { fmpz_init_set(v, o.v); }
-  Z& operator=(const Z& o) {
-    fmpz_set(v, o.v);
-    return *this;
-  }
-  ~Z() { fmpz_clear(v); }
-};
-struct B {
-  arb_t v;
-  B() { arb_init(v); }
-  B(const B& o) {
-    arb_init(v);
-    arb_set(v, o.v);
-  }
-  B& operator=(const B& o) {
-    arb_set(v, o.v);
-    return *this;
-  }
-  ~B() { arb_clear(v); }
-};
+// The init, clear and set of each type that `owned` holds (overloads, so that the template's
+// arguments stay types: the functions are static inline in FLINT's and Arb's headers).
+inline void init(fmpz* x) { fmpz_init(x); }
+inline void clear(fmpz* x) { fmpz_clear(x); }
+inline void set(fmpz* x, const fmpz* y) { fmpz_set(x, y); }
+inline void init(fmpq* x) { fmpq_init(x); }
+inline void clear(fmpq* x) { fmpq_clear(x); }
+inline void set(fmpq* x, const fmpq* y) { fmpq_set(x, y); }
+inline void init(arb_ptr x) { arb_init(x); }
+inline void clear(arb_ptr x) { arb_clear(x); }
+inline void set(arb_ptr x, arb_srcptr y) { arb_set(x, y); }
 
-struct Q {
-  fmpq_t v;
-  Q() { fmpq_init(v); }
-  Q(const Q& o) {
-    fmpq_init(v);
-    fmpq_set(v, o.v);
+// An Arb or FLINT value of type T (fmpz_t, fmpq_t, arb_t) that cleans up after itself.
+template <class T>
+struct owned {
+  T v;
+  owned() { init(v); }
+  owned(const owned& o) {
+    init(v);
+    set(v, o.v);
   }
-  Q& operator=(const Q& o) {
-    fmpq_set(v, o.v);
+  owned& operator=(const owned& o) {
+    set(v, o.v);
     return *this;
   }
-  ~Q() { fmpq_clear(v); }
+  ~owned() { clear(v); }
 };
+struct Z : owned<fmpz_t> {
+  Z() = default;
+  explicit Z(long x) { fmpz_set_si(v, x); }
+};
+using B = owned<arb_t>;
+using Q = owned<fmpq_t>;
 
 // The decimal text of z, abbreviated past 60 digits (for messages).
 std::string text_of(const Z& z);
