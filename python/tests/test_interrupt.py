@@ -10,6 +10,8 @@ import signal
 import threading
 import time
 
+import numpy  # noqa: F401  (imported first: OpenBLAS starts its worker threads at import, and
+              # gyrores imports NumPy on its first array call; those threads are not the work's)
 import pytest
 
 import gyrores
