@@ -35,6 +35,7 @@
 #include <vector>
 
 #include <gyrores/model/resonant.hpp>
+#include "reference/lobe_frames.hpp"  // lobe_eval: the one-evaluation rows
 #include "speed_error/pre_theorem.hpp"
 #include "speed_error/theorem_path.hpp"
 #include "testing/naive_toms748.hpp"

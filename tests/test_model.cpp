@@ -15,6 +15,7 @@
 #include <gyrores/model/pair.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/resonant.hpp>
+#include "reference/lobe_frames.hpp"
 
 #include "testing/reference.hpp"
 #include "testing/test_support.hpp"

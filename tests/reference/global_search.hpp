@@ -17,6 +17,7 @@
 
 #include <gyrores/core/roots.hpp>
 #include <gyrores/model/resonant.hpp>
+#include "reference/lobe_frames.hpp"
 
 #include "reference/degenerate.hpp"
 #include "reference/inscribed_result.hpp"

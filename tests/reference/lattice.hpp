@@ -35,6 +35,7 @@
 #include "reference/degenerate.hpp"
 #include "reference/global_search.hpp"
 #include <gyrores/model/resonant.hpp>
+#include "reference/lobe_frames.hpp"
 #include "reference/inscribed_result.hpp"
 #include <gyrores/core/roots.hpp>
 #include <gyrores/theorem/lobes.hpp>
