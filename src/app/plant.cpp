@@ -5,29 +5,25 @@
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/refine.hpp>
 
 namespace gyrores::app {
 
 namespace {
 
-// sqrt(r) for a rational r > 0 when it is rational.
-std::optional<big_rational> rational_sqrt(const big_rational& r) {
-  big_int p, q;
-  if (int_is_square(big_int(numerator(r)), p) && int_is_square(big_int(denominator(r)), q)) return big_rational(p, q);
-  return std::nullopt;
-}
-
 // sqrt(r) correctly rounded to `digits`: from the rational when r is a square, else from MPFI
-// enclosures at doubling precision (an irrational square root is never a rounding tie).
+// enclosures in the precision loop (an irrational square root is never a rounding tie).
 std::string sqrt_text(const big_rational& r, unsigned digits) {
   if (const auto s = rational_sqrt(r)) return *enclosure::exact(*s).rounded(digits);
-  for (mpfr_prec_t bits = mpfr_prec_t(digits10_to_bits(digits) + 64);; bits *= 2) {
+  const precision_plan plan{mpfr_prec_t(digits10_to_bits(digits) + 64), report_bits_cap};
+  return refine(plan, stop_token(), "a square root of the plant", [&](mpfr_prec_t bits, proof_status& status) {
     fixed_mpfi v(bits);
     mpfi_set_q(v, r.backend().data());
     mpfi_sqrt(v, v);
-    if (const auto t = enclosure(v).rounded(digits)) return *t;
-    if (bits > mpfr_prec_t(1) << 24) throw compute_error("a square root of the plant was not decided");
-  }
+    auto t = enclosure(v).rounded(digits);
+    if (!t) status = proof_status::undecided("its rounding to the digits asked");
+    return t;
+  });
 }
 
 }  // namespace
@@ -56,19 +52,16 @@ plant_horizon plant_horizon_of(const plant_inputs& p, const horizon_time& second
     return {T, T.value, true};
   }
   if (seconds.value == 0) return {seconds, 0, true};
-  // a sqrt(w2) in [lo, hi]: decimals with D significant digits from exact integer square roots.
+  // T omega0 = sqrt(a2) between m 10^-s and (m + 1) 10^-s, m = floor(sqrt(a2 10^(2s))), with
+  // s chosen so that m has about D = digits + 20 digits.
   const big_rational a2 = seconds.value * seconds.value * w2;
   const long D = long(digits) + 20;
-  // 10^(2s) a2 has its integer part with about 2D digits: s from the magnitude of a2.
   const long mag = long(numerator(a2).str().size()) - long(denominator(a2).str().size());
   const long s = D - mag / 2 + 1;
-  const big_int ten = boost::multiprecision::pow(big_int(10), unsigned(s > 0 ? s : 0));
-  const big_int ten_neg = boost::multiprecision::pow(big_int(10), unsigned(s < 0 ? -s : 0));
-  const big_rational scale2 = big_rational(ten * ten, ten_neg * ten_neg);  // 10^(2s)
-  const big_rational y = a2 * scale2;
-  big_int m;
-  int_is_square(big_int(numerator(y) / denominator(y)), m);  // floor(sqrt(y)), as model/inputs.cpp does
-  const big_rational unit = big_rational(ten_neg, ten);       // 10^-s
+  const big_rational ten_s = s >= 0 ? big_rational(boost::multiprecision::pow(big_int(10), unsigned(s)))
+                                    : big_rational(big_int(1), boost::multiprecision::pow(big_int(10), unsigned(-s)));
+  const big_int m = floor_sqrt(a2 * ten_s * ten_s);
+  const big_rational unit = 1 / ten_s;
   return {horizon_time(big_rational(m + 1) * unit, seconds.times_pi), big_rational(m) * unit, false};
 }
 

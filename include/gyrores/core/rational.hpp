@@ -2,6 +2,7 @@
 // A decimal such as "0.2886751345948" is the exact rational 2886751345948/10^13, never a double.
 #pragma once
 #include <boost/multiprecision/gmp.hpp>
+#include <optional>
 #include <string>
 
 #include <gyrores/core/integer.hpp>
@@ -39,5 +40,12 @@ big_rational decimal_rounded(const big_rational& q, unsigned digits, int dir);
 
 // True when v >= 0 is a perfect square; root receives floor(sqrt(v)).
 bool int_is_square(const big_int& v, big_int& root);
+
+// floor(sqrt(y)) for a rational y >= 0: floor(sqrt(floor(y))), an integer root.
+big_int floor_sqrt(const big_rational& y);
+
+// sqrt(r) when r >= 0 is the square of a rational (numerator and denominator perfect squares,
+// r being in lowest terms), else none: the exact case of every square root of an input.
+std::optional<big_rational> rational_sqrt(const big_rational& r);
 
 }  // namespace gyrores

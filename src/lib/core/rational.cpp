@@ -138,4 +138,14 @@ bool int_is_square(const big_int& v, big_int& root) {
   return root * root == v;
 }
 
+big_int floor_sqrt(const big_rational& y) {
+  return boost::multiprecision::sqrt(big_int(numerator(y) / denominator(y)));
+}
+
+std::optional<big_rational> rational_sqrt(const big_rational& r) {
+  big_int p, q;
+  if (int_is_square(big_int(numerator(r)), p) && int_is_square(big_int(denominator(r)), q)) return big_rational(p, q);
+  return std::nullopt;
+}
+
 }  // namespace gyrores

@@ -159,13 +159,6 @@ void check_band_ends(const std::pair<big_rational, big_rational>& band, const st
   check_coupling_limits(band.second * band.second, what + ": the band's upper end squared");
 }
 
-// floor(sqrt(y)) for a rational y >= 0: floor(sqrt(floor(y))) = floor(sqrt(y)), an integer root.
-big_int floor_sqrt(const big_rational& y) {
-  big_int root;
-  int_is_square(big_int(boost::multiprecision::numerator(y) / boost::multiprecision::denominator(y)), root);
-  return root;
-}
-
 }  // namespace
 
 std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n, const std::string& tolerance,
@@ -179,10 +172,8 @@ std::pair<big_rational, big_rational> parse_tolerance_band(const big_rational& n
 
 tolerance_band_ends parse_tolerance_band_n2(const big_rational& n2, const std::string& tolerance, const std::string& what) {
   check_coupling_limits(n2, "n^2");
-  big_int rp, rq;
-  if (int_is_square(big_int(boost::multiprecision::numerator(n2)), rp) &&
-      int_is_square(big_int(boost::multiprecision::denominator(n2)), rq)) {
-    const auto band = parse_tolerance_band(big_rational(rp, rq), tolerance, what);
+  if (const auto n = rational_sqrt(n2)) {
+    const auto band = parse_tolerance_band(*n, tolerance, what);
     return {band.first, band.second, true};
   }
   const big_rational p = tolerance_fraction(tolerance, what);

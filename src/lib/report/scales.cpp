@@ -9,9 +9,7 @@
 namespace gyrores {
 
 enclosure scaled_sqrt(const enclosure& e, const big_rational& k2, mpfr_prec_t bits) {
-  big_int rp, rq;
-  if (int_is_square(big_int(numerator(k2)), rp) && int_is_square(big_int(denominator(k2)), rq))
-    return scaled(e, big_rational(rp, rq));
+  if (const auto k = rational_sqrt(k2)) return scaled(e, *k);
   const mpfr_prec_t prec = (e.is_exact() ? bits : std::max(mpfr_get_prec(e.lo()), mpfr_get_prec(e.hi()))) + 64;
   fixed_mpfi v(prec), k(prec);
   if (e.is_exact()) mpfi_set_q(v, e.lo_rational().backend().data());
