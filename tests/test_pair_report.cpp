@@ -37,6 +37,7 @@ pair_report report(const resonant_pair<big_int>& p, unsigned digits, const std::
   opt.digits = digits;
   opt.qdot0 = parse_rational(qdot0, "qdot0");
   opt.enclosures = true;
+  opt.doubles = true;
   return prove_pair(p, opt);
 }
 
@@ -53,11 +54,12 @@ mpfr_real paper_root_by_bisection(const mpfr_real& s) {
   return (lo + hi) / 2;
 }
 
-// Checks one field: the report's text against the oracle rounded to D digits, and the enclosure
-// around the oracle.
+// Checks one field: the report's text against the oracle rounded to D digits, its double against
+// the oracle rounded to nearest (MPFR), and the enclosure around the oracle.
 void check_real(const std::string& name, const proved_real& got, const mpfr_real& truth, unsigned digits) {
   INFO(name);
   CHECK(got.value == format_scientific(truth, digits));
+  CHECK(got.nearest == mpfr_get_d(truth.backend().data(), MPFR_RNDN));
   const mpfr_real lo(got.enclosure.first), hi(got.enclosure.second);
   CHECK(lo <= truth);
   CHECK(truth <= hi);
@@ -189,6 +191,20 @@ TEST_CASE("prove_pair: random pairs, every real the correct rounding (17, 50, 10
   for (int i = 0; i < 3; ++i) check_pair(random_pair(60), 1000);
   check_pair(resonant_pair<big_int>(big_int(6), big_int(5)), 1000);
   check_pair(resonant_pair<big_int>(pow10(12) + 1, pow10(12)), 1000);
+}
+
+TEST_CASE("prove_pair: the doubles are filled only when asked", "[pair_report]") {
+  pair_report_options opt;
+  opt.digits = 3;
+  const resonant_pair<big_int> p(big_int(6), big_int(5));
+  CHECK(prove_pair(p, opt).r_res.nearest == 0);
+  opt.doubles = true;
+  const pair_report r = prove_pair(p, opt);
+  CHECK(r.r_res.value == "5.07e-02");
+  // The doubles nearest 0.05074580579103337246371565... and sqrt(6/5) (mpmath at 200 bits).
+  CHECK(r.r_res.nearest == 0x1.9fb5ab090352fp-5);
+  CHECK(r.omega1.nearest == 1.0954451150103321);
+  CHECK(r.beat_ratio.nearest == 11.0);  // an exact field: its rational rounded once
 }
 
 TEST_CASE("prove_pair: exact fields are rounded once from their rational, ties to even", "[pair_report]") {

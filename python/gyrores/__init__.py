@@ -61,7 +61,7 @@ _RATIONAL_KEYS = frozenset({"tmax", "beat", "n2", "level"})
 _ECHO_KEYS = _RATIONAL_KEYS | frozenset({"input", "format", "theorem", "reason", "note", "x", "horizon_lobe_distance",
                         "inf_reason", "horizon_source", "orientation", "orientation_meaning", "time", "problem"})
 _DOUBLE_DIGITS = 15  # up to here reals are floats
-_FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library for floats (then more if undecided)
+_FLOAT_SOURCE_DIGITS = 17  # the digits asked of the library when floats are wanted
 # A double as the sweep's summary writes it (plain or scientific decimal).
 _DECIMAL_TEXT = _re.compile(r"^-?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$|^-?(?:inf|nan)$")
 
@@ -238,17 +238,6 @@ def _enclosure_path(path):
     return path
 
 
-def _enclosure_of(enclosures, path):
-    """The [lo, hi] texts of the real at `path` of a pair's JSON, or None."""
-    try:
-        node = enclosures
-        for p in _enclosure_path(path):
-            node = node[p]
-    except (KeyError, IndexError, TypeError):
-        return None
-    return node if isinstance(node, list) and len(node) == 2 and all(isinstance(t, str) for t in node) else None
-
-
 def _real_paths(value, path=()):
     """The paths of the reals (floats, mpf) of a converted JSON value."""
     if isinstance(value, dict):
@@ -285,33 +274,6 @@ def _hull_with_values(intervals, out):
             intervals[key] = tuple(iv if not isinstance(iv, Interval) or iv.contains(v)
                                    else Interval(min(iv.lo, v), max(iv.hi, v)) for iv, v in zip(seq, out[key]))
     return intervals
-
-
-class _Undecided(Exception):
-    """The enclosures at these digits do not decide some double."""
-
-
-def _pair_floats(raw):
-    """A pair's JSON with every real the correctly rounded double of its exact value."""
-    enclosures = raw.get("enclosures", {})
-
-    def walk(value, path):
-        if isinstance(value, dict):
-            return Result({k: v if k in _ECHO_KEYS or k == "enclosures" else walk(v, path + (k,))
-                           for k, v in value.items()})
-        if isinstance(value, list):
-            return tuple(walk(v, path + (i,)) for i, v in enumerate(value))
-        if isinstance(value, str) and path[-1] not in _ECHO_KEYS and _numbers.is_real_text(value):
-            enc = _enclosure_of(enclosures, path)
-            if enc is None:
-                return _numbers.float_of_text(value)
-            lo, hi = (_numbers.float_of_text(t) for t in enc)
-            if lo != hi:  # rounding to nearest is monotone: equal ends decide it
-                raise _Undecided()
-            return lo
-        return value
-
-    return walk(raw, ())
 
 
 def _intervals(enclosures, digits):
@@ -358,19 +320,9 @@ def _proved_pair(t, s, d, q, enclosures, function, asymptotics=True):
         if not asymptotics:
             return out, lambda: _gyrores._pair(t, s, d, q, enclosures)
         return out, lambda: _copy.deepcopy(raw)
-    asked = _FLOAT_SOURCE_DIGITS
-    while True:
-        raw = _gyrores._pair(t, s, asked, q, True, asymptotics)
-        try:
-            out = _pair_floats(raw)
-            break
-        except _Undecided:
-            if asked >= 10000:
-                raise ComputeError(f"{function}(): a double of pair ({_args._show(t)}, {_args._show(s)}) is not "
-                                   "decided at 10000 digits") from None
-            asked = min(10000, 2 * asked)
-    out.pop("enclosures", None)
-    out["digits"] = d
+    # Floats decided in the compiled module, by the report's own enclosures.
+    raw = _prefixed(function, _gyrores._pair_doubles, t, s, d, q, asymptotics, enclosures)
+    out = _convert({k: v for k, v in raw.items() if k != "enclosures"}, None)
     if enclosures:
         out["enclosures"] = _hull_with_values(_intervals(raw["enclosures"], d), out)
     return out, lambda: _gyrores._pair(t, s, d, q, enclosures)
@@ -408,8 +360,8 @@ def pair(tau, sigma, digits=17, qdot0=1, enclosures=False):
         result.__dict__["_pending"] = (_real(d), set(raw))
         result.__dict__["_raw_source"] = lambda: _gyrores._pair(t, s, d, q, False)
     else:
-        # Floats decided in the compiled module (as _pair_floats does for enclosures=True).
-        out = _prefixed("pair", _gyrores._pair_doubles, t, s, d, q, False)
+        # Floats decided in the compiled module, by the report's own enclosures.
+        out = _prefixed("pair", _gyrores._pair_doubles, t, s, d, q, False, False)
         for key in _LAZY_PAIR_KEYS:
             out.pop(key, None)
         out["minimisers"] = tuple(out["minimisers"])

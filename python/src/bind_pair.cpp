@@ -22,9 +22,10 @@ namespace gyrores::python {
 namespace {
 
 pair_report run_pair(const resonant_pair<big_int>& p, long long digits, const std::string& qdot0, bool enclosures,
-                     bool asymptotics = true) {
+                     bool asymptotics = true, bool doubles = false) {
   app::pair_request request{p, {}};
   request.options.enclosures = enclosures;
+  request.options.doubles = doubles;
   request.options.asymptotics = asymptotics;
   request.options.digits = checked_digits(digits, 1, report_digits_max);
   request.options.qdot0 = qdot0 == "1" ? big_rational(1) : parse_rational(qdot0, "qdot0");
@@ -88,36 +89,18 @@ py::object pair_dict(const py::object& tau, const py::object& sigma, long long d
   return to_python(pair_report_json(p, r, enclosures));
 }
 
-struct undecided {};
-
-// The double of a proved real: the correct rounding of its exact value, decided when both ends of
-// its enclosure round to the same double (rounding to nearest is monotone); strtod rounds
-// correctly (glibc).
-py::float_ decided_double(const proved_real& v) {
-  const double lo = std::strtod(v.enclosure.first.c_str(), nullptr);
-  const double hi = std::strtod(v.enclosure.second.c_str(), nullptr);
-  if (!(lo == hi)) throw undecided{};
-  return py::float_(lo);
-}
-
-// pair()'s dict for digits <= 15: every real the correctly rounded double of its exact value,
-// from enclosures at 17 digits, or more until every double is decided (as gyrores/__init__.py's
-// _pair_floats does for the enclosures=True path); `digits` is the caller's.
+// pair()'s dict for digits <= 15: every real the double nearest its exact value, decided by the
+// report's own enclosures (pair_report_options::doubles: the report's precision rises until each
+// is), with the report's 17-digit enclosures when asked; `digits` is the caller's.
 py::object pair_doubles(const py::object& tau, const py::object& sigma, long long digits, const std::string& qdot0,
-                        bool asymptotics) {
+                        bool asymptotics, bool enclosures) {
   const auto p = pair_of(tau, sigma);
   checked_digits(digits, 1, 15);
-  for (long long asked = 17;; asked = std::min<long long>(report_digits_max, 2 * asked)) {
-    const pair_report r = run_pair(p, asked, qdot0, true, asymptotics);
-    try {
-      py::dict d = pair_report_dict(p, r, decided_double);
-      d["digits"] = digits;
-      return d;
-    } catch (const undecided&) {
-      if (asked >= (long long)report_digits_max)
-        throw compute_error("a double of the pair is not decided at " + std::to_string(report_digits_max) + " digits");
-    }
-  }
+  const pair_report r = run_pair(p, 17, qdot0, enclosures, asymptotics, true);
+  py::dict d = pair_report_dict(p, r, [](const proved_real& v) { return py::float_(v.nearest); });
+  d["digits"] = digits;
+  if (enclosures) d["enclosures"] = to_python(pair_report_json(p, r, true)["enclosures"]);
+  return d;
 }
 
 py::object asymptotics_dict(const py::object& tau, const py::object& sigma, long long digits) {
@@ -163,9 +146,9 @@ void bind_pair(py::module_& m) {
         "guard bits): `asymptotic`, `r_res_asy`, `r_res_asy_rel_error` and `bits` are then not those of the "
         "CLI; gyrores.pair fills them on first access. Use gyrores.pair.");
   m.def("_pair_doubles", &pair_doubles, py::arg("tau"), py::arg("sigma"), py::arg("digits"), py::arg("qdot0"),
-        py::arg("asymptotics"),
-        "pair()'s dict for digits <= 15: every real the correctly rounded double of its exact value (decided from "
-        "enclosures, more digits when needed). Use gyrores.pair.");
+        py::arg("asymptotics"), py::arg("enclosures") = false,
+        "pair()'s dict for digits <= 15: every real the correctly rounded double of its exact value (decided by "
+        "the report's enclosures), with the 17-digit enclosures when asked. Use gyrores.pair.");
   m.def("_asymptotics", &asymptotics_dict, py::arg("tau"), py::arg("sigma"), py::arg("digits"),
         "The `asymptotic` object of `gyrores pair --json` with r_res_asy, r_res_asy_rel_error and digits "
         "(qdot0 = 1). Use gyrores.asymptotics.");

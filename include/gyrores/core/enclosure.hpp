@@ -55,6 +55,7 @@ class exact_binary {
 struct proved_real {
   std::string value;                              // correctly rounded, `digits` significant digits
   std::pair<std::string, std::string> enclosure;  // holds the exact value; outward, digits + 3 digits (when asked)
+  double nearest = 0;  // the double nearest the exact value, decided by the same enclosure (when asked)
   operator const std::string&() const { return value; }  // where text is wanted, the value
 };
 inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }

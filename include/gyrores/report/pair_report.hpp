@@ -45,6 +45,7 @@ struct pair_report_options {
   big_rational qdot0 = 1;    // impulse amplitude v > 0, exactly
   bool asymptotics = true;   // the paper's asymptotics (the pair values of design, Pareto, coupling skip them)
   bool enclosures = false;   // fill proved_real::enclosure (decimal text costs as much as the roundings)
+  bool doubles = false;      // fill proved_real::nearest: the precision also rises until each double is decided
   stop_token stop;           // looked at before each precision (throws `interrupted`, core/stop.hpp)
 };
 

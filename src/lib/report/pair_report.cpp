@@ -25,14 +25,18 @@ using iv = fixed_mpfi;
 // not decide (the precision then doubles). The names are static texts (proof_status reasons).
 class rounder {
  public:
-  rounder(unsigned digits, bool enclosures) : digits_(digits), enclosures_(enclosures) {}
+  rounder(unsigned digits, bool enclosures, bool doubles) : digits_(digits), enclosures_(enclosures), doubles_(doubles) {}
   void operator()(proved_real& out, const iv& x, const char* name) { round(out, x, name, digits_); }
   // The same with its own digits (a share of H_q(0), report/share.hpp).
   void round(proved_real& out, const iv& x, const char* name, unsigned digits) {
-    if (!enclosure_rounding(x.left(), x.right(), digits, out.value)) {
+    // Rounding to nearest is monotone: ends that round to one double decide every value between
+    // (beyond double's range, to an infinity or zero, as strtod reads such a decimal).
+    const double lo = doubles_ ? mpfr_get_d(x.left(), MPFR_RNDN) : 0, hi = doubles_ ? mpfr_get_d(x.right(), MPFR_RNDN) : 0;
+    if (!enclosure_rounding(x.left(), x.right(), digits, out.value) || lo != hi) {
       if (!undecided_) undecided_ = name;
       return;
     }
+    out.nearest = lo;
     enclosure(out, x, digits);
   }
   // A field whose exact value is the rational q (x: its enclosure at this precision).
@@ -40,6 +44,11 @@ class rounder {
     if (digits == 0) digits = digits_;
     out.value = format_rational_scientific(q, digits);
     mpfi_set_q(x, q.backend().data());
+    if (doubles_) {  // rounded once from the rational (53 bits, to nearest)
+      exact_binary t(53);
+      mpfr_set_q(t.get(), q.backend().data(), MPFR_RNDN);
+      out.nearest = mpfr_get_d(t, MPFR_RNDN);
+    }
     enclosure(out, x, digits);
   }
   // Proved when every rounding was decided; else undecided, naming the first field that was not.
@@ -51,7 +60,7 @@ class rounder {
       out.enclosure = {format_scientific(x.left(), digits + 3, MPFR_RNDD), format_scientific(x.right(), digits + 3, MPFR_RNDU)};
   }
   unsigned digits_;
-  bool enclosures_;
+  bool enclosures_, doubles_;
   const char* undecided_ = nullptr;
 };
 
@@ -59,11 +68,11 @@ class rounder {
 // proofs hold with every rounding decided. A requested stop is honoured before each precision
 // (one fill at the highest precision is the longest wait: about a second at 10000 digits).
 template <class Fill>
-void round_refined(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, unsigned start, Fill&& fill,
+void round_refined(const resonant_pair<big_int>& p, unsigned digits, bool enclosures, bool doubles, unsigned start, Fill&& fill,
                    const stop_token& stop = {}) {
   refine(precision_plan{mpfr_prec_t(start)}, stop, "pair " + p.str() + ": the report to " + std::to_string(digits) + " digits",
          [&](mpfr_prec_t bits, proof_status& status) {
-           rounder r(digits, enclosures);
+           rounder r(digits, enclosures, doubles);
            status = fill(unsigned(bits), r);
            if (status) status = r.status();
            return status ? std::optional<bool>(true) : std::nullopt;
@@ -313,7 +322,7 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
                           " >= 1/2: the lobe equation x tan u = tan(mu - x u) need not have a unique root in "
                           "|u| < pi/2 and the slow-node reduction (mu and x u small) does not apply";
   if (r.asymptotic_applicable) r.asymptotic_reason = asymptotic_remarks(p, paper_fast_node(a, b).tie);
-  round_refined(p, opt.digits, opt.enclosures, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
+  round_refined(p, opt.digits, opt.enclosures, opt.doubles, start_bits(p, opt.digits, r.asymptotic_applicable), [&](unsigned bits, rounder& round) {
     r.bits = bits;
     theorem_constants K(bits, p);
     iv v(bits);
@@ -346,7 +355,7 @@ paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_in
     throw compute_error("pair " + p.str() + " has no asymptotic lobe k = " + k.str());
   const big_int m = a - 2 * k * b;
   paper_lobe_detail d;
-  round_refined(p, digits, true, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
+  round_refined(p, digits, true, false, start_bits(p, digits, true), [&](unsigned bits, rounder& round) {
     theorem_constants K(bits, p);
     root_cache cache(K);
     lobe_enclosures L(bits);
