@@ -28,6 +28,8 @@ std::vector<sweep_pair_id> pairs_from_json(const json& a) {
   return v;
 }
 
+std::uint64_t count_from_json(const json& j) { return json_to_uint64(j, "a count"); }
+
 json extreme_json(const sweep_extreme& e) {
   if (!e.set) return nullptr;
   json j;
@@ -133,8 +135,8 @@ void text_proved(std::ostream& os, const json& s) {
   }
 }
 
-void text_extreme(std::ostream& os, const json& e, const char* label) {
-  os << label;
+void text_extreme(std::ostream& os, const json& e, const char* label, const char* relation) {
+  os << label << relation;
   if (e.is_null()) os << "n/a\n";
   else {
     os << e.at("value").get<std::string>() << "  at";
@@ -180,10 +182,6 @@ json sweep_accumulator_json(const sweep_accumulator& a, sweep_check_set checks) 
   j["errors"] = {{"count", a.errors.violations}, {"examples", pairs_json(a.errors.examples)}};
   return j;
 }
-
-namespace {
-std::uint64_t count_from_json(const json& j) { return json_to_uint64(j, "a count"); }
-}  // namespace
 
 sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_examples) {
   sweep_accumulator a;
@@ -239,10 +237,9 @@ std::string sweep_summary_text(const json& s) {
   // paper's columns within a few ulps, include/gyrores/sweep/evaluate.hpp), so its last digits may
   // be off: "~=" and a line saying so, never "=". A certified run prints proved upper bounds.
   const bool bounds = s.contains("proved");
-  text_extreme(os, s.at("asy_ratio_max"), bounds ? "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) <= "
-                                                 : "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) ~= ");
-  text_extreme(os, s.at("sharp_constant"), bounds ? "  sharp constant      sup |theta_c - theta_asy| a/x^2 <= "
-                                                  : "  sharp constant      sup |theta_c - theta_asy| a/x^2 ~= ");
+  const char* relation = bounds ? "<= " : "~= ";
+  text_extreme(os, s.at("asy_ratio_max"), "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) ", relation);
+  text_extreme(os, s.at("sharp_constant"), "  sharp constant      sup |theta_c - theta_asy| a/x^2 ", relation);
   text_ratios(os, s);
   if (!bounds)
     os << "  (values after ~= and the t_first/(pi/|n|) quantiles are computed, not proved: their last digits may be "
