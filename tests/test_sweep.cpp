@@ -1059,7 +1059,7 @@ namespace {
 sweep_accumulator run_acc_rows(const sweep_config& c, const sweep_engine_options& e) {
   sweep_accumulator acc;
   acc.max_examples = c.max_examples;
-  const sweep_row_formatter<double> drop = [](std::string&, const sweep_row<double>&) {};
+  const sweep_row_sink<double> drop = [](sweep_block&, const sweep_row<double>&) {};
   auto out = sweep_run<double>(c, e, [&](sweep_block& b) { acc.merge(b.summary); }, drop);
   REQUIRE(out.complete);
   return acc;

@@ -70,7 +70,7 @@ template <class T> std::string sweep_text(std::int64_t max_order, bool certified
         acc.merge(b.summary);
         rows += b.rows;
       },
-      [&](std::string& s, const sweep_row<T>& r) { sweep_format_row(s, r, sweep_format::csv, cfg.digits); });
+      [&](sweep_block& b, const sweep_row<T>& r) { sweep_format_row(b.rows, r, sweep_format::csv, cfg.digits); });
   return std::string(out.complete ? "complete\n" : "incomplete\n") + rows + sweep_accumulator_json(acc, cfg.checks).dump();
 }
 

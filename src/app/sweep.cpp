@@ -19,10 +19,10 @@ sweep_report sweep_to_files(const sweep_config& cfg_in, const sweep_files& files
   if (cfg.min_order < 3) cfg.min_order = 3;
   sweep_validate(cfg);
   sweep_file_session session(cfg, files, sweep_run_json<T>(cfg), progress);
-  sweep_row_formatter<T> format_row;
+  sweep_row_sink<T> format_row;
   if (!files.rows_path.empty())
-    format_row = [f = files.rows_format, digits = cfg.digits](std::string& out, const sweep_row<T>& r) {
-      sweep_format_row(out, r, f, digits);
+    format_row = [f = files.rows_format, digits = cfg.digits](sweep_block& b, const sweep_row<T>& r) {
+      sweep_format_row(b.rows, r, f, digits);
     };
   sweep_engine_options eo = eo_in;
   eo.start = session.start();
@@ -49,12 +49,6 @@ namespace {
 constexpr double large_sweep_pairs = 1e10, large_sweep_bytes = 100e9;
 constexpr double row_bytes_csv = 200, row_bytes_jsonl = 400;
 
-std::string gigabytes(double b) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g GB", b / 1e9);
-  return buf;
-}
-
 // The sweep's cost before it starts: pairs (counted, or 3 M^2 / (2 pi^2) coprime pairs beyond the
 // counting limit) and scratch bytes; refused beyond the caps unless allowed.
 void check_sweep_size(const sweep_request& r) {
@@ -69,9 +63,9 @@ void check_sweep_size(const sweep_request& r) {
                                                                          : row_bytes_csv;
   const double bytes = pairs * (8 + per_row * std::max(1.0, double(cfg.digits) / 17));
   if (r.allow_large || (pairs <= large_sweep_pairs && bytes <= large_sweep_bytes)) return;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.3g", pairs);
-  throw usage_error("this sweep has about " + std::string(buf) + " pairs and needs about " + gigabytes(bytes) +
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "this sweep has about %.3g pairs and needs about %.3g GB", pairs, bytes / 1e9);
+  throw usage_error(std::string(buf) +
                     " of scratch and output (limits: 1e10 pairs, 100 GB): add --allow-large to run it anyway, or shard it");
 }
 
@@ -97,21 +91,14 @@ json run_sweep_in_memory(const sweep_in_memory_request& r) {
   acc.max_examples = cfg.max_examples;
   sweep_engine_options eo;
   eo.threads = r.threads;
-  auto evaluate = [&](const std::vector<resonant_pair<std::int64_t>>& pairs, sweep_block& blk) {
-    sweep_record rec;
-    for (const auto& p : pairs) {
-      auto row = sweep_evaluate<double>(p, cfg);
-      sweep_record_fill(rec, row, cfg.digits);
-      blk.summary.add(rec);
-      if (r.keep_rows) blk.kept.push_back(std::move(row));
-    }
-  };
+  sweep_row_sink<double> keep;
+  if (r.keep_rows) keep = [](sweep_block& b, const sweep_row<double>& row) { b.kept.push_back(row); };
   auto on_block = [&](sweep_block& blk) {
     acc.merge(blk.summary);
     if (r.on_block) r.on_block(blk.kept, blk.first + blk.count, total);
   };
   const auto t0 = std::chrono::steady_clock::now();
-  sweep_run_blocks(cfg, eo, evaluate, on_block);
+  sweep_run<double>(cfg, eo, on_block, keep);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return sweep_summary_json(acc, sweep_run_json<double>(cfg), seconds);
 }

@@ -6,6 +6,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/io/files.hpp>
 #include <gyrores/io/sweep_summary.hpp>
+#include <gyrores/io/sweep_values_file.hpp>
 
 namespace gyrores {
 namespace {
@@ -90,6 +91,41 @@ json merge_inputs(const std::vector<sweep_input>& in) {
   return sweep_summary_json(acc, run, seconds);
 }
 
+// A complete shard summary with its values file; usage_error if it is not one (not JSON, not a
+// summary, unfinished, or without values file) or of a version that is refused.
+sweep_input read_summary(const std::string& path) {
+  sweep_input r;
+  r.path = path;
+  json j;
+  try {
+    j = json_parse_strict(read_file(path, sweep_json_read_limit, "a sweep summary"));
+  } catch (const json::exception& e) {
+    throw usage_error("'" + path + "' is not JSON: " + e.what());
+  }
+  if (j.value("format", "") != "gyrores-sweep-summary") throw usage_error("'" + path + "' is not a gyrores sweep summary");
+  r.run = sweep_run_of_version(j.at("run"), json_to_int64(j.at("version"), "version"), path);
+  if (!r.run.value("complete", false)) throw usage_error("'" + path + "' is the summary of an unfinished sweep");
+  r.seconds = j.at("seconds").get<double>();
+  r.acc = sweep_accumulator_from_json(j, json_to_uint64(r.run.at("max_examples"), "max_examples"));
+  if (j.at("values_file").is_null())
+    throw usage_error("'" + path + "' has no values file (only shard runs write one); merge the row files instead");
+  std::string vf = j.at("values_file").get<std::string>();
+  if (vf.find('/') == std::string::npos) {
+    auto slash = path.rfind('/');
+    if (slash != std::string::npos) vf = path.substr(0, slash + 1) + vf;
+  }
+  r.acc.t_ratios = sweep_read_values_file(vf);
+  // The values file must be the one this summary was written with (merge would otherwise mix
+  // another shard's values into the quantiles).
+  if (!j.contains("values_check"))
+    throw usage_error("'" + path + "' records no values_check for its values file (written before checksums): run that shard again");
+  const json digest = sweep_values_digest(r.acc.t_ratios);
+  if (digest != j.at("values_check"))
+    throw usage_error("the values file '" + vf + "' does not match '" + path + "' (values_check " +
+                      j.at("values_check").dump() + ", the file gives " + digest.dump() + ")");
+  return r;
+}
+
 // A rows file or a shard summary, told apart by its first line.
 sweep_input sweep_read_output(const std::string& path) {
   check_input_path(path);
@@ -104,7 +140,7 @@ sweep_input sweep_read_output(const std::string& path) {
   try {
     sweep_input x = first.rfind("# gyrores-sweep-rows", 0) == 0 || first.find("\"gyrores_sweep_rows\"") != std::string::npos
                         ? sweep_read_rows(path)
-                        : sweep_read_summary(path);
+                        : read_summary(path);
     check_run_integers(x.run);
     return x;
   } catch (const json::exception& e) {

@@ -1,14 +1,11 @@
-// include/gyrores/io/sweep_summary.hpp: summary JSON and text, accumulator <-> JSON, values file.
+// include/gyrores/io/sweep_summary.hpp: summary JSON and text, accumulator <-> JSON.
 #include <gyrores/io/sweep_summary.hpp>
 
 #include <cstdio>
-#include <cstring>
 #include <sstream>
 
 #include <gyrores/core/error.hpp>
 #include <gyrores/theorem/lobes.hpp>
-#include <gyrores/io/files.hpp>
-#include <gyrores/io/sweep_values_file.hpp>
 
 namespace gyrores {
 namespace {
@@ -30,6 +27,8 @@ std::vector<sweep_pair_id> pairs_from_json(const json& a) {
   for (auto& p : a) v.push_back({json_to_int64(p.at(0), "tau"), json_to_int64(p.at(1), "sigma")});
   return v;
 }
+
+std::uint64_t count_from_json(const json& j) { return json_to_uint64(j, "a count"); }
 
 json extreme_json(const sweep_extreme& e) {
   if (!e.set) return nullptr;
@@ -136,8 +135,8 @@ void text_proved(std::ostream& os, const json& s) {
   }
 }
 
-void text_extreme(std::ostream& os, const json& e, const char* label) {
-  os << label;
+void text_extreme(std::ostream& os, const json& e, const char* label, const char* relation) {
+  os << label << relation;
   if (e.is_null()) os << "n/a\n";
   else {
     os << e.at("value").get<std::string>() << "  at";
@@ -183,10 +182,6 @@ json sweep_accumulator_json(const sweep_accumulator& a, sweep_check_set checks) 
   j["errors"] = {{"count", a.errors.violations}, {"examples", pairs_json(a.errors.examples)}};
   return j;
 }
-
-namespace {
-std::uint64_t count_from_json(const json& j) { return json_to_uint64(j, "a count"); }
-}  // namespace
 
 sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_examples) {
   sweep_accumulator a;
@@ -242,48 +237,14 @@ std::string sweep_summary_text(const json& s) {
   // paper's columns within a few ulps, include/gyrores/sweep/evaluate.hpp), so its last digits may
   // be off: "~=" and a line saying so, never "=". A certified run prints proved upper bounds.
   const bool bounds = s.contains("proved");
-  text_extreme(os, s.at("asy_ratio_max"), bounds ? "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) <= "
-                                                 : "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) ~= ");
-  text_extreme(os, s.at("sharp_constant"), bounds ? "  sharp constant      sup |theta_c - theta_asy| a/x^2 <= "
-                                                  : "  sharp constant      sup |theta_c - theta_asy| a/x^2 ~= ");
+  const char* relation = bounds ? "<= " : "~= ";
+  text_extreme(os, s.at("asy_ratio_max"), "  worst asy ratio     |theta_c - theta_asy| / (pi^3 x^2/a) ", relation);
+  text_extreme(os, s.at("sharp_constant"), "  sharp constant      sup |theta_c - theta_asy| a/x^2 ", relation);
   text_ratios(os, s);
   if (!bounds)
     os << "  (values after ~= and the t_first/(pi/|n|) quantiles are computed, not proved: their last digits may be "
           "off by a few units; --certified proves the asy bounds)\n";
   return os.str();
-}
-
-sweep_input sweep_read_summary(const std::string& path) {
-  sweep_input r;
-  r.path = path;
-  json j;
-  try {
-    j = json_parse_strict(read_file(path, sweep_json_read_limit, "a sweep summary"));
-  } catch (const json::exception& e) {
-    throw usage_error("'" + path + "' is not JSON: " + e.what());
-  }
-  if (j.value("format", "") != "gyrores-sweep-summary") throw usage_error("'" + path + "' is not a gyrores sweep summary");
-  r.run = sweep_run_of_version(j.at("run"), json_to_int64(j.at("version"), "version"), path);
-  if (!r.run.value("complete", false)) throw usage_error("'" + path + "' is the summary of an unfinished sweep");
-  r.seconds = j.at("seconds").get<double>();
-  r.acc = sweep_accumulator_from_json(j, json_to_uint64(r.run.at("max_examples"), "max_examples"));
-  if (j.at("values_file").is_null())
-    throw usage_error("'" + path + "' has no values file (only shard runs write one); merge the row files instead");
-  std::string vf = j.at("values_file").get<std::string>();
-  if (vf.find('/') == std::string::npos) {
-    auto slash = path.rfind('/');
-    if (slash != std::string::npos) vf = path.substr(0, slash + 1) + vf;
-  }
-  r.acc.t_ratios = sweep_read_values_file(vf);
-  // The values file must be the one this summary was written with (merge would otherwise mix
-  // another shard's values into the quantiles).
-  if (!j.contains("values_check"))
-    throw usage_error("'" + path + "' records no values_check for its values file (written before checksums): run that shard again");
-  const json digest = sweep_values_digest(r.acc.t_ratios);
-  if (digest != j.at("values_check"))
-    throw usage_error("the values file '" + vf + "' does not match '" + path + "' (values_check " +
-                      j.at("values_check").dump() + ", the file gives " + digest.dump() + ")");
-  return r;
 }
 
 }  // namespace gyrores

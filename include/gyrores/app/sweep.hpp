@@ -46,11 +46,11 @@ struct sweep_request {
 // unless r.allow_large.
 sweep_report run_sweep(const sweep_request& r);
 
-// A sweep in double without files (the Python module): every pair's row (sweep_evaluate), handed
-// in enumeration order to on_block on the calling thread after each block of pairs (`rows` empty
-// unless keep_rows), with the pairs done and the total; returns the summary of `gyrores sweep
-// --json` (io/sweep_summary.hpp). An exception from on_block stops the run and is rethrown after
-// the workers have ended.
+// A sweep in double without files (the Python module), by sweep_run: with keep_rows every pair's
+// row (sweep_evaluate), handed in enumeration order to on_block on the calling thread after each
+// block of pairs (`rows` empty otherwise), with the pairs done and the total; returns the summary
+// of `gyrores sweep --json` (io/sweep_summary.hpp). An exception from on_block stops the run and
+// is rethrown after the workers have ended.
 struct sweep_in_memory_request {
   sweep_config config;
   unsigned threads = 0;  // 0: every core

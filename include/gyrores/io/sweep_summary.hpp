@@ -1,6 +1,7 @@
 // The summary of a sweep as JSON (`--summary`, `--json`, `gyrores merge`) and as text, the
-// accumulator <-> JSON (summaries and resume states), shard summaries read back with their values
-// files, and the merge of shard outputs. Keys and what a merge checks: docs/formats.md.
+// accumulator <-> JSON (summaries and resume states), and the merge of shard outputs (rows files,
+// or shard summaries read back with their values files). Keys and what a merge checks:
+// docs/formats.md.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -22,10 +23,6 @@ sweep_accumulator sweep_accumulator_from_json(const json& j, std::size_t max_exa
 json sweep_summary_json(const sweep_accumulator& a, const json& run, double seconds);
 // As `gyrores sweep` and `gyrores merge` print it.
 std::string sweep_summary_text(const json& summary);
-
-// A complete shard summary with its values file, for a merge; usage_error if it is not one (not
-// JSON, not a summary, unfinished, or without values file) or of a version that is refused.
-sweep_input sweep_read_summary(const std::string& path);
 
 // The summary of the whole sweep from its shards' rows files or summaries (run: shard [0, 1],
 // threads null, merged_shards N). usage_error unless they come from one configuration, cover

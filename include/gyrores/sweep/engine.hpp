@@ -26,7 +26,9 @@ struct sweep_block {
   sweep_pair_id last{0, 0};            // last pair of the block
 };
 
-template <class T> using sweep_row_formatter = std::function<void(std::string&, const sweep_row<T>&)>;
+// What a run keeps of each row, on the workers: its text appended to the block's `rows`, or
+// the row itself in `kept`.
+template <class T> using sweep_row_sink = std::function<void(sweep_block&, const sweep_row<T>&)>;
 
 struct sweep_engine_options {
   unsigned threads = 0;            // 0: std::thread::hardware_concurrency()
@@ -57,19 +59,18 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
                                const std::function<void(sweep_block&)>& on_block);
 
 // sweep_run_blocks with each pair evaluated by sweep_evaluate<T> (a failed pair is an error row,
-// not a stop); format_row, if set, appends a row's text to the block's `rows` on the workers.
-// Without rows a double sweep that is not certified takes each pair's summary from the theorem's
-// series form where that decides it (src/lib/sweep/fast.cpp): the same summary, far cheaper.
+// not a stop) and handed to keep_row, if set. Without rows a double sweep that is not certified
+// takes each pair's summary from the theorem's series form where that decides it
+// (src/lib/sweep/fast.cpp): the same summary, far cheaper.
 template <class T>
 sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
-                        const std::function<void(sweep_block&)>& on_block,
-                        const sweep_row_formatter<T>& format_row = {});
+                        const std::function<void(sweep_block&)>& on_block, const sweep_row_sink<T>& keep_row = {});
 
 // Compiled once in src/lib/sweep/engine.cpp for the compiled reals (core/real.hpp).
 #define GYRORES_SWEEP_ENGINE_INSTANCES(PREFIX, T)                                                        \
   PREFIX template sweep_outcome sweep_run<T>(const sweep_config&, const sweep_engine_options&,          \
                                              const std::function<void(sweep_block&)>&,                 \
-                                             const sweep_row_formatter<T>&);
+                                             const sweep_row_sink<T>&);
 GYRORES_FOR_COMPILED_REALS(GYRORES_SWEEP_ENGINE_INSTANCES, extern)
 
 }  // namespace gyrores

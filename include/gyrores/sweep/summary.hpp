@@ -98,8 +98,7 @@ struct sweep_accumulator {
   // Exact merge; the result does not depend on the grouping or order of merges.
   void merge(const sweep_accumulator& o);
   // q-quantile = sorted[floor(q (n-1))] of t_ratios (the median is the lower median), by radix
-  // selection with `opt`; without it, with options for where the values are (the same values).
-  sweep_quantiles quantiles(const sweep_selection_options& opt) const;
+  // selection with options for where the values are.
   sweep_quantiles quantiles() const;
 };
 

@@ -32,6 +32,23 @@ spacing spacing_of(double h) {  // h > 0 finite: its neighbours are the adjacent
   return {h - std::bit_cast<double>(bits - 1), std::bit_cast<double>(bits + 1) - h};
 }
 double at_most(double c) { return c * (1 - 0x1p-52); }
+// Upward: v in (h, next(h)] rounds to next(h), v in (prev(h), h] to h; downward: v in
+// [h, next(h)) rounds to h, v in [prev(h), h) to prev(h). Whether every v of X lies in one of
+// the two, with the ends the direction takes.
+bool round_directed(const dd_ball& X, bool up, double& out) {
+  const double h = X.m.hi;
+  if (!(h > 0)) return false;
+  const spacing g = spacing_of(h);
+  if ((up ? X.r < X.m.lo : X.r <= X.m.lo) && X.r < at_most(g.above - X.m.lo)) {
+    out = up ? h + g.above : h;
+    return true;
+  }
+  if ((up ? X.r <= -X.m.lo : X.r < -X.m.lo) && X.r < at_most(X.m.lo + g.below)) {
+    out = up ? h : h - g.below;
+    return true;
+  }
+  return false;
+}
 }  // namespace
 
 bool sweep_testing::round_nearest(const dd_ball& X, double& out) {
@@ -42,36 +59,8 @@ bool sweep_testing::round_nearest(const dd_ball& X, double& out) {
   out = h;
   return true;
 }
-// Upward: v in (h, next(h)] rounds to next(h), v in (prev(h), h] to h.
-bool sweep_testing::round_up(const dd_ball& X, double& out) {
-  const double h = X.m.hi;
-  if (!(h > 0)) return false;
-  const spacing g = spacing_of(h);
-  if (X.r < X.m.lo && X.r < at_most(g.above - X.m.lo)) {
-    out = h + g.above;
-    return true;
-  }
-  if (X.r <= -X.m.lo && X.r < at_most(X.m.lo + g.below)) {
-    out = h;
-    return true;
-  }
-  return false;
-}
-// Downward: v in [h, next(h)) rounds to h, v in [prev(h), h) to prev(h).
-bool sweep_testing::round_down(const dd_ball& X, double& out) {
-  const double h = X.m.hi;
-  if (!(h > 0)) return false;
-  const spacing g = spacing_of(h);
-  if (X.r <= X.m.lo && X.r < at_most(g.above - X.m.lo)) {
-    out = h;
-    return true;
-  }
-  if (X.r < -X.m.lo && X.r < at_most(X.m.lo + g.below)) {
-    out = h - g.below;
-    return true;
-  }
-  return false;
-}
+bool sweep_testing::round_up(const dd_ball& X, double& out) { return round_directed(X, true, out); }
+bool sweep_testing::round_down(const dd_ball& X, double& out) { return round_directed(X, false, out); }
 
 namespace sweep_rows {
 namespace {

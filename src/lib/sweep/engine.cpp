@@ -12,7 +12,6 @@
 #include <type_traits>
 
 #include <gyrores/core/thread_caches.hpp>
-#include <gyrores/model/enumerate.hpp>
 
 #include "row_parts.hpp"
 
@@ -105,7 +104,6 @@ class block_pipeline {
         threads_(opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency())),
         block_size_(std::max<std::size_t>(1, opt.block_size)),
         window_(4 * std::uint64_t(threads_)),
-        range_(cfg.min_order, cfg.max_order, cfg.shard_index, cfg.shard_count),
         it_(cfg.min_order, cfg.max_order, cfg.shard_index, cfg.shard_count),
         limit_(opt.max_pairs ? opt.start + opt.max_pairs : std::numeric_limits<std::uint64_t>::max()) {}
 
@@ -223,7 +221,6 @@ class block_pipeline {
   const unsigned threads_;
   const std::size_t block_size_;
   const std::uint64_t window_;  // blocks in flight
-  coprime_pairs range_;  // validates the shard (usage_error)
   pair_stream it_;
   const std::uint64_t limit_;
   std::uint64_t taken_ = 0;  // pairs handed out (shard-relative, from 0)
@@ -249,13 +246,13 @@ sweep_outcome sweep_run_blocks(const sweep_config& cfg, const sweep_engine_optio
 
 template <class T>
 sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt,
-                        const std::function<void(sweep_block&)>& on_block, const sweep_row_formatter<T>& format_row) {
-  const bool fast = std::is_same_v<T, double> && !format_row && !cfg.certified;
+                        const std::function<void(sweep_block&)>& on_block, const sweep_row_sink<T>& keep_row) {
+  const bool fast = std::is_same_v<T, double> && !keep_row && !cfg.certified;
   // The largest asy constant computed so far in this run, shared by the workers as a hint: any
   // value a pair of the run has given is a valid one (src/lib/sweep/fast.cpp), so relaxed order
   // suffices.
   std::atomic<double> asy_known{0};
-  auto evaluate = [&cfg, &format_row, fast, &asy_known](const std::vector<pair64>& pairs, sweep_block& blk) {
+  auto evaluate = [&cfg, &keep_row, fast, &asy_known](const std::vector<pair64>& pairs, sweep_block& blk) {
     blk.summary.t_ratios.reserve(pairs.size());
     if constexpr (std::is_same_v<T, double>) {
       if (fast) {
@@ -275,7 +272,7 @@ sweep_outcome sweep_run(const sweep_config& cfg, const sweep_engine_options& opt
       sweep_evaluate_to(row, p, cfg);
       sweep_record_fill(rec, row, cfg.digits);
       blk.summary.add(rec);
-      if (format_row) format_row(blk.rows, row);
+      if (keep_row) keep_row(blk, row);
     }
   };
   return sweep_run_blocks(cfg, opt, evaluate, on_block);

@@ -139,20 +139,11 @@ void sweep_accumulator::merge(const sweep_accumulator& o) {
   t_ratios.merge(o.t_ratios);
 }
 
-sweep_quantiles sweep_accumulator::quantiles(const sweep_selection_options& opt) const {
+sweep_quantiles sweep_accumulator::quantiles() const {
   sweep_quantiles q;
   const std::uint64_t n = t_ratios.size();
   q.count = n;
   if (n == 0) return q;
-  std::vector<std::uint64_t> ranks;
-  for (std::uint64_t percent : {0, 1, 10, 50, 90, 99, 100}) ranks.push_back(quantile_rank(n, percent, 100));
-  const auto v = sweep_order_statistics([this](const sweep_value_sink& s) { t_ratios.replay(s); }, n, ranks, opt);
-  double* out[] = {&q.min, &q.p01, &q.p10, &q.median, &q.p90, &q.p99, &q.max};
-  for (std::size_t i = 0; i < v.size(); ++i) *out[i] = v[i];
-  return q;
-}
-
-sweep_quantiles sweep_accumulator::quantiles() const {
   sweep_selection_options opt;
   // In memory a pass is cheap (~2.5 ns a value) and collecting is not: with up to 2^22
   // candidates the first pass would collect every value of a mid-sized sweep into one group and
@@ -161,9 +152,14 @@ sweep_quantiles sweep_accumulator::quantiles() const {
   // pass reads it all again: there the defaults save a pass.
   if (t_ratios.in_memory()) {
     opt.bits = 16;
-    opt.collect_limit = std::clamp<std::uint64_t>(t_ratios.size() / 16, std::uint64_t(1) << 12, std::uint64_t(1) << 20);
+    opt.collect_limit = std::clamp<std::uint64_t>(n / 16, std::uint64_t(1) << 12, std::uint64_t(1) << 20);
   }
-  return quantiles(opt);
+  std::vector<std::uint64_t> ranks;
+  for (std::uint64_t percent : {0, 1, 10, 50, 90, 99, 100}) ranks.push_back(quantile_rank(n, percent, 100));
+  const auto v = sweep_order_statistics([this](const sweep_value_sink& s) { t_ratios.replay(s); }, n, ranks, opt);
+  double* out[] = {&q.min, &q.p01, &q.p10, &q.median, &q.p90, &q.p99, &q.max};
+  for (std::size_t i = 0; i < v.size(); ++i) *out[i] = v[i];
+  return q;
 }
 
 }  // namespace gyrores
