@@ -122,6 +122,35 @@ void R(arb_t out, const arb_t x, const arb_t c, const arb_t alpha, slong p) {
   arb_add(out, q, qd, p);
 }
 
+void alpha_T(arb_t out, const arb_t S, const horizon_time& T, const arb_t pi, slong p) {
+  arb_support::set_rational(out, T.value, p);
+  arb_mul(out, out, S, p);
+  arb_mul_2exp_si(out, out, -1);
+  if (T.times_pi) arb_mul(out, out, pi, p);
+}
+
+std::optional<big_int> cut_lobe(const coupling_spec& spec, const horizon_time& T, slong p) {
+  if (T.value == 0) return big_int(0);
+  if (T.times_pi) {
+    const big_int P = spec.P(), Q = spec.Q(), d = Q * (P + 4 * Q);
+    big_int root;
+    const quadratic_number s = int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
+    return (s * quadratic_number(T.value / 2) + quadratic_number(1, 2)).floor();
+  }
+  ball S, pi, a, f, half;
+  arb_support::set_rational(S, spec.n2 + 4, p);
+  arb_sqrt(S, S, p);
+  arb_const_pi(pi, p);
+  alpha_T(a, S, T, pi, p);
+  arb_div(a, a, pi, p);
+  arb_set_d(half, 0.5);
+  arb_add(a, a, half, p);
+  arb_floor(f, a, p);
+  arb_support::fmpz_holder z;
+  if (arb_get_unique_fmpz(z, f)) return z.value();
+  return std::nullopt;
+}
+
 void dR(arb_t out, const arb_t x, const arb_t alpha, slong p) {
   const phases f(x, alpha, p);
   ball qd, zd, t;
