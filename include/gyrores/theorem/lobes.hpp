@@ -47,12 +47,6 @@ template <class L> lobe_frame<L> pass_frame(const L& a, const L& b) {
   return {k, j, L(odd ? 1 : 2)};
 }
 
-// Frame (k, j, m) rewritten with k in [0, a): k -> k - t a keeps m when j -> j - t b.
-template <class L> lobe_frame<L> lobe_frame_reduced(const lobe_frame<L>& f, const L& a, const L& b) {
-  const L t = int_floor_div(f.k, a);
-  return {L(f.k - t * a), L(f.j - t * b), f.m};
-}
-
 // The place of a minimiser lobe on [0, 2 pi) (k reduced): k, or a for the k = 0 lobe with m < 0
 // (its minimiser u = -u* lies just below 2 pi).
 template <class L> L lobe_order_key(const lobe_frame<L>& f, const L& a) { return f.k == 0 && f.m < 0 ? a : f.k; }
@@ -93,7 +87,10 @@ template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
     out.push_back(s);
     out.push_back(lobe_mirror(s, a, b));
   }
-  for (auto& f : out) f = lobe_frame_reduced(f, a, b);
+  for (auto& f : out) {  // k into [0, a): k -> k - t a keeps m when j -> j - t b
+    const L t = int_floor_div(f.k, a);
+    f = {L(f.k - t * a), L(f.j - t * b), f.m};
+  }
   std::sort(out.begin(), out.end(),
             [&](const auto& x, const auto& y) { return lobe_order_key(x, a) < lobe_order_key(y, a); });
   return out;
