@@ -32,6 +32,7 @@
 #include <gyrores/theorem/paper.hpp>
 #include <gyrores/theorem/root.hpp>
 
+#include "reference/lattice.hpp"  // pass_frame
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
 #include "sweep_summary_core.hpp"
