@@ -49,16 +49,10 @@ struct interval {
   band_cover_interval how;          // which bound of item 4, for a certificate
 };
 
-fraction fraction_of(const band_coupling& c) {
-  return {c.x.p(), c.x.r()};  // only for rational x (q = 0 in c.x): p/r
-}
-
-bool is_rational_point(const band_coupling& c) { return c.x.is_rational(); }
-
 // An odd-denominator fraction at an interval's end that is a peak of f_K (Q <= 2K - 1, item 3).
 std::optional<fraction> end_peak(const band_coupling& c, const big_int& K) {
-  if (!is_rational_point(c)) return std::nullopt;
-  const fraction f = fraction_of(c);
+  if (!c.x.is_rational()) return std::nullopt;
+  const fraction f{c.x.p(), c.x.r()};  // p/r (q = 0 in c.x)
   if (f.q % 2 == 0 || f.q > 2 * K - 1) return std::nullopt;
   return f;
 }

@@ -7,6 +7,18 @@ namespace gyrores::kernels_arb {
 
 using arb_support::ball;
 
+void H(arb_t out, const arb_t x, const arb_t u, slong p) {
+  ball sn, cs, t;
+  arb_sin_cos(sn, cs, u, p);
+  arb_mul(sn, sn, x, p);
+  arb_atan2(t, sn, cs, p);
+  arb_mul(out, x, u, p);
+  arb_add(out, out, t, p);
+}
+
+namespace {
+
+// out = v^2 from the ends of v (a plain product v v of a wide ball can reach below 0).
 void square(arb_t out, const arb_t v, slong p) {
   arf_t l, h;
   arf_init(l);
@@ -28,18 +40,7 @@ void square(arb_t out, const arb_t v, slong p) {
   arf_clear(h);
 }
 
-void H(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, t;
-  arb_sin_cos(sn, cs, u, p);
-  arb_mul(sn, sn, x, p);
-  arb_atan2(t, sn, cs, p);
-  arb_mul(out, x, u, p);
-  arb_add(out, out, t, p);
-}
-
-namespace {
-
-// The terms dH, G and dG share: sin u, cos u, E(u) = cos^2 u + x^2 sin^2 u, x^2 sin^2 u, sin^2 u,
+// The terms G and dG share: sin u, cos u, E(u) = cos^2 u + x^2 sin^2 u, x^2 sin^2 u, sin^2 u,
 // x^2 and 1 - x^2 (squares from their ends).
 struct lobe_terms {
   ball sn, cs, e, xs2, s2, x2, w;
@@ -58,12 +59,6 @@ struct lobe_terms {
 };
 
 }  // namespace
-
-void dH(arb_t out, const arb_t x, const arb_t u, slong p) {
-  const lobe_terms L(x, u, p);
-  arb_div(out, x, L.e, p);
-  arb_add(out, out, x, p);
-}
 
 void G(arb_t out, const arb_t x, const arb_t u, slong p) {
   const lobe_terms L(x, u, p);

@@ -15,16 +15,11 @@
 
 namespace gyrores::kernels_arb {
 
-// out = v^2 from the ends of v (a plain product v v of a wide ball can reach below 0).
-void square(arb_t out, const arb_t v, slong p);
-
 // H(u) = x u + phi(u), phi the continuous angle of (cos u, x sin u), for |u| <= pi/2.
 void H(arb_t out, const arb_t x, const arb_t u, slong p);
 
-// H'(u) = x + x/E(u), E = cos^2 u + x^2 sin^2 u.
-void dH(arb_t out, const arb_t x, const arb_t u, slong p);
-
-// G(u) = (1 - x^2) x^2 sin^4 u / E(u): R at a zero of q' (lattice-theorem.md Step C).
+// G(u) = (1 - x^2) x^2 sin^4 u / E(u), E = cos^2 u + x^2 sin^2 u: R at a zero of q'
+// (lattice-theorem.md Step C).
 void G(arb_t out, const arb_t x, const arb_t u, slong p);
 
 // G'(u) = (1 - x^2) x^2 sin^3 u cos u (4 E + 2 (1 - x^2) sin^2 u)/E^2 (for Newton only).
