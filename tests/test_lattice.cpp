@@ -199,7 +199,7 @@ TEST_CASE("cross_check_lattice accepts a true result and rejects tampered ones",
 // Issue 12: the minimiser 2u*/a ~ 1.57e-50 of (3 10^50 + 1, 10^50) and its mirror 2 pi - 1.57e-50,
 // which rounds to 2 pi in every type. The order is decided on the exact frames, so the mirror
 // comes last whatever the rounding; the frames are reduced to k in [0, a), theorem order
-// (lattice_theorem.hpp: minimiser_lobes, an independent ordering of the same frames).
+// (tests/reference/lattice.hpp: minimiser_lobes_modular, an independent ordering of the same frames).
 template <class T> void check_near_zero_minimiser() {
   using gyrores::big_int;
   big_int sigma = 1;
@@ -214,7 +214,7 @@ template <class T> void check_near_zero_minimiser() {
   CHECK(double(r.minimisers[1]) > 6.28);
   CHECK(r.first.k >= 0);
   CHECK(r.first.k < p.order());
-  const auto lobes = gyrores::minimiser_lobes(big_int(p.order()), big_int(p.delta()));
+  const auto lobes = gyrores::minimiser_lobes_modular(big_int(p.order()), big_int(p.delta()));
   REQUIRE(lobes.size() == 2);
   CHECK(r.first.k == lobes[0].k);
   CHECK(r.first.m == lobes[0].m);

@@ -32,6 +32,7 @@
 #include <gyrores/theorem/paper.hpp>
 #include <gyrores/theorem/root.hpp>
 
+#include "reference/lattice.hpp"  // pass_frame
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
 #include "sweep_summary_core.hpp"
@@ -1191,6 +1192,12 @@ TEST_CASE("sweep: the fast path's asy bound is above every computed constant, an
   const double ua = paper_root_double(std::numbers::pi / 2);
   CHECK(std::tan(ua) * (1 + 1e-15) < 0.860333589019381);
   CHECK(std::tan(ua) * (1 + 4e-15) > 0.860333589019381);  // and not by much
+  // The bound as one double for the pair (a, b) and its offset am (the sweep's fast path compares
+  // products instead, src/lib/sweep/fast.cpp).
+  const auto paper_constant_bound_of = [](std::int64_t a, std::int64_t b, std::int64_t am) {
+    const paper_bound_fraction f = paper_constant_bound(double(b) / double(a), double(am) / double(b));
+    return f.num / f.den;
+  };
   std::size_t tested = 0;
   for (std::int64_t a = 5; a <= 700; ++a)
     for (std::int64_t b = (a % 2 ? 1 : 2); 2 * b < a; b += 2) {

@@ -56,6 +56,46 @@ struct lattice_options {
   lattice_solver solver = lattice_solver::scout_and_polish;
 };
 
+// The pass frame: the frame with m = +m_min (m_min = 1 or 2), by one modular inverse.
+//   delta odd:       2j+1 = a^{-1} mod 2b,        k = ((2j+1) a - 1)/(2b)
+//   delta = 0 mod 4: 2j+1 = (a/2)^{-1} mod b,     k = ((2j+1) a/2 - 1)/b
+// Precondition (not checked): delta != 2 mod 4.
+template <class L> lobe_frame<L> pass_frame(const L& a, const L& b) {
+  const bool odd = int_mod(b, L(2)) == 1;
+  const L ah = odd ? a : L(a / 2), bh = odd ? b : L(b / 2);
+  const L mod = 2 * bh;
+  const L inverse = mod == 2 ? L(1) : int_inverse_mod(ah, mod);  // odd: ah * inverse = 1 mod an even number
+  const L j = (inverse - 1) / 2;
+  const L k = ((2 * j + 1) * ah - 1) / mod;
+  return {k, j, L(odd ? 1 : 2)};
+}
+
+// theorem/lobes.hpp's minimiser_lobes formed independently, for its tests: the pass frame and its
+// mirror (and shift) reduced to k in [0, a), then sorted by their place on [0, 2 pi).
+template <class L> lobe_list<L> minimiser_lobes_modular(const L& a, const L& b) {
+  lobe_list<L> out;
+  if (theorem_m_min(a) == 0) {
+    out.push_back(lobe_frame_of(a, b, L(a / 4), L((b - 2) / 4)));
+    out.push_back(lobe_frame_of(a, b, L(3 * (a / 4)), L((3 * b - 2) / 4)));
+    return out;
+  }
+  const auto pass = pass_frame(a, b);
+  out.push_back(pass);
+  out.push_back(lobe_mirror(pass, a, b));
+  if (pass.m == 2) {
+    const auto s = lobe_shift(pass, a, b);
+    out.push_back(s);
+    out.push_back(lobe_mirror(s, a, b));
+  }
+  for (auto& f : out) {  // k into [0, a): k -> k - t a keeps m when j -> j - t b
+    const L t = int_floor_div(f.k, a);
+    f = {L(f.k - t * a), L(f.j - t * b), f.m};
+  }
+  std::sort(out.begin(), out.end(),
+            [&](const auto& x, const auto& y) { return lobe_order_key(x, a) < lobe_order_key(y, a); });
+  return out;
+}
+
 namespace detail {
 
 template <class S> struct scout_root {

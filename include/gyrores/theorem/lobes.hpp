@@ -33,26 +33,6 @@ template <class L> int theorem_m_min(const L& a) {
   return std::min(r, 4 - r);
 }
 
-// The pass frame: the frame with m = +m_min (m_min = 1 or 2), by one modular inverse.
-//   delta odd:       2j+1 = a^{-1} mod 2b,        k = ((2j+1) a - 1)/(2b)
-//   delta = 0 mod 4: 2j+1 = (a/2)^{-1} mod b,     k = ((2j+1) a/2 - 1)/b
-// Precondition (not checked): delta != 2 mod 4.
-template <class L> lobe_frame<L> pass_frame(const L& a, const L& b) {
-  const bool odd = int_mod(b, L(2)) == 1;
-  const L ah = odd ? a : L(a / 2), bh = odd ? b : L(b / 2);
-  const L mod = 2 * bh;
-  const L inverse = mod == 2 ? L(1) : int_inverse_mod(ah, mod);  // odd: ah * inverse = 1 mod an even number
-  const L j = (inverse - 1) / 2;
-  const L k = ((2 * j + 1) * ah - 1) / mod;
-  return {k, j, L(odd ? 1 : 2)};
-}
-
-// Frame (k, j, m) rewritten with k in [0, a): k -> k - t a keeps m when j -> j - t b.
-template <class L> lobe_frame<L> lobe_frame_reduced(const lobe_frame<L>& f, const L& a, const L& b) {
-  const L t = int_floor_div(f.k, a);
-  return {L(f.k - t * a), L(f.j - t * b), f.m};
-}
-
 // The place of a minimiser lobe on [0, 2 pi) (k reduced): k, or a for the k = 0 lobe with m < 0
 // (its minimiser u = -u* lies just below 2 pi).
 template <class L> L lobe_order_key(const lobe_frame<L>& f, const L& a) { return f.k == 0 && f.m < 0 ? a : f.k; }
@@ -75,33 +55,9 @@ template <class L> class lobe_list {
   std::size_t count_ = 0;
 };
 
-// The lobes of the global minimisers over one period, k in [0, a), in increasing theta (item 4
-// of the theorem). Degenerate pairs (m_min = 0): the two lobes of the zeros pi/2 and 3 pi/2
-// (u = 0, m = 0).
-template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
-  lobe_list<L> out;
-  if (theorem_m_min(a) == 0) {
-    out.push_back(lobe_frame_of(a, b, L(a / 4), L((b - 2) / 4)));
-    out.push_back(lobe_frame_of(a, b, L(3 * (a / 4)), L((3 * b - 2) / 4)));
-    return out;
-  }
-  const auto pass = pass_frame(a, b);
-  out.push_back(pass);
-  out.push_back(lobe_mirror(pass, a, b));
-  if (pass.m == 2) {
-    const auto s = lobe_shift(pass, a, b);
-    out.push_back(s);
-    out.push_back(lobe_mirror(s, a, b));
-  }
-  for (auto& f : out) f = lobe_frame_reduced(f, a, b);
-  std::sort(out.begin(), out.end(),
-            [&](const auto& x, const auto& y) { return lobe_order_key(x, a) < lobe_order_key(y, a); });
-  return out;
-}
-
-// The minimisers' lobes of a machine-integer pair from its pass frame (pass.m = m_min = 1 or 2,
-// 0 < pass.k < ah, ah = a or a/2), as minimiser_lobes_euclid_into below describes them, into
-// `out`; their count returned. Also for the pass frames of theorem/minimum_series.hpp.
+// The minimisers' lobes of a pair from its pass frame, the frame with m = +m_min: (2j+1) a - 2 k b
+// = m_min = 1 or 2, 0 < k < ah, ah = a or a/2, as minimiser_lobes_euclid_into below describes
+// them, into `out`; their count returned. Also for the pass frames of theorem/minimum_series.hpp.
 template <class L>
 [[gnu::always_inline]] inline std::size_t minimiser_lobes_of_pass(const L& a, const L& b, const lobe_frame<L>& pass,
                                                                   std::array<lobe_frame<L>, 4>& out) {
@@ -123,8 +79,11 @@ template <class L>
   return 4;
 }
 
-// The same list for machine integers (int64 with a < 2^62, int128 with a < 2^126), by one
-// extended Euclid and no sort: the double path's (theorem/minimum.hpp). With ah = a, d = 2b
+// The lobes of the global minimisers over one period, k in [0, a), in increasing theta (item 4
+// of the theorem). Degenerate pairs (m_min = 0): the two lobes of the zeros pi/2 and 3 pi/2
+// (u = 0, m = 0). By one extended Euclid and no sort, in machine integers (int64 with a < 2^62,
+// int128 with a < 2^126) or big integers (tests/reference/lattice.hpp orders the same frames
+// from a modular inverse, tests/test_double_double.cpp compares them). With ah = a, d = 2b
 // (m_min = 1) or ah = a/2, d = b (m_min = 2), Euclid gives s ah + t d = 1 with |s| < d, |t| < ah
 // (every cofactor and remainder stays below 2a: no overflow); s taken into (0, d) is 2j+1 and
 // -t is k of the pass frame, (2j+1) a - 2 k b = m_min, 0 < k < ah (k = 0 would need ah = 1).
@@ -161,7 +120,7 @@ template <class L>
   if (s0 < 0) s0 += d, t0 -= ah;
   return minimiser_lobes_of_pass(a, b, {L(-t0), L((s0 - 1) >> 1), L(m)}, out);  // s0 - 1 >= 0 and even
 }
-template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
+template <class L> lobe_list<L> minimiser_lobes(const L& a, const L& b) {
   std::array<lobe_frame<L>, 4> frames{};
   lobe_list<L> out;
   const std::size_t n = minimiser_lobes_euclid_into(a, b, frames);
@@ -169,13 +128,12 @@ template <class L> lobe_list<L> minimiser_lobes_euclid(const L& a, const L& b) {
   return out;
 }
 
-// minimiser_lobes for a pair held in big integers: by minimiser_lobes_euclid in int64 for orders
-// below 2^62 (the same list, tests/test_double_double.cpp; a tenth of the cost of the modular
-// inverse in big integers), else minimiser_lobes itself.
+// minimiser_lobes for a pair held in big integers: in int64 for orders below 2^62 (the same
+// list without big-integer arithmetic).
 inline lobe_list<big_int> minimiser_lobes_big(const big_int& a, const big_int& b) {
   if (a >= big_int(std::int64_t(1) << 62)) return minimiser_lobes(a, b);
   lobe_list<big_int> out;
-  for (const auto& f : minimiser_lobes_euclid(a.convert_to<std::int64_t>(), b.convert_to<std::int64_t>()))
+  for (const auto& f : minimiser_lobes(a.convert_to<std::int64_t>(), b.convert_to<std::int64_t>()))
     out.push_back({big_int(f.k), big_int(f.j), big_int(f.m)});
   return out;
 }

@@ -55,7 +55,7 @@ GYRORES_DD_INLINE double lobe_theta_double(double ad, double inv_a, std::int64_t
   return 2 * (q + rem * inv_a);
 }
 
-// The k of the pass frame (theorem/lobes.hpp, pass_frame: (2j+1) a - 2 k b = m_min, 0 < k < ah)
+// The k of the pass frame (theorem/lobes.hpp: (2j+1) a - 2 k b = m_min, 0 < k < ah)
 // of each pair of a block, ks[i] pairs[i]'s, by Montgomery's batch inversion over each run of one
 // order: with ah = a (m_min = 1) or a/2 (m_min = 2), b = -2 sigma mod ah gives k = (4 sigma)^-1
 // or (2 sigma)^-1 mod ah (minimum_series.cpp); 0 for degenerate pairs and orders from 2^31 on.

@@ -59,8 +59,6 @@ GYRORES_DD_INLINE paper_bound_fraction paper_constant_bound(double x, double am_
   const double t2 = t * t, y2 = x * x * t2;
   return {(2.0 / 3) * (t2 * t) * (1 + y2), 2 + t2 + y2};
 }
-// The same bound as one double, for the pair (a, b) and its offset am.
-double paper_constant_bound_of(std::int64_t a, std::int64_t b, std::int64_t am);
 
 // ---- enclosures at K's precision ----
 

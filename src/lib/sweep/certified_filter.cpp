@@ -69,14 +69,13 @@ using sweep_testing::round_down;
 using sweep_testing::round_nearest;
 using sweep_testing::round_up;
 
-// The minimisers' lobes (theorem/lobes.hpp): minimiser_lobes_euclid's machine-integer Euclid
-// gives minimiser_lobes's list (that header's comment; tests/test_double_double.cpp compares
-// them) at a tenth of the int128 version's cost; held as int128 frames for the checks. Its
+// The minimisers' lobes (theorem/lobes.hpp): minimiser_lobes's Euclid in machine integers, at a
+// tenth of the int128 version's cost; held as int128 frames for the checks. Its
 // remainders, cofactors and frames stay below 2a, so int32 serves for a < 2^30 (32-bit divisions
 // take half the time of 64-bit ones), int64 above.
 template <class L> lobe_list<int128> lobes_as_int128(L a, L b) {
   lobe_list<int128> out;
-  for (const auto& f : minimiser_lobes_euclid(a, b)) out.push_back({f.k, f.j, f.m});
+  for (const auto& f : minimiser_lobes(a, b)) out.push_back({f.k, f.j, f.m});
   return out;
 }
 lobe_list<int128> lobes_of(std::int64_t a, std::int64_t b) {

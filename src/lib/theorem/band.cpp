@@ -49,16 +49,10 @@ struct interval {
   band_cover_interval how;          // which bound of item 4, for a certificate
 };
 
-fraction fraction_of(const band_coupling& c) {
-  return {c.x.p(), c.x.r()};  // only for rational x (q = 0 in c.x): p/r
-}
-
-bool is_rational_point(const band_coupling& c) { return c.x.is_rational(); }
-
 // An odd-denominator fraction at an interval's end that is a peak of f_K (Q <= 2K - 1, item 3).
 std::optional<fraction> end_peak(const band_coupling& c, const big_int& K) {
-  if (!is_rational_point(c)) return std::nullopt;
-  const fraction f = fraction_of(c);
+  if (!c.x.is_rational()) return std::nullopt;
+  const fraction f{c.x.p(), c.x.r()};  // p/r (q = 0 in c.x)
   if (f.q % 2 == 0 || f.q > 2 * K - 1) return std::nullopt;
   return f;
 }
@@ -99,14 +93,7 @@ class search {
 
   band_extreme run();
   // Item 4's bound of one interval, with the kind it took.
-  band_cover_interval bound_only(const band_coupling& a, const band_coupling& b) {
-    const interval J = bound_of(a, b);
-    band_cover_interval c = J.how;
-    c.a = a;
-    c.b = b;
-    c.bound = J.bound;
-    return c;
-  }
+  band_cover_interval bound_only(const band_coupling& a, const band_coupling& b) { return cover_of(bound_of(a, b)); }
 
  private:
   bool absorption() const { return which_ == extreme::absorption; }
@@ -118,8 +105,12 @@ class search {
   interval absorption_bound(const band_coupling& a, const band_coupling& b);
   interval containment_bound(const band_coupling& a, const band_coupling& b);
   fraction middle(const interval& J) const;
-  void keep(const interval& J);  // into the final covering
-  bool settled(const big_rational& lo, const big_rational& hi) const;
+  static band_cover_interval cover_of(const interval& J);
+  void keep(const interval& J) { cover_.push_back(cover_of(J)); }  // into the final covering
+  // [lo, hi] in R units as the extremes are reported: H_q = R/2 times energy_scale.
+  enclosure reported(const big_rational& lo, const big_rational& hi) const {
+    return band_detail::enclosure_of_rationals(lo * opt_.energy_scale / 2, hi * opt_.energy_scale / 2);
+  }
   band_extreme result(const big_rational& lo, const big_rational& hi, bool interrupted, const std::string& why) const;
 
   band_arith arith_;
@@ -154,7 +145,7 @@ void search::evaluate(const band_coupling& c) {
 interval search::absorption_bound(const band_coupling& a, const band_coupling& b) {
   interval J{a, b, 0, {}, ++serial_, {}};
   big_int K = arith_.cut_lobe(a) - 1;
-  if (arith_.reached_on(big_int(K + 1), a, b)) K += 1, J.how.reached = true;
+  if (arith_.reached_on(big_int(K + 1), a, b, true)) K += 1, J.how.reached = true;
   J.how.K = K;
   std::optional<big_rational> lobes;  // none: no admissible lobe on all of J (K = -1)
   if (K == 0) lobes = arith_.V_upper(a, quadratic_number(1, 2));
@@ -169,8 +160,8 @@ interval search::absorption_bound(const band_coupling& a, const band_coupling& b
       const quadratic_number na = distance_to_half(a.x, k), nb = distance_to_half(b.x, k);
       J.how.k = k;
       if (!less_than(na, nb)) lobes = arith_.V_upper(a, fa), J.how.kind = band_bound_kind::line_falling;
-      else if (arith_.rising_increases(k, a, b, nb)) lobes = arith_.V_upper(b, fb), J.how.kind = band_bound_kind::line_rising;
-      else if (arith_.rising_decreases(k, a, b, na)) lobes = arith_.V_upper(a, na), J.how.kind = band_bound_kind::line_turning;
+      else if (arith_.g_signed(k, a, nb, b, true)) lobes = arith_.V_upper(b, fb), J.how.kind = band_bound_kind::line_rising;
+      else if (arith_.g_signed(k, b, na, a, false)) lobes = arith_.V_upper(a, na), J.how.kind = band_bound_kind::line_turning;
       else lobes = arith_.V_upper(a, fb), J.how.kind = band_bound_kind::line_unproved;
     } else {
       quadratic_number top = larger(fa, fb);
@@ -207,7 +198,7 @@ interval search::containment_bound(const band_coupling& a, const band_coupling& 
   big_rational bound = lobes_lower(kcb, splits);
   if (bound < 0) bound = 0;
   J.how.K = kcb;
-  if (arith_.unreached_on(kcb, a, b)) {  // then K_T <= k_c(b) - 1 on all of J (item 4)
+  if (arith_.reached_on(kcb, a, b, false)) {  // then K_T <= k_c(b) - 1 on all of J (item 4)
     std::vector<fraction> inner;
     const big_rational lobes = lobes_lower(big_int(kcb - 1), inner);
     const big_rational end = arith_.end_point_range(a, b).first;
@@ -239,17 +230,12 @@ fraction search::middle(const interval& J) const {
   return f;
 }
 
-bool search::settled(const big_rational& lo, const big_rational& hi) const {
-  const enclosure e = band_detail::enclosure_of_rationals(lo * opt_.energy_scale / 2, hi * opt_.energy_scale / 2);
-  return e.rounded(opt_.digits).has_value();
-}
-
-void search::keep(const interval& J) {
+band_cover_interval search::cover_of(const interval& J) {
   band_cover_interval c = J.how;
   c.a = J.a;
   c.b = J.b;
   c.bound = J.bound;
-  cover_.push_back(std::move(c));
+  return c;
 }
 
 band_extreme search::result(const big_rational& lo, const big_rational& hi, bool interrupted, const std::string& why) const {
@@ -259,12 +245,12 @@ band_extreme search::result(const big_rational& lo, const big_rational& hi, bool
     std::sort(r.cover.begin(), r.cover.end(),
               [](const band_cover_interval& u, const band_cover_interval& v) { return less_than(u.a.x, v.a.x); });
   }
-  r.value = band_detail::enclosure_of_rationals(lo * opt_.energy_scale / 2, hi * opt_.energy_scale / 2);
+  r.value = reported(lo, hi);
   r.settled = !interrupted && why.empty() && r.value.rounded(opt_.digits).has_value();
   r.interrupted = interrupted;
   r.unsettled_reason = why;
   r.at = best_at_;
-  r.at_value = band_detail::enclosure_of_rationals(best_lo_ * opt_.energy_scale / 2, best_hi_ * opt_.energy_scale / 2);
+  r.at_value = reported(best_lo_, best_hi_);
   r.intervals = intervals_;
   r.couplings = couplings_;
   return r;
@@ -293,7 +279,7 @@ band_extreme search::run() {
       opt_.progress(p);
     }
     if (!absorption() && best_hi_ == 0) return finish(0, 0, false, "");  // an exact zero: B = 0
-    if (!opt_.versus && settled(lo, hi)) return finish(lo, hi, false, "");
+    if (!opt_.versus && reported(lo, hi).rounded(opt_.digits)) return finish(lo, hi, false, "");
     if (opt_.versus && (hi <= *opt_.versus * 2 || lo >= *opt_.versus * 2)) {
       band_extreme r = finish(lo, hi, false, "");
       r.decided = true;
@@ -353,6 +339,21 @@ slong start_bits(unsigned digits, const big_rational& n2, const horizon_time& T)
   return slong(digits10_to_bits(digits)) + 96 + 2 * std::max<slong>(0, bits(scale));
 }
 
+// refine from `start` bits up to the tie cap (core/refine.hpp), a precision_shortfall being an
+// undecided attempt.
+template <class T, class Attempt>
+T refine_band(slong start, const stop_token& stop, const std::string& what, Attempt&& attempt) {
+  const precision_plan plan{mpfr_prec_t(start), tie_bits_cap(mpfr_prec_t(start))};
+  return refine(plan, stop, what, [&](mpfr_prec_t bits, proof_status& status) -> std::optional<T> {
+    try {
+      return attempt(slong(bits), status);
+    } catch (const precision_shortfall& e) {
+      status = proof_status::undecided(e.why());
+      return std::nullopt;
+    }
+  });
+}
+
 void check_band_input(const big_rational& n1, const big_rational& n2, const band_options& opt) {
   check_band(n1, n2, "the band");
   check_report_digits(opt.digits);
@@ -370,20 +371,14 @@ band_extreme prove_extreme(const big_rational& n1, const big_rational& n2, const
     r.at_value = r.value;
     return r;
   }
-  const slong start = start_bits(opt.digits, n2 * n2, T);
-  precision_plan plan{mpfr_prec_t(start), tie_bits_cap(mpfr_prec_t(start))};
-  return refine(plan, opt.stop, std::string("the band's ") + (which == extreme::absorption ? "absorption" : "containment") +
-                                    " guarantee",
-                [&](mpfr_prec_t bits, proof_status& status) -> std::optional<band_extreme> {
-                  try {
-                    band_extreme r = search(band_coupling::of_n(n1), band_coupling::of_n(n2), T, opt, which, slong(bits)).run();
-                    if (r.settled || r.decided || r.interrupted || !r.unsettled_reason.empty()) return r;
-                    status = proof_status::undecided("the bounds did not settle the rounding");
-                  } catch (const precision_shortfall& e) {
-                    status = proof_status::undecided(e.why());
-                  }
-                  return std::nullopt;
-                });
+  const std::string what = std::string("the band's ") + (which == extreme::absorption ? "absorption" : "containment");
+  const auto attempt = [&](slong bits, proof_status& status) -> std::optional<band_extreme> {
+    band_extreme r = search(band_coupling::of_n(n1), band_coupling::of_n(n2), T, opt, which, bits).run();
+    if (r.settled || r.decided || r.interrupted || !r.unsettled_reason.empty()) return r;
+    status = proof_status::undecided("the bounds did not settle the rounding");
+    return std::nullopt;
+  };
+  return refine_band<band_extreme>(start_bits(opt.digits, n2 * n2, T), opt.stop, what + " guarantee", attempt);
 }
 
 // ---- the band-wide first time below a level (item 6) ----
@@ -506,21 +501,14 @@ band_first_below prove_band_first_below(const big_rational& n1, const big_ration
                                         const band_options& opt) {
   check_band_input(n1, n2, opt);
   if (level < 0) throw usage_error("the level E must be >= 0, got " + rational_str(level));
-  const slong start = start_bits(opt.digits, n2 * n2, horizon_time(big_rational(1)));
-  precision_plan plan{mpfr_prec_t(start), tie_bits_cap(mpfr_prec_t(start))};
   band_first_below r;
   bool bracketed = false;  // r.time holds the latest first time (a draining horizon is known)
   try {
-    return refine(plan, opt.stop, "the band's first time below a level",
-                  [&](mpfr_prec_t bits, proof_status& status) -> std::optional<band_first_below> {
-                    try {
-                      first_below_search(n1, n2, level, opt, slong(bits), r, bracketed);
-                      return r;
-                    } catch (const precision_shortfall& e) {
-                      status = proof_status::undecided(e.why());
-                    }
-                    return std::nullopt;
-                  });
+    return refine_band<band_first_below>(start_bits(opt.digits, n2 * n2, horizon_time(big_rational(1))), opt.stop,
+                                         "the band's first time below a level", [&](slong bits, proof_status&) {
+                                           first_below_search(n1, n2, level, opt, bits, r, bracketed);
+                                           return std::optional(r);
+                                         });
   } catch (const interrupted&) {
     if (!bracketed) throw;  // no horizon is proved to drain the band yet: no bracket to print
     r.interrupted = true;  // the bracket reached: [latest evaluated first time, last draining horizon]
@@ -534,16 +522,10 @@ band_cover_interval band_interval_bound(const band_coupling& a, const band_coupl
   band_options opt;
   opt.digits = digits;
   const extreme which = absorption ? extreme::absorption : extreme::containment;
-  const slong start = start_bits(digits, b.spec.n2, T);
-  const precision_plan plan{mpfr_prec_t(start), tie_bits_cap(mpfr_prec_t(start))};
-  return refine(plan, {}, "band: an interval's bound", [&](mpfr_prec_t bits, proof_status& status) -> std::optional<band_cover_interval> {
-    try {
-      return search(a, b, T, opt, which, slong(bits)).bound_only(a, b);
-    } catch (const precision_shortfall& e) {
-      status = proof_status::undecided(e.why());
-      return std::nullopt;
-    }
-  });
+  return refine_band<band_cover_interval>(start_bits(digits, b.spec.n2, T), {}, "band: an interval's bound",
+                                          [&](slong bits, proof_status&) {
+                                            return std::optional(search(a, b, T, opt, which, bits).bound_only(a, b));
+                                          });
 }
 
 band_extreme prove_band_absorption(const big_rational& n1, const big_rational& n2, const horizon_time& T,

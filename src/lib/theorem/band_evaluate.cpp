@@ -13,7 +13,6 @@
 namespace gyrores::band_detail {
 
 using arb_support::ball;
-using arb_support::fmpz_holder;
 using arb_support::lower_rational;
 using arb_support::set_int;
 using arb_support::set_quadratic;
@@ -31,13 +30,6 @@ void sin_cos_clipped(arb_t s, arb_t c, const arb_t a, slong p) {
   arb_zero_pm_one(unit);
   if (!arb_is_finite(s) || !arb_contains(unit, s)) arb_set(s, unit);
   if (!arb_is_finite(c) || !arb_contains(unit, c)) arb_set(c, unit);
-}
-
-// The coupling's s = sqrt(n^2 + 4), exactly when it is rational or quadratic: sqrt((P + 4Q)/Q).
-quadratic_number s_exact(const coupling_spec& c) {
-  const big_int P = c.P(), Q = c.Q(), d = Q * (P + 4 * Q);
-  big_int root;
-  return int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
 }
 
 // s = sqrt(n^2 + 4), x = n/s, c = 2/s, dx/dn = 4/s^3 and dc/dn = -2n/s^3 over a ball of n > 0. Each is
@@ -147,10 +139,7 @@ enclosure enclosure_of_rationals(const big_rational& lo, const big_rational& hi)
     return bits_of(boost::multiprecision::numerator(v)) + bits_of(boost::multiprecision::denominator(v));
   };
   const mpfr_prec_t bits = std::min<mpfr_prec_t>(mpfr_prec_t(1) << 20, 64 + std::max(size(lo), size(hi)));
-  exact_binary a(bits), b(bits);
-  mpfr_set_q(a.get(), lo.backend().data(), MPFR_RNDD);
-  mpfr_set_q(b.get(), hi.backend().data(), MPFR_RNDU);
-  return enclosure(a, b);
+  return enclosure(enclosure::exact(lo, bits).lo(), enclosure::exact(hi, bits).hi());  // outward, not exact
 }
 
 band_arith::band_arith(const horizon_time& T, slong prec) : T_(T), prec_(prec) { arb_const_pi(pi_, prec_); }
@@ -159,25 +148,12 @@ void band_arith::alpha_T(arb_t out, const band_coupling& c) const {
   ball s;
   set_rational(s, c.spec.n2 + 4, prec_);
   arb_sqrt(s, s, prec_);
-  set_rational(out, T_.value, prec_);
-  arb_mul(out, out, s, prec_);
-  arb_mul_2exp_si(out, out, -1);
-  if (T_.times_pi) arb_mul(out, out, pi_, prec_);
+  kernels_arb::alpha_T(out, s, T_, pi_, prec_);
 }
 
 big_int band_arith::cut_lobe(const band_coupling& c) const {
-  if (T_.times_pi)  // alpha_T/pi + 1/2 = s T'/2 + 1/2 with s in Q(sqrt d): exact
-    return (s_exact(c.spec) * quadratic_number(T_.value / 2) + quadratic_number(1, 2)).floor();
-  // alpha_T/pi + 1/2 is transcendental (pi), never an integer: a fine enough ball decides the floor.
-  ball a, h, f;
-  alpha_T(a, c);
-  arb_div(a, a, pi_, prec_);
-  arb_set_d(h, 0.5);
-  arb_add(a, a, h, prec_);
-  arb_floor(f, a, prec_);
-  fmpz_holder z;
-  if (!arb_get_unique_fmpz(z, f)) throw precision_shortfall("the lobe holding t = T was not decided");
-  return z.value();
+  if (std::optional<big_int> k = kernels_arb::cut_lobe(c.spec, T_, prec_)) return *k;
+  throw precision_shortfall("the lobe holding t = T was not decided");
 }
 
 // H_x^{-1}(target), target a ball in [0, pi/2] (x = c.x, a point), by the one solver of
@@ -234,40 +210,26 @@ big_rational band_arith::V_lower(const band_coupling& c, const quadratic_number&
   return r > 0 ? r : big_rational(0);
 }
 
-bool band_arith::reached_on(const big_int& k, const band_coupling& a, const band_coupling& b) const {
+// alpha_T increases with x: reached needs the minimiser's largest alpha on [a, b] at or below
+// alpha_T(a), the least; not reached its least alpha above alpha_T(b), the largest.
+bool band_arith::reached_on(const big_int& k, const band_coupling& a, const band_coupling& b, bool reached) const {
+  const band_coupling &near = reached ? a : b, &far = reached ? b : a;
   ball u, top, at;
-  alpha_T(at, a);  // alpha_T increases with x: its least value on [a, b]
+  alpha_T(at, near);
   if (k < 0) return false;
   if (k == 0) {  // u*_0 = H^{-1}(pi/2), largest at a (horizon Step 12 (b))
-    signed_root(u, a, quadratic_number(1, 2));
-    return arb_le(u, at);
+    signed_root(u, near, quadratic_number(1, 2));
+    return reached ? arb_le(u, at) : arb_gt(u, at);
   }
   const quadratic_number ka = quadratic_number(k) * a.x, kb = quadratic_number(k) * b.x;
   if (ka.floor() != kb.floor()) return false;  // k x passes an integer: mu_k takes every value
-  const quadratic_number nu_max = quadratic_number(1, 2) - ka.frac();  // mu_k(a)/pi, the largest on [a, b]
-  signed_root(u, nu_max.sign() >= 0 ? a : b, nu_max);
+  // mu_k(a)/pi, the largest on [a, b] (reached), or mu_k(b)/pi, the least
+  const quadratic_number nu = quadratic_number(1, 2) - (reached ? ka : kb).frac();
+  signed_root(u, nu.sign() >= 0 ? near : far, nu);
   set_int(top, k);
   arb_mul(top, top, pi_, prec_);
   arb_add(top, top, u, prec_);
-  return arb_le(top, at);
-}
-
-bool band_arith::unreached_on(const big_int& k, const band_coupling& a, const band_coupling& b) const {
-  ball u, bottom, at;
-  alpha_T(at, b);  // the largest alpha_T on [a, b]
-  if (k < 0) return false;
-  if (k == 0) {
-    signed_root(u, b, quadratic_number(1, 2));
-    return arb_gt(u, at);
-  }
-  const quadratic_number ka = quadratic_number(k) * a.x, kb = quadratic_number(k) * b.x;
-  if (ka.floor() != kb.floor()) return false;
-  const quadratic_number nu_min = quadratic_number(1, 2) - kb.frac();  // mu_k(b)/pi, the least
-  signed_root(u, nu_min.sign() >= 0 ? b : a, nu_min);
-  set_int(bottom, k);
-  arb_mul(bottom, bottom, pi_, prec_);
-  arb_add(bottom, bottom, u, prec_);
-  return arb_gt(bottom, at);
+  return reached ? arb_le(top, at) : arb_gt(top, at);
 }
 
 // g = (pi k - u)(1 - x^2) - x^2 tan u over [a, b] (band-theorem.md item 2, Step 4): at least its

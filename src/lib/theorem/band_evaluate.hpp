@@ -36,20 +36,17 @@ class band_arith {
 
   // k_c: the lobe holding t = T at the coupling c (exact).
   big_int cut_lobe(const band_coupling& c) const;
-  // Lobe k's minimiser lies in [0, T] wherever k is the cut lobe on [a, b] / after T on all of it.
-  bool reached_on(const big_int& k, const band_coupling& a, const band_coupling& b) const;
-  bool unreached_on(const big_int& k, const band_coupling& a, const band_coupling& b) const;
+  // Lobe k's minimiser lies in [0, T] wherever k is the cut lobe on [a, b] (reached), or after T
+  // on all of it (not reached).
+  bool reached_on(const big_int& k, const band_coupling& a, const band_coupling& b, bool reached) const;
   // Rational bounds of V_x(nu) at the coupling c (0 <= nu <= 1/2, exact).
   big_rational V_upper(const band_coupling& c, const quadratic_number& nu) const;
   big_rational V_lower(const band_coupling& c, const quadratic_number& nu) const;
-  // On [a, b], where nu_k rises from na to nb: g > 0 throughout (the composite increases), or
-  // g < 0 throughout (it decreases); false when not proved.
-  bool rising_increases(const big_int& k, const band_coupling& a, const band_coupling& b, const quadratic_number& nb) const {
-    return g_signed(k, a, nb, b, true);
-  }
-  bool rising_decreases(const big_int& k, const band_coupling& a, const band_coupling& b, const quadratic_number& na) const {
-    return g_signed(k, b, na, a, false);
-  }
+  // On [a, b], where nu_k rises from na to nb: g > 0 throughout (the composite increases) is
+  // g_signed(k, a, nb, b, true), g < 0 throughout (it decreases) g_signed(k, b, na, a, false);
+  // false when not proved.
+  bool g_signed(const big_int& k, const band_coupling& root_at, const quadratic_number& nu, const band_coupling& at,
+                bool upper_end) const;
   // [inf, sup] of R(T) over the couplings of [a, b].
   std::pair<big_rational, big_rational> end_point_range(const band_coupling& a, const band_coupling& b) const;
   // The minimum of R over [0, T] at c, an enclosure [lo, hi] (the horizon theorem).
@@ -61,8 +58,6 @@ class band_arith {
   std::pair<big_rational, big_rational> middle_third(const band_coupling& a, const band_coupling& b) const;
 
  private:
-  bool g_signed(const big_int& k, const band_coupling& root_at, const quadratic_number& nu, const band_coupling& at,
-                bool upper_end) const;
   void lobe_root(arb_t out, const band_coupling& c, const arb_t target) const;  // H_x^{-1}(target)
   void signed_root(arb_t out, const band_coupling& c, const quadratic_number& signed_nu) const;
   void alpha_T(arb_t out, const band_coupling& c) const;

@@ -132,38 +132,12 @@ mpfr_prec_t start_bits(unsigned digits, const big_rational& scale, const couplin
 
 precision_plan plan_of(mpfr_prec_t start) { return {start, tie_bits_cap(start)}; }
 
-// alpha_T = S T/2 as a ball.
-void set_alpha_T(arb_t out, const coupling_balls& cb, const horizon_time& T) {
-  set_rational(out, T.value, cb.prec);
-  arb_mul(out, out, cb.s, cb.prec);
-  arb_mul_2exp_si(out, out, -1);
-  if (T.times_pi) arb_mul(out, out, cb.pi, cb.prec);
-}
-
-// k_c = floor(alpha_T/pi + 1/2), exactly. For T = value pi it is floor(S value/2 + 1/2) with
-// S = sqrt(Q (P + 4Q))/Q in Q(sqrt d); for a rational T > 0 the argument is transcendental (pi), so
-// it is never an integer and a fine enough ball decides the floor.
-big_int cut_lobe_of(const coupling_spec& spec, const quadratic_number& x, const horizon_time& T, mpfr_prec_t start,
-                    const stop_token& stop) {
-  if (T.value == 0) return 0;
-  if (T.times_pi) {
-    const big_int P = spec.P(), Q = spec.Q(), d = Q * (P + 4 * Q);
-    big_int root;
-    const quadratic_number s = int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
-    return (s * quadratic_number(T.value / 2) + quadratic_number(1, 2)).floor();
-  }
+// k_c (kernels_arb::cut_lobe), at the precision that decides it.
+big_int cut_lobe_of(const coupling_spec& spec, const horizon_time& T, mpfr_prec_t start, const stop_token& stop) {
   return refine(plan_of(start), stop, "horizon: the lobe holding t = T", [&](mpfr_prec_t prec, proof_status& status) {
-    coupling_balls cb(spec, x, prec);
-    ball a, f, half;
-    set_alpha_T(a, cb, T);
-    arb_div(a, a, cb.pi, prec);
-    arb_set_d(half, 0.5);
-    arb_add(a, a, half, prec);
-    arb_floor(f, a, prec);
-    fmpz_holder z;
-    if (arb_get_unique_fmpz(z, f)) return std::optional<big_int>(z.value());
-    status = proof_status::undecided("the floor of S T/(2 pi) + 1/2");
-    return std::optional<big_int>();
+    std::optional<big_int> k = kernels_arb::cut_lobe(spec, T, slong(prec));
+    if (!k) status = proof_status::undecided("the floor of S T/(2 pi) + 1/2");
+    return k;
   });
 }
 
@@ -182,7 +156,7 @@ struct horizon_setup {
 proof_status minimum_at(const horizon_setup& h, slong prec, horizon_minimum_proof& r) {
   coupling_balls cb(h.spec, h.x, prec);
   ball alpha_T;
-  set_alpha_T(alpha_T, cb, h.T);
+  kernels_arb::alpha_T(alpha_T, cb.s, h.T, cb.pi, prec);
   lobe_point cut;
   GYRORES_TRY_PROOF(prove_lobe_point(cb, h.cut, h.decimals, cut));
   r.cut = cut.root;
@@ -230,7 +204,7 @@ horizon_minimum_proof prove_horizon_minimum(const coupling_spec& spec, const hor
   const quadratic_number x = coupling_rotation_number(spec);
   const mpfr_prec_t start = start_bits(goal.digits, T.times_pi ? big_rational(T.value * 4) : T.value, spec);
   const unsigned decimals = use == proof_use::certificate ? certificate_digits(goal.digits) : 0;
-  horizon_setup h{spec, T, x, cut_lobe_of(spec, x, T, start, stop), std::nullopt, {}, decimals};
+  horizon_setup h{spec, T, x, cut_lobe_of(spec, T, start, stop), std::nullopt, {}, decimals};
   // The best full lobe (exact), and the cut lobe.
   if (h.cut_lobe >= 1) h.full = lobe_of(x, min_distance_to_half(x, big_int(h.cut_lobe - 1), stop).k);
   h.cut = lobe_of(x, h.cut_lobe);

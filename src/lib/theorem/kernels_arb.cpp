@@ -7,6 +7,18 @@ namespace gyrores::kernels_arb {
 
 using arb_support::ball;
 
+void H(arb_t out, const arb_t x, const arb_t u, slong p) {
+  ball sn, cs, t;
+  arb_sin_cos(sn, cs, u, p);
+  arb_mul(sn, sn, x, p);
+  arb_atan2(t, sn, cs, p);
+  arb_mul(out, x, u, p);
+  arb_add(out, out, t, p);
+}
+
+namespace {
+
+// out = v^2 from the ends of v (a plain product v v of a wide ball can reach below 0).
 void square(arb_t out, const arb_t v, slong p) {
   arf_t l, h;
   arf_init(l);
@@ -28,18 +40,7 @@ void square(arb_t out, const arb_t v, slong p) {
   arf_clear(h);
 }
 
-void H(arb_t out, const arb_t x, const arb_t u, slong p) {
-  ball sn, cs, t;
-  arb_sin_cos(sn, cs, u, p);
-  arb_mul(sn, sn, x, p);
-  arb_atan2(t, sn, cs, p);
-  arb_mul(out, x, u, p);
-  arb_add(out, out, t, p);
-}
-
-namespace {
-
-// The terms dH, G and dG share: sin u, cos u, E(u) = cos^2 u + x^2 sin^2 u, x^2 sin^2 u, sin^2 u,
+// The terms G and dG share: sin u, cos u, E(u) = cos^2 u + x^2 sin^2 u, x^2 sin^2 u, sin^2 u,
 // x^2 and 1 - x^2 (squares from their ends).
 struct lobe_terms {
   ball sn, cs, e, xs2, s2, x2, w;
@@ -58,12 +59,6 @@ struct lobe_terms {
 };
 
 }  // namespace
-
-void dH(arb_t out, const arb_t x, const arb_t u, slong p) {
-  const lobe_terms L(x, u, p);
-  arb_div(out, x, L.e, p);
-  arb_add(out, out, x, p);
-}
 
 void G(arb_t out, const arb_t x, const arb_t u, slong p) {
   const lobe_terms L(x, u, p);
@@ -120,6 +115,35 @@ void R(arb_t out, const arb_t x, const arb_t c, const arb_t alpha, slong p) {
   arb_mul(q, q, q, p);
   arb_mul(qd, qd, qd, p);
   arb_add(out, q, qd, p);
+}
+
+void alpha_T(arb_t out, const arb_t S, const horizon_time& T, const arb_t pi, slong p) {
+  arb_support::set_rational(out, T.value, p);
+  arb_mul(out, out, S, p);
+  arb_mul_2exp_si(out, out, -1);
+  if (T.times_pi) arb_mul(out, out, pi, p);
+}
+
+std::optional<big_int> cut_lobe(const coupling_spec& spec, const horizon_time& T, slong p) {
+  if (T.value == 0) return big_int(0);
+  if (T.times_pi) {
+    const big_int P = spec.P(), Q = spec.Q(), d = Q * (P + 4 * Q);
+    big_int root;
+    const quadratic_number s = int_is_square(d, root) ? quadratic_number(root, Q) : quadratic_number(0, 1, Q, d);
+    return (s * quadratic_number(T.value / 2) + quadratic_number(1, 2)).floor();
+  }
+  ball S, pi, a, f, half;
+  arb_support::set_rational(S, spec.n2 + 4, p);
+  arb_sqrt(S, S, p);
+  arb_const_pi(pi, p);
+  alpha_T(a, S, T, pi, p);
+  arb_div(a, a, pi, p);
+  arb_set_d(half, 0.5);
+  arb_add(a, a, half, p);
+  arb_floor(f, a, p);
+  arb_support::fmpz_holder z;
+  if (arb_get_unique_fmpz(z, f)) return z.value();
+  return std::nullopt;
 }
 
 void dR(arb_t out, const arb_t x, const arb_t alpha, slong p) {

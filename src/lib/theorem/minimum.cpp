@@ -121,14 +121,7 @@ template <class I> GYRORES_DD_INLINE minimum_double_of<I> minimum_in(const I& ta
 }
 
 template <class I> minimum_double_of<I> narrowed(const minimum_double_of<int128>& m) {
-  minimum_double_of<I> out;
-  out.m_min = m.m_min;
-  out.u_star = m.u_star;
-  out.r_res = m.r_res;
-  out.theta_first = m.theta_first;
-  out.t_first = m.t_first;
-  out.minimisers = m.minimisers;
-  out.count = m.count;
+  minimum_double_of<I> out{m.m_min, m.u_star, m.r_res, m.theta_first, m.t_first, m.minimisers, {}, m.count};
   for (std::size_t i = 0; i < 4; ++i) out.lobes[i] = {I(m.lobes[i].k), I(m.lobes[i].j), I(m.lobes[i].m)};
   return out;
 }

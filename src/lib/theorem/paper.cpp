@@ -67,10 +67,10 @@ paper_error_double paper_error_of(std::int64_t a, std::int64_t b, std::int64_t a
   return v;
 }
 
-// The constant c = 2 d/x^2 (paper_difference_double): d = D/f'(xi) for some xi in [u_a, u_c]
-// with D = x^2 t^3 sum_n (-1)^n (x t)^(2n)/(2n + 3) <= x^2 t^3/3 (alternating, decreasing:
-// x t < 1), t = tan u_a, and f'(u) = 1 + (1 + tan^2 u)/(1 + x^2 tan^2 u) increasing in u
-// (x < 1), so f'(xi) >= f'(u_a) and, with y = x t,
+// paper_constant_bound (theorem/paper.hpp): the constant c = 2 d/x^2 (paper_difference_double),
+// d = D/f'(xi) for some xi in [u_a, u_c] with D = x^2 t^3 sum_n (-1)^n (x t)^(2n)/(2n + 3) <=
+// x^2 t^3/3 (alternating, decreasing: x t < 1), t = tan u_a, and f'(u) = 1 + (1 + tan^2 u)/(1 +
+// x^2 tan^2 u) increasing in u (x < 1), so f'(xi) >= f'(u_a) and, with y = x t,
 //   c <= (2 t^3/3) (1 + y^2)/(2 + t^2 + y^2),
 // increasing in t (its logarithmic derivative is >= 3/t - 2/t). And t <= t_hi = t_max s/(pi/2)
 // = t_max |m|/b: t(s) = s - u_a(s) has t(0) = 0 and dt/ds = (1 + t^2)/(2 + t^2) increasing in t,
@@ -78,10 +78,6 @@ paper_error_double paper_error_of(std::int64_t a, std::int64_t b, std::int64_t a
 // t_max = tan u_a(pi/2) (tests/test_sweep.cpp checks the rounded-up constant against the
 // paper's root). The result: a few roundings (x and |m|/b from reciprocals included), within
 // 2^-47 of the bound.
-double paper_constant_bound_of(std::int64_t a, std::int64_t b, std::int64_t am) {
-  const paper_bound_fraction f = paper_constant_bound(double(b) / double(a), double(am) / double(b));
-  return f.num / f.den;
-}
 
 // ---- enclosures ----
 

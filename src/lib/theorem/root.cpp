@@ -1,8 +1,6 @@
 // include/gyrores/theorem/root.hpp: the theorem's and the paper's roots, points and enclosures.
 #include <gyrores/theorem/root.hpp>
 
-#include <arb.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -10,6 +8,7 @@
 #include <gyrores/core/error.hpp>
 #include <gyrores/core/roots.hpp>
 
+#include "../core/ball.hpp"
 #include "root_refined.hpp"
 
 namespace gyrores {
@@ -134,8 +133,6 @@ void tan_shift_point(fr& out, mpfr_srcptr tc, mpfr_srcptr d) {
 
 }  // namespace
 
-// tan(c + d) for every d in D (|D| <= 1/4) and tan c in TC: (TC + TD)/(1 - TC TD) with
-// TD = D + D^3/3 + [-1, 1] |D|^5/7 (the header comment, step 2).
 void tan_shift(iv& out, const iv& tc, const iv& d) {
   const mpfr_prec_t p = mpfi_get_prec(out);
   iv td(p), r(p), den(p);
@@ -174,34 +171,22 @@ mpfr_prec_t small_argument_bits(mpfr_srcptr v) {
 bool tan_enclosure(iv& out, const iv& W, long pole_bits) {
   const mpfr_prec_t prec = mpfi_get_prec(out);
   const mpfr_prec_t work = prec + 8 + small_argument_bits(W.left()) + pole_bits;
-  arb_t w, t;
-  arb_init(w);
-  arb_init(t);
+  arb_support::ball w, t;
   arb_set_interval_mpfr(w, W.left(), W.right(), work);
   arb_tan(t, w, work);
-  const bool ok = arb_is_finite(t);
-  if (ok) {
-    fr lo(prec), hi(prec);
-    arb_get_interval_mpfr(lo, hi, t);
-    mpfi_interv_fr(out, lo, hi);
-  }
-  arb_clear(w);
-  arb_clear(t);
-  return ok;
+  if (!arb_is_finite(t)) return false;
+  arb_support::interval_of(out, t);
+  return true;
 }
 
 // out ~ tan(v) at out's precision, for the ladder's centres (no proof needed there): the
 // midpoint of Arb's ball.
 void tan_point(fr& out, mpfr_srcptr v, long pole_bits) {
   const mpfr_prec_t work = mpfr_get_prec(out) + 8 + small_argument_bits(v) + pole_bits;
-  arb_t w, t;
-  arb_init(w);
-  arb_init(t);
-  arf_set_mpfr(arb_midref(w), v);
+  arb_support::ball w, t;
+  arf_set_mpfr(arb_midref(w.get()), v);
   arb_tan(t, w, work);
-  arf_get_mpfr(out, arb_midref(t), MPFR_RNDN);
-  arb_clear(w);
-  arb_clear(t);
+  arf_get_mpfr(out, arb_midref(t.get()), MPFR_RNDN);
 }
 
 // ---- the equations, as Newton steps about a centre ----
