@@ -49,11 +49,11 @@ certificate_lobe lobe_entry(const quadratic_number& x, const lobe_root& r, unsig
 
 }  // namespace
 
-void check_certificate_horizon(const horizon_time& T) {
+void check_certificate_horizon(const horizon_time& T, const char* what) {
   if (T.times_pi)
-    throw usage_error("a coupling certificate states its horizon as a rational, and " + T.str() +
+    throw usage_error(std::string(what) + " states its horizon as a rational, and " + T.str() +
                       " is a multiple of pi: give T as a decimal or a fraction");
-  if (T.value <= 0) throw usage_error("a coupling certificate needs a horizon T > 0, got " + rational_str(T.value));
+  if (T.value <= 0) throw usage_error(std::string(what) + " needs a horizon T > 0, got " + rational_str(T.value));
 }
 
 horizon_certificate horizon_certificate_of(const coupling_spec& c, const horizon_minimum_proof& p, unsigned digits) {
@@ -109,14 +109,6 @@ horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_ra
   const horizon_time horizon(T);
   check_certificate_horizon(horizon);
   return horizon_certificate_of(c, prove_horizon_minimum(c, horizon, {digits, {}}, proof_use::certificate), digits);
-}
-
-below_certificate certify_first_below(const coupling_spec& c, const big_rational& E, unsigned digits) {
-  return below_certificate_of(c, prove_first_below(c, E, {digits, {}}, proof_use::certificate), digits);
-}
-
-certificate_lobe certificate_lobe_of(const coupling_spec& c, const big_int& k, unsigned digits) {
-  return lobe_entry(coupling_rotation_number(c), certified_lobe_root(c, k, digits), digits);
 }
 
 }  // namespace gyrores
