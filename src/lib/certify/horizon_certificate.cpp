@@ -12,16 +12,13 @@ namespace {
 // An exact zero, as the format writes it.
 const decimal_bracket zero_bracket{"0", "0"};
 
-// The proof was made for a report only, or for fewer digits: its decimals are not proved.
-[[noreturn]] void not_for_certificate() {
-  throw compute_error("coupling certificate: the proof was not made for a certificate of these digits");
-}
-
 // A proved bracket: its ends' decimals to certificate_digits(digits) (proved with them), or an
 // exact 0.
 decimal_bracket bracket_text(const proved_bracket& bracket, unsigned digits) {
   if (bracket.ends.is_exact()) return zero_bracket;
-  if (bracket.decimals != certificate_digits(digits)) not_for_certificate();
+  // A proof made for a report only, or for fewer digits: its decimals are not proved.
+  if (bracket.decimals != certificate_digits(digits))
+    throw compute_error("coupling certificate: the proof was not made for a certificate of these digits");
   return bracket.ends.outward(certificate_digits(digits));
 }
 
