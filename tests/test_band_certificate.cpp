@@ -16,7 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include <gyrores/app/band.hpp>
-#include <gyrores/io/band_certificate_json.hpp>
+#include <gyrores/io/certificate_json.hpp>
 #include <gyrores/model/inputs.hpp>
 
 #include <fstream>
@@ -49,7 +49,7 @@ const checker_json& certificate(const std::string& n1, const std::string& n2, co
   q.certificate = true;
   const app::band_result r = app::run_band(q);
   REQUIRE(r.certificate);
-  return cache[key] = checker_json::parse(band_certificate_text(*r.certificate));
+  return cache[key] = checker_json::parse(certificate_text(*r.certificate));
 }
 
 gyrores_checker::verdict check(const checker_json& j) { return gyrores_checker::check_band_certificate(j.dump()); }

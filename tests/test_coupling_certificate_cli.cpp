@@ -6,7 +6,6 @@
 
 #include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/io/certificate_json.hpp>
-#include <gyrores/io/horizon_certificate_json.hpp>
 
 #include <fstream>
 
@@ -19,8 +18,8 @@ TEST_CASE("gyrores check dispatches coupling certificates to their checker", "[c
   test::temp_dir dir("coupling_certificate");
   const auto c = coupling_spec::from_n2(4);
   horizon_certificate cert = certify_horizon_minimum(c, 37, 15);
-  cert.below = certify_first_below(c, big_rational(1, 1000000), 15);
-  const std::string text = coupling_certificate_text(cert);
+  cert.below = below_certificate_of(c, prove_first_below(c, big_rational(1, 1000000), {15, {}}, proof_use::certificate), 15);
+  const std::string text = certificate_text(cert);
   const std::string good = dir / "good.json", bad = dir / "bad.json", broken = dir / "broken.json",
                     lattice = dir / "lattice.json";
   std::ofstream(good) << text;

@@ -12,7 +12,7 @@
 #include <gyrores/app/coupling.hpp>
 #include <gyrores/certify/horizon_certificate.hpp>
 #include <gyrores/core/decimal.hpp>
-#include <gyrores/io/horizon_certificate_json.hpp>
+#include <gyrores/io/certificate_json.hpp>
 #include <gyrores/model/rotation.hpp>
 
 #include <functional>
@@ -29,16 +29,24 @@ namespace {
 
 gyrores_checker::verdict check(const json& j) { return gyrores_checker::check_coupling_certificate(json_dump(j)); }
 
+// The entry of one lobe k >= 0 as horizon_certificate_of writes a lobe (its j, side and root
+// bracket; theorem/horizon.hpp, certified_lobe_root), for the tests that build a wrong lobe on purpose.
+certificate_lobe certificate_lobe_of(const coupling_spec& c, const big_int& k, unsigned digits) {
+  const lobe_root r = certified_lobe_root(c, k, digits);
+  return {k, (coupling_rotation_number(c) * quadratic_number(k)).floor(), k == 0 ? 1 : r.lobe.side,
+          r.bracket.ends.is_exact() ? decimal_bracket{"0", "0"} : r.bracket.ends.outward(certificate_digits(digits))};
+}
+
 json certificate_json(const coupling_spec& c, const big_rational& T, unsigned digits) {
-  return horizon_certificate_to_json(certify_horizon_minimum(c, T, digits));
+  return certificate_to_json(certify_horizon_minimum(c, T, digits));
 }
 
 // The certificate file of min H_q over [0, T] and, with a level, the first time below it.
 std::string certificate_text(const coupling_spec& c, const big_rational& T, const std::optional<big_rational>& level,
                              unsigned digits) {
   horizon_certificate cert = certify_horizon_minimum(c, T, digits);
-  if (level) cert.below = certify_first_below(c, *level, digits);
-  return coupling_certificate_text(cert);
+  if (level) cert.below = below_certificate_of(c, prove_first_below(c, *level, {digits, {}}, proof_use::certificate), digits);
+  return gyrores::certificate_text(cert);
 }
 
 // The plain loop: the smallest argmin of ||k x - 1/2|| over 0 <= k <= K (exact comparisons).
@@ -93,7 +101,7 @@ TEST_CASE("coupling certificates of random couplings and horizons are accepted",
   for (const auto& k : cases()) {
     INFO(k.name);
     const horizon_certificate cert = certify_horizon_minimum(k.c, k.T, 20);
-    const auto v = check(horizon_certificate_to_json(cert));
+    const auto v = check(certificate_to_json(cert));
     INFO(v.message);
     CHECK(v.status == 0);
     // The lobe against the plain loop over k (independent of both recursions).
@@ -128,7 +136,7 @@ TEST_CASE("the coupling request certifies the proofs its report rounded", "[cert
     const app::coupling_result r = app::run_coupling(request);
     INFO("n = " << n << ", T = " << T);
     REQUIRE(r.certificate);
-    CHECK(gyrores_checker::check_coupling_certificate(coupling_certificate_text(*r.certificate)).status == 0);
+    CHECK(gyrores_checker::check_coupling_certificate(gyrores::certificate_text(*r.certificate)).status == 0);
     CHECK(r.certificate->h_min == r.report.horizon.h_min.enclosure);
     CHECK(r.certificate->t_min == r.report.horizon.t_min.enclosure);
     CHECK(r.certificate->below->t_below == r.report.below->t_below.enclosure);
@@ -149,7 +157,7 @@ TEST_CASE("a certificate is written only from a proof made for it, at its digits
   CHECK_THROWS_AS(horizon_certificate_of(c, for_report, 20), compute_error);  // its decimals are not proved
   const auto for_certificate = prove_horizon_minimum(c, T, {12, {}}, proof_use::certificate);
   CHECK_THROWS_AS(horizon_certificate_of(c, for_certificate, 20), compute_error);  // made for 12 digits
-  CHECK(gyrores_checker::check_coupling_certificate(coupling_certificate_text(horizon_certificate_of(c, for_certificate, 12)))
+  CHECK(gyrores_checker::check_coupling_certificate(gyrores::certificate_text(horizon_certificate_of(c, for_certificate, 12)))
             .status == 0);
 }
 

@@ -21,6 +21,61 @@ band_attained attained(const band_coupling& c) {
   return {c, coupling_resonant_pair(c.spec), std::nullopt, std::nullopt};
 }
 
+inline constexpr const char* band_format = "gyrores-band/2";
+
+json rounded_or_null(const enclosure& e, unsigned digits, bool settled) {
+  if (!settled) return nullptr;
+  const auto v = e.rounded(digits);
+  return v ? json(*v) : json(nullptr);
+}
+
+json outward_json(const enclosure& e, unsigned digits) {
+  const auto [lo, hi] = e.outward(digits + 3);
+  return json::array({lo, hi});
+}
+
+// Where an extreme is attained: {"n2", "x", "pair"} of its coupling, with its minimum's place
+// {"h_min", "lobe", "at_horizon_end", "t_min"} or its first time below.
+json attained_json(const band_attained& a) {
+  json j{{"n2", rational_str(a.coupling.spec.n2)}, {"x", a.coupling.x.str()}, {"pair", a.pair ? pair_json(*a.pair) : json(nullptr)}};
+  if (a.minimum) {
+    const horizon_minimum_report& r = *a.minimum;
+    j.update(json{{"h_min", r.h_min.value},
+                  {"lobe", r.lobe ? json(json_integer(r.lobe->k)) : json(nullptr)},
+                  {"at_horizon_end", r.proof.at_horizon_end},
+                  {"t_min", r.t_min.value}});
+  }
+  if (a.first_below) j["t_below"] = a.first_below->never ? json(nullptr) : json(a.first_below->t_below.value);
+  return j;
+}
+
+json attained_json(const std::optional<band_attained>& a) { return a ? attained_json(*a) : json(nullptr); }
+
+// One guarantee; `at` is where it is attained.
+json extreme_json(const band_extreme& e, unsigned digits, const json& at) {
+  return json{{"h_min", rounded_or_null(e.value, digits, e.settled)},
+              {"enclosure", outward_json(e.value, digits)},
+              {"settled", e.settled},
+              {"interrupted", e.interrupted},
+              {"reason", e.unsettled_reason.empty() ? json(nullptr) : json(e.unsettled_reason)},
+              {"at", at},
+              {"intervals", e.intervals},
+              {"couplings", e.couplings}};
+}
+
+json first_below_json(const band_first_below& b, unsigned digits, const json& at) {
+  return json{{"level", rational_str(b.level)},
+              {"never", b.never},
+              {"reason", b.reason},
+              {"t_below", b.never ? json(nullptr) : rounded_or_null(b.time, digits, b.settled)},
+              {"enclosure", b.never ? json(nullptr) : outward_json(b.time, digits)},
+              {"settled", b.settled},
+              {"interrupted", b.interrupted},
+              {"at", at},
+              {"intervals", b.intervals},
+              {"couplings", b.couplings}};
+}
+
 // The band-wide first time below, in the units sqrt(time2) (a plant's seconds; 1: model time).
 // The proof settles the model time's rounding; the scaled enclosure (report/scales.hpp) may still
 // straddle a rounding boundary, so the proof is asked for guard digits, and more while the
@@ -60,7 +115,7 @@ band_result run_band(const band_request& request) {
   if (request.plant && request.certificate)
     throw usage_error("a band certificate states the unit impulse in model units: drop the plant or the certificate");
   if (request.certificate) {  // what a band certificate states, gyrores check must read
-    check_band_certificate_horizon(request.horizon);
+    check_certificate_horizon(request.horizon, "a band certificate");
     if (request.digits > unsigned(gyrores_checker::band_max_digits))
       throw usage_error("band certificates are limited to " + std::to_string(gyrores_checker::band_max_digits) +
                         " digits (what gyrores check reads), got " + std::to_string(request.digits));
@@ -112,12 +167,6 @@ band_result run_band(const band_request& request) {
 }
 
 json band_result_json(const band_request& request, const band_result& r) {
-  const auto at = [](const band_attained& a) {
-    json j = band_coupling_json(a.coupling, a.pair);
-    if (a.minimum) j.update(horizon_place_json(*a.minimum));
-    if (a.first_below) j["t_below"] = a.first_below->never ? json(nullptr) : json(a.first_below->t_below.value);
-    return j;
-  };
   json j{{"format", band_format},
          {"theorem", band_theorem_id},
          {"n1", rational_str(request.n1)},
@@ -125,12 +174,10 @@ json band_result_json(const band_request& request, const band_result& r) {
          {"horizon", request.horizon.str()},
          {"digits", request.digits},
          {"interrupted", r.interrupted},
-         {"absorption", band_extreme_json(r.absorption, request.digits, r.absorption_at ? at(*r.absorption_at) : json(nullptr))},
-         {"containment", r.containment ? band_extreme_json(*r.containment, request.digits,
-                                                            r.containment_at ? at(*r.containment_at) : json(nullptr))
+         {"absorption", extreme_json(r.absorption, request.digits, attained_json(r.absorption_at))},
+         {"containment", r.containment ? extreme_json(*r.containment, request.digits, attained_json(r.containment_at))
                                        : json(nullptr)}};
-  j["first_below"] = r.below ? band_first_below_json(*r.below, request.digits, r.below_at ? at(*r.below_at) : json(nullptr))
-                             : json(nullptr);
+  j["first_below"] = r.below ? first_below_json(*r.below, request.digits, attained_json(r.below_at)) : json(nullptr);
   return j;
 }
 

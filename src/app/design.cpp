@@ -1,5 +1,6 @@
 // include/gyrores/app/design.hpp
 #include <gyrores/app/design.hpp>
+#include <gyrores/app/pareto.hpp>
 
 #include <algorithm>
 #include <sstream>
@@ -33,9 +34,8 @@ tolerance_options tolerance_options_of(const design_request& r) {
 }  // namespace
 
 design_problem parse_design_problem(const std::string& text) {
-  if (text == "absorb") return design_problem::absorb;
-  if (text == "contain") return design_problem::contain;
-  throw usage_error("the design problem must be 'absorb' or 'contain', got '" + text + "'");
+  const bool absorb = parse_pareto_orientation(text, "the design problem") == pareto_orientation::absorb;
+  return absorb ? design_problem::absorb : design_problem::contain;
 }
 
 void check_listed(unsigned digits, const pair_filter& f) {

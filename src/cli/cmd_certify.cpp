@@ -27,7 +27,7 @@ std::string run_certify(const certify_args& a) {
   check_digits_flag(a.digits, 1, int(report_digits_max));
   app::certify_request request{parse_pair_arguments(a.tau, a.sigma), unsigned(a.digits), {}};
   if (!a.out.empty()) check_output_path(a.out);  // before the work
-  std::string text = json_dump(certificate_to_json(app::run_certify(request))) + "\n";
+  std::string text = certificate_text(app::run_certify(request));
   if (a.out.empty()) return text;
   write_file_atomically(a.out, text);
   return "";

@@ -21,11 +21,10 @@
 #include <gyrores/app/plant.hpp>
 #include <gyrores/theorem/band.hpp>
 #include <gyrores/io/files.hpp>
-#include <gyrores/io/band_certificate_json.hpp>
-#include <gyrores/io/horizon_certificate_json.hpp>
+#include <gyrores/io/certificate_json.hpp>
 #include <gyrores/io/json.hpp>
 #include <gyrores/io/report_json.hpp>
-#include <gyrores/report/share.hpp>
+#include <gyrores/report/scales.hpp>
 
 #include "cli_options.hpp"
 #include "cli_signals.hpp"
@@ -182,7 +181,7 @@ std::string attained_text(const app::band_attained& a, unsigned digits, const st
 
 // A guarantee (an energy, times the unit impulse's by energy_scale, in `unit`) with its share of
 // H_q(0): the share correctly rounded when its enclosure decides it, else its proved bracket
-// (report/share.hpp).
+// (report/scales.hpp).
 std::string extreme_text(const band_extreme& e, unsigned digits, const unit_choice& u) {
   if (e.settled && e.value.hi_rational() == 0) return "0 (exactly)";
   const enclosure share = scaled(e.value, share_factor() / u.energy_scale());
@@ -333,7 +332,7 @@ std::string band_output(const coupling_args& a, const unit_choice& u, app::band_
   signal_scope signals;
   const app::band_result b = run_band(q, signals, a.quiet);
   // The band certificate, from the very proofs printed below (not when interrupted).
-  if (b.certificate) write_file_atomically(a.certificate, band_certificate_text(*b.certificate));
+  if (b.certificate) write_file_atomically(a.certificate, certificate_text(*b.certificate));
   std::string out;
   if (!a.json) out = before + band_text(a, u, q, b, note);
   else if (whole) {
@@ -375,7 +374,7 @@ std::string run_coupling(const coupling_args& a) {
   request.certificate = !a.certificate.empty() && !band_certificate;
   if (band_certificate) {
     check_output_path(a.certificate);
-    check_band_certificate_horizon(opt.horizon);
+    check_certificate_horizon(opt.horizon, "a band certificate");
   }
   if (request.certificate) {  // before the work
     check_output_path(a.certificate);
@@ -383,7 +382,7 @@ std::string run_coupling(const coupling_args& a) {
   }
   const app::coupling_result result = app::run_coupling(request);
   const coupling_report& r = result.report;
-  if (result.certificate) write_file_atomically(a.certificate, coupling_certificate_text(*result.certificate));
+  if (result.certificate) write_file_atomically(a.certificate, certificate_text(*result.certificate));
   json input = !a.n.empty() ? json{{"n", a.n}} : !a.n2.empty() ? json{{"n2", a.n2}} : json::object();
   if (!a.pair.empty()) input["pair"] = json::array({a.pair[0], a.pair[1]});
   if (u.plant) input = json{{"mass", a.mass}, {"stiffness", a.stiffness}, {"gyro", a.gyro}, {"velocity", a.velocity}};

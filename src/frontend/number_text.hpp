@@ -22,7 +22,7 @@ std::string plain(const std::string& scientific);
 inline std::string plain(const proved_real& r) { return plain(r.value); }
 
 // An energy for people: "0 (exact)" when zero, else its plain text and "  (S% of H_q(0))" with
-// the share (report/share.hpp) in plain text.
+// the share (report/scales.hpp) in plain text.
 std::string energy_text(const std::string& energy, const std::string& share);
 
 // A rational in decimals: exact when its decimal terminates within 60 places ("0.198"), else

@@ -9,6 +9,26 @@ json claim_json(const std::pair<std::string, std::string>& claim) {
   return claim.first.empty() ? json(nullptr) : json::array({claim.first, claim.second});
 }
 
+json bracket_json(const decimal_bracket& b) { return json::array({b.first, b.second}); }
+
+json optional_bracket(const std::optional<decimal_bracket>& v) { return v ? bracket_json(*v) : json(nullptr); }
+
+json lobe_json(const certificate_lobe& l) { return json{{"k", l.k.str()}, {"j", l.j.str()}, {"side", l.side}}; }
+
+json claim_json(const band_certificate_claim& c) {
+  json cover = json::array();
+  for (const band_certificate_interval& I : c.cover)
+    cover.push_back(json{{"a", rational_str(I.a)},
+                         {"b", rational_str(I.b)},
+                         {"kind", I.kind},
+                         {"K", I.K.str()},
+                         {"k", I.k.str()},
+                         {"reached", I.reached},
+                         {"unreached", I.unreached},
+                         {"bound", I.bound}});
+  return json{{"value", bracket_json(c.value)}, {"at", certificate_to_json(c.at)}, {"cover", cover}};
+}
+
 }  // namespace
 
 json certificate_to_json(const theorem_certificate& c) {
@@ -27,6 +47,47 @@ json certificate_to_json(const theorem_certificate& c) {
               {"minimiser_lobes", lobes},
               {"u_star", claim_json(c.u_star)},
               {"claims", claims}};
+}
+
+json certificate_to_json(const horizon_certificate& c) {
+  json minimum{{"cut_lobe", c.cut_lobe.str()},
+               {"cut_lobe_reached", c.cut_lobe_reached},
+               {"cut_root", bracket_json(c.cut_root)},
+               {"lobe", c.lobe ? lobe_json(*c.lobe) : json(nullptr)},
+               {"root", c.lobe ? bracket_json(c.lobe->root) : json(nullptr)},
+               {"at_horizon_end", c.at_horizon_end},
+               {"h_min", bracket_json(c.h_min)},
+               {"t_min", bracket_json(c.t_min)}};
+  json below = nullptr;
+  if (c.below) {
+    const below_certificate& b = *c.below;
+    below = json{{"level", rational_str(b.level)},
+                 {"case", b.kase},
+                 {"lobe", b.lobe ? lobe_json(*b.lobe) : json(nullptr)},
+                 {"level_root", optional_bracket(b.level_root)},
+                 {"delta", optional_bracket(b.delta)},
+                 {"root", b.lobe && b.kase == "lobe" ? bracket_json(b.lobe->root) : json(nullptr)},
+                 {"crossing", optional_bracket(b.crossing)},
+                 {"t_below", optional_bracket(b.t_below)}};
+  }
+  return json{{"format", c.format},
+              {"theorem", c.theorem},
+              {"n2", rational_str(c.n2)},
+              {"horizon", rational_str(c.horizon)},
+              {"digits", c.digits},
+              {"minimum", minimum},
+              {"below", below}};
+}
+
+json certificate_to_json(const band_certificate& c) {
+  return json{{"format", c.format},
+              {"theorem", c.theorem},
+              {"n1", rational_str(c.n1)},
+              {"n2", rational_str(c.n2)},
+              {"horizon", rational_str(c.horizon)},
+              {"digits", c.digits},
+              {"absorption", claim_json(c.absorption)},
+              {"containment", claim_json(c.containment)}};
 }
 
 std::string certificate_format_of(const std::string& text) {

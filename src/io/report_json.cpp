@@ -1,4 +1,4 @@
-// include/gyrores/io/report_json.hpp: the pair, coupling, band, design and Pareto outputs.
+// include/gyrores/io/report_json.hpp: the pair, coupling, design and Pareto outputs.
 #include <gyrores/io/report_json.hpp>
 
 #include <utility>
@@ -9,9 +9,6 @@
 
 namespace gyrores {
 namespace {
-
-// The version of the pair object; "/2": every real proved (the output before the lattice
-// theorem, without this field, printed verified estimates).
 
 json real_json(const proved_real& r) { return r.value; }
 json enclosure_json(const proved_real& r) { return json::array({r.enclosure.first, r.enclosure.second}); }
@@ -28,14 +25,6 @@ json lobe_json(const paper_lobe_report& l, bool enclosures) {
     lo[name] = enclosures ? enclosure_json(*value) : real_json(*value);
   if (!enclosures) lo["holds_global_min"] = l.holds_global_min;
   return lo;
-}
-
-// {"tau": ..., "sigma": ...}.
-json pair_json(const resonant_pair<big_int>& p) {
-  json j;
-  j["tau"] = json_integer(p.tau().str());
-  j["sigma"] = json_integer(p.sigma().str());
-  return j;
 }
 
 // The "asymptotic" object of `gyrores pair --json`: applicable, reason, lobes.
@@ -66,6 +55,17 @@ void put_reals(json& j, const pair_report& r, bool enclosures) {
   else j["r_res_asy_rel_error"] = nullptr;
 }
 
+// {"tau", "sigma", "n", "r_res", "h_min", "t_first", "t_min_paper", "degenerate"}: one pair's
+// values as the design, Pareto and coupling outputs list them.
+json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
+  json j = pair_json(p);
+  for (auto [key, value] : {std::pair{"n", &v.n}, {"r_res", &v.r_res}, {"h_min", &v.h_min}, {"t_first", &v.t_first},
+                            {"t_min_paper", &v.t_min_paper}})
+    j[key] = value->value;
+  j["degenerate"] = v.degenerate;
+  return j;
+}
+
 // Each convergent of W1/W2 with its pair's values, or a note when it is 1 (tau = sigma).
 json coupling_convergents_json(const std::vector<coupling_convergent>& rows) {
   json arr = json::array();
@@ -87,17 +87,6 @@ json coupling_convergents_json(const std::vector<coupling_convergent>& rows) {
   return arr;
 }
 
-json rounded_or_null(const enclosure& e, unsigned digits, bool settled) {
-  if (!settled) return nullptr;
-  const auto v = e.rounded(digits);
-  return v ? json(*v) : json(nullptr);
-}
-
-json outward_json(const enclosure& e, unsigned digits) {
-  const auto [lo, hi] = e.outward(digits + 3);
-  return json::array({lo, hi});
-}
-
 // pair_values_json of pairs[i] and values[i] for i in [from, to).
 json listed_json(const std::vector<design_point>& pairs, const std::vector<pair_report>& values, std::size_t from,
                  std::size_t to) {
@@ -113,12 +102,10 @@ constexpr const char* pareto_csv_header = "tau,sigma,order,delta,degenerate,n,r_
 
 }  // namespace
 
-json pair_values_json(const resonant_pair<big_int>& p, const pair_report& v) {
-  json j = pair_json(p);
-  for (auto [key, value] : {std::pair{"n", &v.n}, {"r_res", &v.r_res}, {"h_min", &v.h_min}, {"t_first", &v.t_first},
-                            {"t_min_paper", &v.t_min_paper}})
-    j[key] = value->value;
-  j["degenerate"] = v.degenerate;
+json pair_json(const resonant_pair<big_int>& p) {
+  json j;
+  j["tau"] = json_integer(p.tau().str());
+  j["sigma"] = json_integer(p.sigma().str());
   return j;
 }
 
@@ -194,43 +181,6 @@ json coupling_report_json(const json& input, const std::string& horizon, unsigne
   j["convergents"] = coupling_convergents_json(r.convergents);
   j["digits"] = digits;
   return j;
-}
-
-json band_coupling_json(const band_coupling& c, const std::optional<resonant_pair<big_int>>& pair) {
-  return json{{"n2", rational_str(c.spec.n2)},
-              {"x", c.x.str()},
-              {"pair", pair ? pair_json(*pair) : json(nullptr)}};
-}
-
-json horizon_place_json(const horizon_minimum_report& r) {
-  return json{{"h_min", r.h_min.value},
-              {"lobe", r.lobe ? json(json_integer(r.lobe->k)) : json(nullptr)},
-              {"at_horizon_end", r.proof.at_horizon_end},
-              {"t_min", r.t_min.value}};
-}
-
-json band_extreme_json(const band_extreme& e, unsigned digits, const json& at) {
-  return json{{"h_min", rounded_or_null(e.value, digits, e.settled)},
-              {"enclosure", outward_json(e.value, digits)},
-              {"settled", e.settled},
-              {"interrupted", e.interrupted},
-              {"reason", e.unsettled_reason.empty() ? json(nullptr) : json(e.unsettled_reason)},
-              {"at", at},
-              {"intervals", e.intervals},
-              {"couplings", e.couplings}};
-}
-
-json band_first_below_json(const band_first_below& b, unsigned digits, const json& at) {
-  return json{{"level", rational_str(b.level)},
-              {"never", b.never},
-              {"reason", b.reason},
-              {"t_below", b.never ? json(nullptr) : rounded_or_null(b.time, digits, b.settled)},
-              {"enclosure", b.never ? json(nullptr) : outward_json(b.time, digits)},
-              {"settled", b.settled},
-              {"interrupted", b.interrupted},
-              {"at", at},
-              {"intervals", b.intervals},
-              {"couplings", b.couplings}};
 }
 
 json design_json(const design_options& o, const std::string& tmax, const std::string& beat, const design_result& r,

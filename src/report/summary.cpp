@@ -1,11 +1,11 @@
 // The report's summary of findings (sections.hpp): the sentences the sections recorded in
 // context::findings, each linked to its section by the heading's GitHub anchor, and the share of
-// H_q(0) that the sentences give for an energy (report/share.hpp's proved share, in plain text).
+// H_q(0) that the sentences give for an energy (report/scales.hpp's proved share, in plain text).
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
 
-#include <gyrores/report/share.hpp>
+#include <gyrores/report/scales.hpp>
 
 #include "frontend/number_text.hpp"
 #include "report/sections.hpp"

@@ -2,8 +2,8 @@
 // analysis of one coupling (report/coupling_report.hpp), and with a certificate asked, the
 // certificate of the horizon minimum and the first time below a level written from the very
 // proofs the report rounded (certify/horizon_certificate.hpp): one computation. Also one element
-// of gyrores.couplings: the same proofs, refined until every double is decided. (A band of
-// couplings is still asked of theorem/band.hpp by the front ends.)
+// of gyrores.couplings: the same proofs, refined until every double is decided (a band of
+// couplings: app/band.hpp).
 #pragma once
 #include <cstddef>
 #include <optional>

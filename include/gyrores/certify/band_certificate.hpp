@@ -50,12 +50,6 @@ struct band_certificate {
   band_certificate_claim absorption, containment;
 };
 
-// The name of a bound kind in the format.
-const char* band_bound_kind_name(band_bound_kind kind);
-
-// usage_error unless T is a rational > 0 (as check_certificate_horizon).
-void check_band_certificate_horizon(const horizon_time& T);
-
 // The certificate of the two band proofs W and B (made with record_cover) over [n1, n2] and T.
 // compute_error when a proof was interrupted or holds no cover.
 band_certificate band_certificate_of(const big_rational& n1, const big_rational& n2, const horizon_time& T,

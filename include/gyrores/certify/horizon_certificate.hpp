@@ -70,9 +70,10 @@ struct horizon_certificate {
   std::optional<below_certificate> below;  // the first time below a level, when asked
 };
 
-// usage_error unless T is a rational > 0: the format states the horizon as a rational (a
-// multiple of pi, which a report accepts, is refused here, before any work).
-void check_certificate_horizon(const horizon_time& T);
+// usage_error unless T is a rational > 0: the formats state the horizon as a rational (a
+// multiple of pi, which a report accepts, is refused here, before any work); `what` names the
+// certificate in the message.
+void check_certificate_horizon(const horizon_time& T, const char* what = "a coupling certificate");
 
 // The certificate of a proof of min H_q over [0, T] (made with at least `digits` digits), with
 // `digits` correct digits in each claim. usage_error as check_certificate_horizon; compute_error
@@ -84,10 +85,5 @@ below_certificate below_certificate_of(const coupling_spec& c, const first_below
 
 // Proves and certifies in one call (a proof made for the certificate alone).
 horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_rational& horizon, unsigned digits);
-below_certificate certify_first_below(const coupling_spec& c, const big_rational& level, unsigned digits);
-
-// The entry of one lobe k (its j, side and root bracket), for any k >= 0 (theorem/horizon.hpp,
-// certified_lobe_root): a tool for tests that build a wrong lobe on purpose.
-certificate_lobe certificate_lobe_of(const coupling_spec& c, const big_int& k, unsigned digits);
 
 }  // namespace gyrores

@@ -1,6 +1,8 @@
-// Certificates as JSON text (docs/formats.md): "gyrores-certificate/2", the lattice theorem's
-// certificate (integers as decimal strings), read only by the independent checker
-// (src/checker/). Writing is deterministic (fields in a fixed order), so a certificate's text is
+// Certificates as JSON text (docs/formats.md), read only by the independent checkers
+// (src/checker/): "gyrores-certificate/2", the lattice theorem's certificate;
+// "gyrores-coupling-certificate/1" (src/checker/horizon_checker.hpp) and
+// "gyrores-band-certificate/1" (src/checker/band_checker.hpp). Integers and rationals are decimal
+// strings. Writing is deterministic (fields in a fixed order), so a certificate's text is
 // reproducible byte for byte.
 //
 // "gyrores-certificate/1", the interval-cover certificate of earlier versions, is retired: a file
@@ -9,6 +11,8 @@
 #pragma once
 #include <string>
 
+#include <gyrores/certify/band_certificate.hpp>
+#include <gyrores/certify/horizon_certificate.hpp>
 #include <gyrores/certify/theorem_certificate.hpp>
 #include <gyrores/io/json.hpp>
 
@@ -16,6 +20,13 @@ namespace gyrores {
 
 // The JSON object of a certificate; json_dump() gives its text.
 json certificate_to_json(const theorem_certificate& c);
+json certificate_to_json(const horizon_certificate& c);
+json certificate_to_json(const band_certificate& c);
+
+// The certificate file's text: the JSON and a final newline.
+template <class Certificate> std::string certificate_text(const Certificate& c) {
+  return json_dump(certificate_to_json(c)) + "\n";
+}
 
 // The "format" field of a certificate's text, or "" when the text is not a JSON object with a
 // string "format". Never throws for bad text.

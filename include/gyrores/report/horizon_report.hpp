@@ -25,7 +25,7 @@ struct horizon_minimum_report {
   std::optional<horizon_lobe> lobe;  // the lobe of the minimum (none when at the horizon's end)
   proved_real h_min, t_min;          // min of H_q over [0, T] and the first time it is attained
   proved_real r_min;                 // the radius sqrt(2 h_min) = sqrt(q^2 + q'^2) there
-  proved_real h_min_share;           // h_min as a percentage of H_q(0) (report/share.hpp)
+  proved_real h_min_share;           // h_min as a percentage of H_q(0) (report/scales.hpp)
 };
 
 // With proof_use::certificate the proof is one a certificate can be written from

@@ -56,7 +56,7 @@ struct pair_report {
   int m_min = 0;
   proved_real beat_ratio, n, omega1, omega2, rho0, qdot0;
   proved_real r_res, h_min, h_z_max, theta_first, t_first;
-  proved_real h_min_share;  // H_q min as a percentage of H_q(0) = qdot0^2/2, min(digits, share_digits) digits (report/share.hpp)
+  proved_real h_min_share;  // H_q min as a percentage of H_q(0) = qdot0^2/2, min(digits, share_digits) digits (report/scales.hpp)
   std::vector<proved_real> minimisers;  // every global minimiser theta in [0, 2 pi), ascending
   proved_real t_min_paper;              // pi/|n|: the paper's proxy for the first-hit time
   bool asymptotic_applicable = false;
@@ -72,8 +72,9 @@ struct pair_report {
 pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_options& opt = {});
 
 // The values the design, Pareto, coupling and report commands list: prove_pair without the
-// asymptotics, qdot0 = 1, with the enclosures.
-pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits);
+// asymptotics, with the enclosures.
+pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits, const big_rational& qdot0 = 1,
+                              stop_token stop = {});
 
 // The paper's Case B quantities of its lobe k of p (qdot0 = 1): u_asy, theta_asy, q'(theta_asy)
 // (= (-1)^k cos u_asy cos w (tan w - w), w = x tan u_asy), q'(theta_asy)/rho0, the error and

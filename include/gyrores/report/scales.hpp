@@ -6,6 +6,10 @@
 // the proved enclosure times an exact rational, or times a proved enclosure of that square root:
 // the report rounds the scaled enclosure inside its precision loop (report/horizon_report.hpp),
 // never a rescaled decimal.
+//
+// An energy as a share of the initial energy H_q(0) = qdot0^2/2, in percent, is likewise the
+// exact rational multiple 200/qdot0^2 of the energy: its text is the correct rounding of the
+// energy's enclosure times that rational (core/enclosure.hpp), never a rescaled decimal.
 #pragma once
 #include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/rational.hpp>
@@ -20,9 +24,18 @@ struct report_scales {
   static report_scales of_qdot0(const big_rational& qdot0) { return {qdot0 * qdot0, qdot0 * qdot0, 1}; }
 };
 
+// e times k > 0: exact when e is, else each end multiplied with outward rounding.
+enclosure scaled(const enclosure& e, const big_rational& k);
+
 // e times sqrt(k2) (k2 > 0), proved: exact when e is exact and k2 a rational square; else each end
 // rounded outward, at 64 bits more than e's ends, or for an exact e at `bits` (+ 64): an exact
 // value is rounded from its rational, so its product gets as narrow as the caller's digits need.
 enclosure scaled_sqrt(const enclosure& e, const big_rational& k2, mpfr_prec_t bits);
+
+// Significant digits of a share as the text outputs print it ("0.2575%").
+inline constexpr unsigned share_digits = 4;
+
+// 100 / H_q(0) = 200/qdot0^2 (qdot0 > 0).
+big_rational share_factor(const big_rational& qdot0 = 1);
 
 }  // namespace gyrores

@@ -29,6 +29,19 @@ big_rational bound_out(const big_rational& bound, unsigned digits, bool upper) {
   return v > 0 ? v : big_rational(0);
 }
 
+// The name of a bound kind in the format.
+const char* band_bound_kind_name(band_bound_kind kind) {
+  switch (kind) {
+    case band_bound_kind::lobes: return "lobes";
+    case band_bound_kind::line_falling: return "line_falling";
+    case band_bound_kind::line_rising: return "line_rising";
+    case band_bound_kind::line_turning: return "line_turning";
+    case band_bound_kind::line_unproved: return "line_unproved";
+    case band_bound_kind::end_point: return "end_point";
+  }
+  return "?";
+}
+
 band_certificate_claim claim_of(const band_extreme& e, const horizon_time& T, unsigned digits, bool absorption) {
   if (e.interrupted) throw compute_error("band certificate: the band proof was interrupted");
   if (e.cover.empty()) throw compute_error("band certificate: the band proof holds no cover (record_cover)");
@@ -65,28 +78,9 @@ band_certificate_claim claim_of(const band_extreme& e, const horizon_time& T, un
 
 }  // namespace
 
-const char* band_bound_kind_name(band_bound_kind kind) {
-  switch (kind) {
-    case band_bound_kind::lobes: return "lobes";
-    case band_bound_kind::line_falling: return "line_falling";
-    case band_bound_kind::line_rising: return "line_rising";
-    case band_bound_kind::line_turning: return "line_turning";
-    case band_bound_kind::line_unproved: return "line_unproved";
-    case band_bound_kind::end_point: return "end_point";
-  }
-  return "?";
-}
-
-void check_band_certificate_horizon(const horizon_time& T) {
-  if (T.times_pi)
-    throw usage_error("a band certificate states its horizon as a rational, and " + T.str() +
-                      " is a multiple of pi: give T as a decimal or a fraction");
-  if (T.value <= 0) throw usage_error("a band certificate needs a horizon T > 0, got " + rational_str(T.value));
-}
-
 band_certificate band_certificate_of(const big_rational& n1, const big_rational& n2, const horizon_time& T,
                                      unsigned digits, const band_extreme& absorption, const band_extreme& containment) {
-  check_band_certificate_horizon(T);
+  check_certificate_horizon(T, "a band certificate");
   band_certificate out;
   out.theorem = band_theorem_id;
   out.n1 = n1;

@@ -12,16 +12,13 @@ namespace {
 // An exact zero, as the format writes it.
 const decimal_bracket zero_bracket{"0", "0"};
 
-// The proof was made for a report only, or for fewer digits: its decimals are not proved.
-[[noreturn]] void not_for_certificate() {
-  throw compute_error("coupling certificate: the proof was not made for a certificate of these digits");
-}
-
 // A proved bracket: its ends' decimals to certificate_digits(digits) (proved with them), or an
 // exact 0.
 decimal_bracket bracket_text(const proved_bracket& bracket, unsigned digits) {
   if (bracket.ends.is_exact()) return zero_bracket;
-  if (bracket.decimals != certificate_digits(digits)) not_for_certificate();
+  // A proof made for a report only, or for fewer digits: its decimals are not proved.
+  if (bracket.decimals != certificate_digits(digits))
+    throw compute_error("coupling certificate: the proof was not made for a certificate of these digits");
   return bracket.ends.outward(certificate_digits(digits));
 }
 
@@ -49,11 +46,11 @@ certificate_lobe lobe_entry(const quadratic_number& x, const lobe_root& r, unsig
 
 }  // namespace
 
-void check_certificate_horizon(const horizon_time& T) {
+void check_certificate_horizon(const horizon_time& T, const char* what) {
   if (T.times_pi)
-    throw usage_error("a coupling certificate states its horizon as a rational, and " + T.str() +
+    throw usage_error(std::string(what) + " states its horizon as a rational, and " + T.str() +
                       " is a multiple of pi: give T as a decimal or a fraction");
-  if (T.value <= 0) throw usage_error("a coupling certificate needs a horizon T > 0, got " + rational_str(T.value));
+  if (T.value <= 0) throw usage_error(std::string(what) + " needs a horizon T > 0, got " + rational_str(T.value));
 }
 
 horizon_certificate horizon_certificate_of(const coupling_spec& c, const horizon_minimum_proof& p, unsigned digits) {
@@ -109,14 +106,6 @@ horizon_certificate certify_horizon_minimum(const coupling_spec& c, const big_ra
   const horizon_time horizon(T);
   check_certificate_horizon(horizon);
   return horizon_certificate_of(c, prove_horizon_minimum(c, horizon, {digits, {}}, proof_use::certificate), digits);
-}
-
-below_certificate certify_first_below(const coupling_spec& c, const big_rational& E, unsigned digits) {
-  return below_certificate_of(c, prove_first_below(c, E, {digits, {}}, proof_use::certificate), digits);
-}
-
-certificate_lobe certificate_lobe_of(const coupling_spec& c, const big_int& k, unsigned digits) {
-  return lobe_entry(coupling_rotation_number(c), certified_lobe_root(c, k, digits), digits);
 }
 
 }  // namespace gyrores

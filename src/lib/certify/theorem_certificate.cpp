@@ -15,17 +15,6 @@
 
 namespace gyrores {
 
-namespace {
-
-using iv = fixed_mpfi;
-
-// [lo, hi] of an enclosure as decimal text with `digits` digits, rounded outward.
-std::pair<std::string, std::string> outward_text(const iv& x, unsigned digits) {
-  return {format_scientific(x.left(), digits, MPFR_RNDD), format_scientific(x.right(), digits, MPFR_RNDU)};
-}
-
-}  // namespace
-
 theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned digits, unsigned max_bits,
                                        stop_token stop) {
   check_report_digits(digits);
@@ -52,7 +41,7 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
     const unsigned d = digits + 10;
     theorem_constants K(bits, p);
     root_enclosure z(bits);
-    iv r(bits), theta(bits), t(bits);
+    fixed_mpfi r(bits), theta(bits), t(bits);
     const auto wide = proof_status::undecided("a claim is wider than the digits at this precision");
     if (c.m_min == 0) {
       c.u_star = {"0", "0"};
@@ -70,9 +59,9 @@ theorem_certificate certify_by_theorem(const resonant_pair<big_int>& p, unsigned
     if (!fixed_narrow(theta, e) || !fixed_narrow(t, e)) status = wide;
     if (!status) return std::optional<bool>();
     c.bits = unsigned(bits);
-    c.r_res = c.m_min == 0 ? std::pair<std::string, std::string>{"0", "0"} : outward_text(r, d);
-    c.theta_first = outward_text(theta, d);
-    c.t_first = outward_text(t, d);
+    c.r_res = c.m_min == 0 ? std::pair<std::string, std::string>{"0", "0"} : enclosure(r).outward(d);
+    c.theta_first = enclosure(theta).outward(d);
+    c.t_first = enclosure(t).outward(d);
     return std::optional<bool>(true);
   });
   return c;

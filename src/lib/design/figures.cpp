@@ -35,6 +35,13 @@ std::size_t sample_count(double want, const std::string& too_long) {
   return std::size_t(std::max(4000.0, want));
 }
 
+// The samples sorted by t, one per time.
+void sort_by_time(std::vector<energy_sample>& samples) {
+  std::sort(samples.begin(), samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
+  samples.erase(std::unique(samples.begin(), samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t == y.t; }),
+                samples.end());
+}
+
 // Adds to `samples` (sorted by t) at(t) for t = tm and tm +- half_width / 2^k, k = 0..52, inside
 // [0, t_end], for every tm of `times`; then sorts them by t again (duplicates dropped). On a log
 // axis the dip around tm is then drawn at every scale, down to its bottom at tm exactly.
@@ -48,9 +55,7 @@ void refine_around(std::vector<energy_sample>& samples, const std::vector<double
       for (double t : {tm - h, tm + h})
         if (t >= 0 && t <= t_end) samples.push_back(at(t));
   }
-  std::sort(samples.begin(), samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
-  samples.erase(std::unique(samples.begin(), samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t == y.t; }),
-                samples.end());
+  sort_by_time(samples);
 }
 
 [[noreturn]] void throw_figure_order(const std::string& pair) {
@@ -182,15 +187,12 @@ energy_series energy_of_pair(const resonant_pair<std::int64_t>& p, double v, dou
   // Refined in theta (the state's own variable), half a fast period around each minimiser.
   std::vector<energy_sample> by_theta;
   refine_around(by_theta, thetas, c.pi / f0.a, theta_end, [&](double th) { return energy_sample{th, 0, 0}; });
-  for (const auto& p : by_theta) e.samples.push_back(at_theta(p.t));
+  for (const auto& s : by_theta) e.samples.push_back(at_theta(s.t));
   // The samples within rounding of t_first carry the theorem's time, so that curve and mark meet
   // exactly; then one sample per time.
-  for (auto& p : e.samples)
-    if (std::fabs(p.t - e.t_first) <= 1e-15 * e.t_first) p.t = e.t_first;
-  std::sort(e.samples.begin(), e.samples.end(), [](const energy_sample& x, const energy_sample& y) { return x.t < y.t; });
-  e.samples.erase(std::unique(e.samples.begin(), e.samples.end(),
-                              [](const energy_sample& x, const energy_sample& y) { return x.t == y.t; }),
-                  e.samples.end());
+  for (auto& s : e.samples)
+    if (std::fabs(s.t - e.t_first) <= 1e-15 * e.t_first) s.t = e.t_first;
+  sort_by_time(e.samples);
   return e;
 }
 
@@ -203,18 +205,16 @@ energy_series energy_of_coupling(double n, double v, double t_end, const figure_
   e.n = n;
   e.qdot0 = v;
   e.t_end = t_end;
-  e.samples = sample_uniform(t_end, samples, [&](double t) {
+  const auto at = [&](double t) {
     auto s = impulse_response(n, v, t);
     return energy_sample{t, energy_q(s), energy_z(s)};
-  });
+  };
+  e.samples = sample_uniform(t_end, samples, at);
   e.t_first = m.t_min;
   e.h_min = v * v * m.h_min;
   e.t_proxy = real_pi<double>() / n;
   e.t_minima = {m.t_min};
-  refine_around(e.samples, e.t_minima, real_pi<double>() / w.omega1, t_end, [&](double t) {
-    auto s = impulse_response(n, v, t);
-    return energy_sample{t, energy_q(s), energy_z(s)};
-  });
+  refine_around(e.samples, e.t_minima, real_pi<double>() / w.omega1, t_end, at);
   return e;
 }
 

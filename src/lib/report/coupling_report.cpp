@@ -55,17 +55,6 @@ void set_infimum(coupling_report& r) {
                  "(pi/2, -pi/2), where q = q' = 0; the infimum 0 is approached but never attained";
 }
 
-// A pair's values as design, Pareto and coupling list them (no asymptotics), stoppable.
-pair_report pair_values(const resonant_pair<big_int>& p, unsigned digits, const big_rational& qdot0, const stop_token& stop) {
-  pair_report_options o;
-  o.qdot0 = qdot0;
-  o.digits = digits;
-  o.asymptotics = false;
-  o.enclosures = true;  // as prove_pair_values
-  o.stop = stop;
-  return prove_pair(p, o);
-}
-
 std::vector<coupling_convergent> proved_convergents(const coupling_spec& spec, std::size_t count, unsigned digits,
                                                     const big_rational& qdot0, const stop_token& stop) {
   std::vector<coupling_convergent> out;
@@ -73,7 +62,7 @@ std::vector<coupling_convergent> proved_convergents(const coupling_spec& spec, s
     coupling_convergent row{c, std::nullopt, std::nullopt};
     if (c.p > c.q) {
       row.pair = resonant_pair<big_int>(c.p, c.q);
-      row.values = pair_values(*row.pair, digits, qdot0, stop);
+      row.values = prove_pair_values(*row.pair, digits, qdot0, stop);
     }
     out.push_back(row);
   }
@@ -90,7 +79,7 @@ coupling_report analyse_coupling(const coupling_spec& spec, const coupling_repor
   r.spec = spec;
   r.n_negative = spec.n && *spec.n < 0;
   r.pair = coupling_resonant_pair(spec);
-  if (r.pair) r.pair_values = pair_values(*r.pair, opt.digits, opt.pair_qdot0, opt.stop);
+  if (r.pair) r.pair_values = prove_pair_values(*r.pair, opt.digits, opt.pair_qdot0, opt.stop);
   prove_coupling_numbers(r, opt.digits, opt.scales.time2, opt.stop);
   r.horizon = report_horizon_minimum(spec, opt.horizon, opt.digits, opt.stop, opt.use, opt.scales);
   if (opt.below) r.below = report_first_below(spec, *opt.below, opt.digits, opt.stop, opt.use, opt.scales);

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include <gyrores/report/share.hpp>
+#include <gyrores/report/scales.hpp>
 
 namespace gyrores {
 

@@ -10,7 +10,7 @@
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/refine.hpp>
-#include <gyrores/report/share.hpp>
+#include <gyrores/report/scales.hpp>
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/minimum.hpp>
 #include <gyrores/theorem/root.hpp>
@@ -27,7 +27,7 @@ class rounder {
  public:
   rounder(unsigned digits, bool enclosures, bool doubles) : digits_(digits), enclosures_(enclosures), doubles_(doubles) {}
   void operator()(proved_real& out, const iv& x, const char* name) { round(out, x, name, digits_); }
-  // The same with its own digits (a share of H_q(0), report/share.hpp).
+  // The same with its own digits (a share of H_q(0), report/scales.hpp).
   void round(proved_real& out, const iv& x, const char* name, unsigned digits) {
     // Rounding to nearest is monotone: ends that round to one double decide every value between
     // (beyond double's range, to an infinity or zero, as strtod reads such a decimal).
@@ -339,12 +339,9 @@ pair_report prove_pair(const resonant_pair<big_int>& p, const pair_report_option
   return r;
 }
 
-pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits) {
-  pair_report_options opt;
-  opt.digits = digits;
-  opt.asymptotics = false;
-  opt.enclosures = true;
-  return prove_pair(p, opt);
+pair_report prove_pair_values(const resonant_pair<big_int>& p, unsigned digits, const big_rational& qdot0,
+                              stop_token stop) {
+  return prove_pair(p, {.digits = digits, .qdot0 = qdot0, .asymptotics = false, .enclosures = true, .stop = std::move(stop)});
 }
 
 paper_lobe_detail prove_paper_lobe(const resonant_pair<big_int>& p, const big_int& k, unsigned digits) {
