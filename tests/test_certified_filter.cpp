@@ -109,7 +109,7 @@ TEST_CASE("filter balls hold the exact results of their operations", "[filter][b
         if (ddb::sqrt(r, x)) CHECK(holds(r, sqrt(X)));
       }
     dd_ball s, c;
-    ddb::sin_cos(exact(xm), s, c);  // a point: only dd_sin_cos's own error
+    ddb::sin_cos(exact(xm), s, c);  // a point: only dd_sin_cos_accurate's own error
     CHECK(holds(s, sin(hp(xm))));
     CHECK(holds(c, cos(hp(xm))));
     ddb::sin_cos(x, s, c);

@@ -13,6 +13,7 @@
 #include <gyrores/gyrores.hpp>
 
 #include "cli_checks.hpp"
+#include "reference/coprime_count.hpp"
 #include "reference/lattice.hpp"
 #include "testing/cli_run.hpp"
 

@@ -15,6 +15,8 @@
 #include <gyrores/core/thread_caches.hpp>
 #include <gyrores/gyrores.hpp>
 
+#include "reference/dd_sin_cos.hpp"
+
 using namespace gyrores;
 
 namespace {

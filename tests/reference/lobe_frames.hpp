@@ -10,6 +10,11 @@
 
 namespace gyrores {
 
+// The impulse amplitude v = qdot0 must be > 0 (usage_error otherwise; NaN is rejected too).
+template <class T> void check_amplitude(const T& v) {
+  if (!(v > 0)) throw usage_error("the impulse amplitude qdot0 must be > 0");
+}
+
 // The frame in T: mu = pi m/(2a) and the sign (-1)^(k+j).
 template <class T> struct lobe_frame_real {
   T mu;

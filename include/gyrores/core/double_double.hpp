@@ -137,13 +137,9 @@ inline constexpr double_double pi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
 
 }  // namespace dd
 
-// sin and cos of x, |x| < 2: sin within 2^-63 |sin x|, cos within 2^-63 (src/lib/core/
-// double_double.cpp: a table of sin, cos at the multiples of 2^-7, formed once in MPFR, and
-// Taylor polynomials of the rest d, |d| < 2^-7).
-void dd_sin_cos(const double_double& x, double_double& s, double_double& c);
-
-// That table: s[i], c[i] are the double-double roundings of sin(i/128), cos(i/128) (relative
-// error <= 2^-106), i < 256. Formed on first use (thread-safe), then shared.
+// The table of the sines and cosines below: s[i], c[i] are the double-double roundings of
+// sin(i/128), cos(i/128) (relative error <= 2^-106), i < 256, formed once in MPFR on first use
+// (thread-safe), then shared.
 struct sin_cos_table {
   std::array<double_double, 256> s, c;
   sin_cos_table();
@@ -152,8 +148,8 @@ const sin_cos_table& dd_sin_cos_table();
 
 // sin and cos of x = x.hi + x.lo, 0 <= x.hi <= 3/2, |x.lo| <= ulp(x.hi)/2, from the table t
 // (= dd_sin_cos_table()): sin within 2^-63 |sin x|, cos within 2^-63, as normalised double-doubles;
-// inlined and about a quarter of dd_sin_cos's cost (it forms one double-double sum where
-// dd_sin_cos forms four products and two sums). With c = i/128 <= x.hi < c + 2^-7 (i <= 192, so
+// inlined, and one double-double sum where a general reduction forms four products and two
+// sums. With c = i/128 <= x.hi < c + 2^-7 (i <= 192, so
 // S = sin c >= 0, C = cos c > 0) and d = x.hi - c (exact: Sterbenz's lemma for i >= 1),
 //   sin x.hi = S + C d - S g + C d p,   cos x.hi = C - S d - C g - S d p,
 // g = 1 - cos d = d^2/2 - d^4/24 + d^6/720 (next term < 2^-71.3), p = sin d/d - 1 = -d^2/6 +
@@ -184,14 +180,10 @@ GYRORES_DD_INLINE void dd_sin_cos_first_quadrant(const sin_cos_table& t, const d
   c = dd::fast_two_sum(ch.hi, c_lo);
 }
 
-}  // namespace gyrores
-
-namespace gyrores {
-
 // sin and cos of x, |x| < 2, to about 2^-101: sin within 2^-101 |sin x|, cos within 2^-101
-// (absolute), for the certified sweep's balls (core/dd_ball.hpp). The same reduction and table
-// as dd_sin_cos, with the Taylor polynomials' leading terms in double-double (proof in src/lib/
-// core/double_double.cpp, above the definition). About twice dd_sin_cos's cost.
+// (absolute), for the certified sweep's balls (core/dd_ball.hpp): the table above at the multiple
+// c of 2^-7 next to x and Taylor polynomials of the rest d, |d| < 2^-7, their leading terms in
+// double-double (proof in src/lib/core/double_double.cpp, above the definition).
 void dd_sin_cos_accurate(const double_double& x, double_double& s, double_double& c);
 
 }  // namespace gyrores

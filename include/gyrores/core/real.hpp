@@ -178,14 +178,6 @@ template <class T, class I> T real_from_ratio(const I& p, const I& q) {
   return real_from_int<T>(p) / real_from_int<T>(q);
 }
 
-// Converting between real types (e.g. a double scout root into mpfr).
-template <class To, class From> To real_cast(const From& v) {
-  if constexpr (std::is_same_v<To, From>) return v;
-  else if constexpr (std::is_floating_point_v<From>) return To(v);
-  else if constexpr (std::is_floating_point_v<To>) return static_cast<To>(v);
-  else return To(v);
-}
-
 // Type name for messages and JSON.
 template <class T> std::string real_type_name() {
   if constexpr (std::is_same_v<T, double>) return "double";

@@ -21,11 +21,6 @@
 
 namespace gyrores {
 
-// The impulse amplitude v = qdot0 must be > 0 (usage_error otherwise; NaN is rejected too).
-template <class T> void check_amplitude(const T& v) {
-  if (!(v > 0)) throw usage_error("the impulse amplitude qdot0 must be > 0");
-}
-
 // Per-pair constants in T, computed once (each from exact integers, one or two roundings).
 template <class T> struct resonant_constants {
   T v;        // impulse amplitude qdot0 > 0

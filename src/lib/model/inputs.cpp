@@ -2,7 +2,6 @@
 #include <gyrores/model/inputs.hpp>
 
 #include <gyrores/core/error.hpp>
-#include <gyrores/core/quote.hpp>
 #include <gyrores/model/limits.hpp>
 
 namespace gyrores {
