@@ -23,6 +23,7 @@
 
 #include "testing/cli_run.hpp"
 #include "sweep_summary_core.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using namespace gyrores::sweep_testing;

@@ -15,6 +15,7 @@
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/inputs.hpp>
+#include "testing/test_support.hpp"
 
 using gyrores::mpfr_real;
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "reference/horizon_scan.hpp"
+#include "testing/test_support.hpp"
 #include <gyrores/gyrores.hpp>
 
 using namespace gyrores;

@@ -63,7 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     double_ok = false;
   }
   try {
-    gyrores::scoped_digits digits(30);
+    gyrores::mpfr_real::default_precision(30);  // a single-threaded process
     (void)real_from_decimal<gyrores::mpfr_real>(text, "X");
   } catch (const gyrores::usage_error&) {
     mpfr_ok = false;

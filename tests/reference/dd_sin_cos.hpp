@@ -1,15 +1,13 @@
 // dd_sin_cos: sin and cos of a double-double, |x| < 2, sin within 2^-63 |sin x| and cos within
-// 2^-63, from the product's table (core/double_double.hpp, dd_sin_cos_table) and short Taylor
-// polynomials: the cheaper sibling of dd_sin_cos_accurate, which the product no longer uses;
-// tests/test_double_double.cpp keeps its bounds checked against MPFR.
+// 2^-63, by the product's table step (core/double_double.hpp: dd_table_reduce, dd_table_step)
+// and short Taylor polynomials: the cheaper sibling of dd_sin_cos_accurate, which the product no
+// longer uses; tests/test_double_double.cpp keeps its bounds checked against MPFR.
 //
-// x = c + d with c = i 2^-7 (i = floor(|x| 2^7) < 256) and 0 <= d < 2^-7 (d = (|x|.hi - c) + |x|.lo:
-// the difference is exact by Sterbenz's lemma, c <= |x|.hi < 2c for i >= 1). Then
-//   sin x = S_i cos d + C_i sin d,   cos x = C_i cos d - S_i sin d,
-// with S_i, C_i the double-double roundings of sin c, cos c (relative error <= 2^-106), and
+// With x = c + d (the table step's reduction), S_i, C_i the double-double roundings of sin c,
+// cos c (relative error <= 2^-106), and e = d^2:
 //   sin d = d + d p,  p = -e/6 + e^2/120 - e^3/5040 + e^4/9!      (next term < 2^-95 d),
-//   cos d = 1 - d^2/2 + q,  q = e^2/24 - e^3/720 + e^4/8! - e^5/10!  (next term < 2^-110),
-// e = d^2. d^2/2 is a double-double (the exact product of the high parts plus d.hi d.lo); p
+//   cos d = 1 - d^2/2 + q,  q = e^2/24 - e^3/720 + e^4/8! - e^5/10!  (next term < 2^-110).
+// d^2/2 is a double-double (the exact product of the high parts plus d.hi d.lo); p
 // (|p| < 2^-15) and q (|q| < 2^-32) are doubles, formed from e = d.hi^2 with relative errors
 // below 2^-50, so sin d is within 2^-64 d and cos d within 2^-81. The double-double products
 // and sums add relative errors of at most 7u^2 each (u = 2^-53). For i = 0, sin x = sin d.
@@ -21,27 +19,14 @@
 namespace gyrores {
 
 inline void dd_sin_cos(const double_double& x, double_double& s, double_double& c) {
-  const bool negative = x.hi < 0;
-  const double_double ax = negative ? dd::neg(x) : x;
-  const int i = int(ax.hi * 128);  // 0 <= i < 256 for |x| < 2
-  const double_double d = dd::two_sum(ax.hi - i * 0x1p-7, ax.lo);
+  const dd_table_reduction r = dd_table_reduce(x);
+  const double_double& d = r.d;
   const double e = d.hi * d.hi;
   const double p = e * (-1.0 / 6 + e * (1.0 / 120 - e * (1.0 / 5040 - e * (1.0 / 362880))));
   const double q = e * e * (1.0 / 24 - e * (1.0 / 720 - e * (1.0 / 40320 - e * (1.0 / 3628800))));
   const double_double sd = dd::add(d, d.hi * p);
   const double_double half_d2 = dd::add(dd::scale(dd::two_prod(d.hi, d.hi), 0.5), d.hi * d.lo);
-  const double_double cd = dd::add(dd::add(double_double(1.0), dd::neg(half_d2)), q);
-  if (i == 0) {
-    s = sd;
-    c = cd;
-  } else {
-    const sin_cos_table& t = dd_sin_cos_table();
-    const double_double& S = t.s[std::size_t(i)];
-    const double_double& C = t.c[std::size_t(i)];
-    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
-    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
-  }
-  if (negative) s = dd::neg(s);
+  dd_table_step(r, sd, dd::add(dd::add(double_double(1.0), dd::neg(half_d2)), q), s, c);
 }
 
 }  // namespace gyrores

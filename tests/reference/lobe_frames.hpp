@@ -28,6 +28,17 @@ template <class T, class L> lobe_frame_real<T> lobe_frame_real_of(const resonant
   return {mu, odd ? -1 : 1};
 }
 
+// theta = 2 (k pi + u)/a reduced to [0, 2 pi): k is reduced mod a exactly first.
+template <class T, class L> T lobe_theta(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const T& u) {
+  L kr = int_mod(f.k, a);
+  T at = real_from_int<T>(a);
+  T th = 2 * (c.pi * real_from_int<T>(kr) + u) / at;  // one division (at 10000 digits a division costs 2 products)
+  T two_pi = 2 * c.pi;
+  if (th < 0) th += two_pi;
+  if (th >= two_pi) th -= two_pi;
+  return th;
+}
+
 // q, q', z, z' at u in a frame.
 template <class T> lobe_values<T> lobe_eval(const resonant_constants<T>& c, const lobe_frame_real<T>& f, const T& u) {
   T w = f.mu - c.x * u;

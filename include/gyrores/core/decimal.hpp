@@ -3,11 +3,7 @@
 #pragma once
 #include <mpfr.h>
 
-#include <cctype>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <memory>
 #include <string>
 
 #include <gyrores/core/error.hpp>

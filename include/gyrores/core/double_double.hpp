@@ -94,7 +94,6 @@ GYRORES_DD_INLINE double_double div(const double_double& x, const double_double&
   const double q3 = s.hi / y.hi;
   return add(fast_two_sum(q1, q2), q3);
 }
-GYRORES_DD_INLINE double_double div(const double_double& x, double y) { return div(x, double_double(y)); }
 // n/d for doubles (d != 0): the remainder n - q d is exact, so the quotient is good to 2^-104.
 GYRORES_DD_INLINE double_double quotient(double n, double d) {
   const double q = n / d;
@@ -145,6 +144,36 @@ struct sin_cos_table {
   sin_cos_table();
 };
 const sin_cos_table& dd_sin_cos_table();
+
+// sin x and cos x, |x| < 2, by the table: |x| = c + d with c = i 2^-7 (i = floor(|x| 2^7) < 256)
+// and d = (|x|.hi - c) + |x|.lo (the difference is exact by Sterbenz's lemma, c <= |x|.hi < 2c
+// for i >= 1); then from sd = sin d and cd = cos d, sin x = S_i cd + C_i sd and cos x = C_i cd -
+// S_i sd (for i = 0, sd and cd), with x's sign on the sine (dd_sin_cos_accurate below).
+struct dd_table_reduction {
+  bool negative;
+  int i;
+  double_double d;
+};
+GYRORES_DD_INLINE dd_table_reduction dd_table_reduce(const double_double& x) {
+  const bool negative = x.hi < 0;
+  const double_double ax = negative ? dd::neg(x) : x;
+  const int i = int(ax.hi * 128);
+  return {negative, i, dd::two_sum(ax.hi - i * 0x1p-7, ax.lo)};
+}
+GYRORES_DD_INLINE void dd_table_step(const dd_table_reduction& r, const double_double& sd, const double_double& cd,
+                                     double_double& s, double_double& c) {
+  if (r.i == 0) {
+    s = sd;
+    c = cd;
+  } else {
+    const sin_cos_table& t = dd_sin_cos_table();
+    const double_double& S = t.s[std::size_t(r.i)];
+    const double_double& C = t.c[std::size_t(r.i)];
+    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
+    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
+  }
+  if (r.negative) s = dd::neg(s);
+}
 
 // sin and cos of x = x.hi + x.lo, 0 <= x.hi <= 3/2, |x.lo| <= ulp(x.hi)/2, from the table t
 // (= dd_sin_cos_table()): sin within 2^-63 |sin x|, cos within 2^-63, as normalised double-doubles;

@@ -59,6 +59,9 @@ struct proved_real {
 };
 inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }
 
+// The exact rational value of a finite MPFR number.
+big_rational rational_of(mpfr_srcptr v);
+
 class enclosure {
  public:
   enclosure() : exact_(big_rational(0)) {}  // [0, 0], exact 0

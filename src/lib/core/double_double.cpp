@@ -32,7 +32,7 @@ const sin_cos_table& dd_sin_cos_table() {
 
 // ---- dd_sin_cos_accurate (include/gyrores/core/double_double.hpp) ----
 //
-// The reduction (above the definition): x = c + d exactly, c = i 2^-7, |d| <= 2^-7 (1 + 2^-45) (d < 0 only
+// The reduction (dd_table_reduce): x = c + d exactly, c = i 2^-7, |d| <= 2^-7 (1 + 2^-45) (d < 0 only
 // when |x|.hi = c, then |d| <= 2^-53), and the table's S_i, C_i within 2^-106 relatively. With
 // u = 2^-53 the double-double operations err relatively by at most (Joldes, Muller and Popescu,
 // the header's comment): (+) 3u^2 = 2^-104.41 (2u^2 with a double), (x) 7u^2 = 2^-103.19. Let
@@ -110,27 +110,10 @@ GYRORES_DD_INLINE double_double cos_small(const double_double& e) {
 
 }  // namespace
 
-// |x| = c + d with c = i 2^-7 (i = floor(|x| 2^7) < 256 for |x| < 2) and d = (|x|.hi - c) + |x|.lo:
-// the difference is exact by Sterbenz's lemma (c <= |x|.hi < 2c for i >= 1). Then sin x =
-// S_i cos d + C_i sin d and cos x = C_i cos d - S_i sin d (for i = 0, sin d and cos d).
 GYRORES_DD_FAST void dd_sin_cos_accurate(const double_double& x, double_double& s, double_double& c) {
-  const bool negative = x.hi < 0;
-  const double_double ax = negative ? dd::neg(x) : x;
-  const int i = int(ax.hi * 128);
-  const double_double d = dd::two_sum(ax.hi - i * 0x1p-7, ax.lo);
-  const double_double e = dd::mul(d, d);
-  const double_double sd = sin_small(d, e), cd = cos_small(e);
-  if (i == 0) {
-    s = sd;
-    c = cd;
-  } else {
-    const sin_cos_table& t = dd_sin_cos_table();
-    const double_double& S = t.s[std::size_t(i)];
-    const double_double& C = t.c[std::size_t(i)];
-    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
-    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
-  }
-  if (negative) s = dd::neg(s);
+  const dd_table_reduction r = dd_table_reduce(x);
+  const double_double e = dd::mul(r.d, r.d);
+  dd_table_step(r, sin_small(r.d, e), cos_small(e), s, c);
 }
 
 }  // namespace gyrores

@@ -8,17 +8,13 @@
 
 namespace gyrores {
 
-namespace {
-
-// The exact rational value of a finite MPFR number.
 big_rational rational_of(mpfr_srcptr v) {
+  if (mpfr_zero_p(v)) return big_rational(0);  // (mpfr_get_z_2exp gives 0 the exponent emin)
   big_int m;
   const long e = long(mpfr_get_z_2exp(m.backend().data(), v));
   if (e >= 0) return big_rational(big_int(m << static_cast<unsigned>(e)));
   return big_rational(m, big_int(1) << static_cast<unsigned>(-e));
 }
-
-}  // namespace
 
 void check_report_digits(unsigned digits) {
   if (digits < 1 || digits > report_digits_max)
