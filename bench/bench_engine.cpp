@@ -39,6 +39,7 @@
 #include "speed_error/pre_theorem.hpp"
 #include "speed_error/theorem_path.hpp"
 #include "testing/naive_toms748.hpp"
+#include "testing/test_support.hpp"
 
 using gyrores::big_int;
 using gyrores::mpfr_real;

@@ -25,6 +25,7 @@
 #include "certificate_checker.hpp"
 #include "reference/lobe_intervals.hpp"
 #include "verify_common.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using namespace gyrores::proofs;

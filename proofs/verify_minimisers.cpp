@@ -48,6 +48,7 @@
 #include "reference/asymptotic.hpp"
 #include "reference/lobe_intervals.hpp"
 #include "verify_common.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using namespace gyrores::proofs;

@@ -22,6 +22,7 @@
 #include <numeric>
 
 #include "verify_common.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using namespace gyrores::proofs;

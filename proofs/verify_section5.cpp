@@ -26,6 +26,7 @@
 
 #include "lobe_roots.hpp"
 #include "verify_common.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using namespace gyrores::proofs;

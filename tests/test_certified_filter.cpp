@@ -23,6 +23,7 @@
 
 #include "testing/cli_run.hpp"
 #include "sweep_summary_core.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using namespace gyrores::sweep_testing;
@@ -109,7 +110,7 @@ TEST_CASE("filter balls hold the exact results of their operations", "[filter][b
         if (ddb::sqrt(r, x)) CHECK(holds(r, sqrt(X)));
       }
     dd_ball s, c;
-    ddb::sin_cos(exact(xm), s, c);  // a point: only dd_sin_cos's own error
+    ddb::sin_cos(exact(xm), s, c);  // a point: only dd_sin_cos_accurate's own error
     CHECK(holds(s, sin(hp(xm))));
     CHECK(holds(c, cos(hp(xm))));
     ddb::sin_cos(x, s, c);

@@ -14,6 +14,7 @@
 
 #include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores::test;  // cli_run, cli_json, check_rejected, count_lines, temp_dir
 

@@ -11,11 +11,32 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/enclosure.hpp>
+#include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/rational.hpp>
 #include <gyrores/core/real.hpp>
 #include <gyrores/model/inputs.hpp>
+#include "testing/test_support.hpp"
 
 using gyrores::mpfr_real;
+
+namespace {
+
+// Ziv's rounding test (the product decides its roundings on enclosures instead, core/enclosure.hpp):
+// true when every value within a relative `rel_err` of v rounds to the same `digits`-digit string
+// as v (the ends v (1 -+ rel_err) rounded outward). Exact zero (rel_err irrelevant) is settled.
+bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits) {
+  if (mpfr_zero_p(v.backend().data())) return true;
+  // |v| rel_err exactly (the product of a p-bit and a q-bit number has p + q bits), the ends outward.
+  const mpfr_prec_t prec = mpfr_get_prec(v.backend().data()) + mpfr_get_prec(rel_err.backend().data());
+  gyrores::fixed_mpfr d(prec), lo(prec), hi(prec);
+  mpfr_mul(d, v.backend().data(), rel_err.backend().data(), MPFR_RNDN);
+  mpfr_abs(d, d, MPFR_RNDN);
+  mpfr_sub(lo, v.backend().data(), d, MPFR_RNDD);
+  mpfr_add(hi, v.backend().data(), d, MPFR_RNDU);
+  return gyrores::format_scientific(lo, digits) == gyrores::format_scientific(hi, digits);
+}
+
+}  // namespace
 
 TEST_CASE("bits <-> decimal digits: exact floors and ceilings", "[core][precision]") {
   // floor(b log10 2) and ceil(d log2 10) computed here in long double for small arguments (the
@@ -51,9 +72,9 @@ TEST_CASE("format_scientific: correctly rounded in each direction", "[core][deci
   CHECK(gyrores::format_scientific(mpfr_real("12345e300"), 2) == "1.2e+304");
   CHECK(gyrores::format_scientific(mpfr_real(7), 1) == "7e+00");
   // Ziv's test: 1/3 known to 1e-40 settles 30 digits; 0.125 +- 1e-3 does not settle 4 digits.
-  CHECK(gyrores::digits_settled(third, mpfr_real("1e-40"), 30));
-  CHECK_FALSE(gyrores::digits_settled(mpfr_real("0.125"), mpfr_real("1e-3"), 4));
-  CHECK(gyrores::digits_settled(mpfr_real(0), mpfr_real(1), 10));
+  CHECK(digits_settled(third, mpfr_real("1e-40"), 30));
+  CHECK_FALSE(digits_settled(mpfr_real("0.125"), mpfr_real("1e-3"), 4));
+  CHECK(digits_settled(mpfr_real(0), mpfr_real(1), 10));
 }
 
 // The directed roundings are formed by integers (core/decimal.cpp); MPFR's mpfr_get_str is the
@@ -142,9 +163,9 @@ TEST_CASE("decimal input: integers and exact rationals", "[core][decimal]") {
   CHECK_FALSE(gyrores::int_is_square(gyrores::big_int(32), root));
 }
 
-TEST_CASE("enclosure: outward decimals as text and as exact rationals agree", "[core][enclosure]") {
-  // outward() formats the binary ends by MPFR-based directed digits; outward_rationals() rounds
-  // their exact rationals in integers: two ways to one value, which must also bracket the ends.
+TEST_CASE("enclosure: outward decimals bracket the exact ends", "[core][enclosure]") {
+  // outward() formats the binary ends by directed digits; their exact rationals must bracket the
+  // ends' exact rationals (decimal_rounded, core/rational.hpp, rounds the same way in integers).
   using namespace gyrores;
   std::mt19937_64 rng(33);
   for (int i = 0; i < 400; ++i) {
@@ -160,20 +181,17 @@ TEST_CASE("enclosure: outward decimals as text and as exact rationals agree", "[
     const enclosure e(lo, hi);
     const unsigned digits = 1 + unsigned(rng() % 40);
     const auto text = e.outward(digits);
-    const auto [qlo, qhi] = e.outward_rationals(digits);
+    const big_rational qlo = parse_rational(text.first, "lo"), qhi = parse_rational(text.second, "hi");
     INFO(text.first << " " << text.second << " at " << digits);
-    CHECK(qlo == parse_rational(text.first, "lo"));
-    CHECK(qhi == parse_rational(text.second, "hi"));
+    CHECK(qlo == decimal_rounded(e.lo_rational(), digits, -1));
+    CHECK(qhi == decimal_rounded(e.hi_rational(), digits, +1));
     CHECK(qlo <= e.lo_rational());
     CHECK(e.hi_rational() <= qhi);
   }
   // Exact rationals: their own decimal when it has at most D digits, else outward.
   CHECK(enclosure::exact(big_rational(3, 10)).outward(5) == std::pair<std::string, std::string>{"3.0000e-01", "3.0000e-01"});
   CHECK(enclosure::exact(big_rational(1, 3)).outward(5) == std::pair<std::string, std::string>{"3.3333e-01", "3.3334e-01"});
-  CHECK(enclosure::exact(big_rational(-1, 3)).outward_rationals(2) ==
-        std::pair<big_rational, big_rational>{big_rational(-34, 100), big_rational(-33, 100)});
-  CHECK(enclosure::exact(big_rational(3, 10)).outward_rationals(5) ==
-        std::pair<big_rational, big_rational>{big_rational(3, 10), big_rational(3, 10)});
+  CHECK(enclosure::exact(big_rational(-1, 3)).outward(2) == std::pair<std::string, std::string>{"-3.4e-01", "-3.3e-01"});
   CHECK(enclosure::exact(big_rational(1, 3)).report(3)->value == "3.33e-01");
   CHECK(enclosure().report(4)->enclosure == std::pair<std::string, std::string>{"0.000000e+00", "0.000000e+00"});
 }

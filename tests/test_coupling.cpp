@@ -13,8 +13,10 @@
 #include <gyrores/gyrores.hpp>
 
 #include "cli_checks.hpp"
+#include "reference/coprime_count.hpp"
 #include "reference/lattice.hpp"
 #include "testing/cli_run.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;

@@ -27,6 +27,7 @@
 
 #include "cli_checks.hpp"
 #include "testing/cli_run.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using gyrores::test::cli_available;

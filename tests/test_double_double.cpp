@@ -15,6 +15,7 @@
 #include <gyrores/core/thread_caches.hpp>
 #include <gyrores/gyrores.hpp>
 
+#include "reference/dd_sin_cos.hpp"
 #include "reference/lattice.hpp"  // minimiser_lobes_modular
 
 using namespace gyrores;

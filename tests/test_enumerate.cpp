@@ -14,6 +14,7 @@
 
 #include <gyrores/model/enumerate.hpp>
 
+#include "reference/coprime_count.hpp"
 #include "testing/test_support.hpp"
 
 using gyrores::coprime_pairs;

@@ -21,6 +21,7 @@
 #include <gyrores/gyrores.hpp>
 
 #include "cli_checks.hpp"
+#include "reference/envelope.hpp"
 #include "reference/horizon_scan.hpp"
 #include "report_summary_checks.hpp"
 #include "testing/cli_run.hpp"

@@ -8,12 +8,19 @@
 #include <vector>
 
 #include "reference/horizon_scan.hpp"
+#include "testing/test_support.hpp"
 #include <gyrores/gyrores.hpp>
 
 using namespace gyrores;
 using ref_real = mpfr_fixed<60>;
 
 namespace {
+
+// q in T: numerator and denominator rounded to T, then divided (real_from_ratio: relative
+// error <= 1.5 ulp; exact when both fit T's significand).
+template <class T> T real_from_rational(const big_rational& q) {
+  return real_from_ratio<T>(big_int(boost::multiprecision::numerator(q)), big_int(boost::multiprecision::denominator(q)));
+}
 
 struct scanned {
   ref_real h, t;

@@ -7,6 +7,7 @@
 
 #include "reference/interval.hpp"
 #include "reference/interval_newton.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 

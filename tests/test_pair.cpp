@@ -39,6 +39,21 @@ big_int pow10(unsigned e) {
 }
 big_int pow2(unsigned e) { return big_int(1) << e; }
 
+// Membership of the paper's low-order set R_low(M) = {coprime tau > sigma >= 1, tau + sigma <= M}
+// (the sweep's enumeration bound, model/enumerate.hpp).
+template <gyrores::pair_integer I> bool pair_in_low_order_set(const resonant_pair<I>& p, const big_int& max_order) {
+  return gyrores::to_big(p.order()) <= max_order;
+}
+
+// The beat ratio (tau + sigma)/(tau - sigma) = 1/x as an exact fraction {numerator, denominator}
+// (not reduced: gcd(a, b) is 1 or 2).
+template <gyrores::pair_integer I> struct int_fraction {
+  gyrores::wide_int<I> num, den;
+};
+template <gyrores::pair_integer I> int_fraction<I> pair_beat_ratio(const resonant_pair<I>& p) {
+  return {p.order(), gyrores::wide_int<I>(p.delta())};
+}
+
 // Exception message of a throwing callable ("" if it does not throw usage_error).
 template <class F> std::string usage_message(F&& f) {
   try {
@@ -172,7 +187,7 @@ TEST_CASE("pair invariants: order, delta, delta mod 4, v2, degeneracy, strand of
     CHECK(q.degenerate() == r.degenerate);
     CHECK(q.strand_offset_min() == r.offset);
     // Beat ratio a/b as an exact (unreduced) fraction.
-    auto br = gyrores::pair_beat_ratio(p);
+    auto br = pair_beat_ratio(p);
     CHECK(gyrores::to_decimal(br.num) == std::to_string(r.order));
     CHECK(gyrores::to_decimal(br.den) == std::to_string(r.delta));
   }
@@ -207,7 +222,6 @@ TEST_CASE("pair invariants: randomised against direct integer arithmetic", "[pai
 }
 
 TEST_CASE("low-order set membership R_low(M)", "[pair]") {
-  using gyrores::pair_in_low_order_set;
   CHECK(pair_in_low_order_set(p64(2, 1), big_int(3)));
   CHECK_FALSE(pair_in_low_order_set(p64(2, 1), big_int(2)));
   CHECK(pair_in_low_order_set(p64(6, 5), big_int(11)));
@@ -319,7 +333,7 @@ TEST_CASE("int64 pairs whose sum overflows 64 bits keep exact order", "[pair][ov
   CHECK(gyrores::to_decimal(q.order()) == "18446744073709551613");
   CHECK(q.delta() == 1);
   CHECK(q.strand_offset_min() == 1);  // a = 2^64 - 3 = 1 mod 4
-  auto br = gyrores::pair_beat_ratio(q);
+  auto br = pair_beat_ratio(q);
   CHECK(gyrores::to_big(br.num) == pow2(64) - 3);
   // Casting to big_int and back is exact.
   auto qb = gyrores::pair_cast<big_int>(q);
@@ -355,7 +369,7 @@ TEST_CASE("big_int pairs far beyond 64 bits", "[pair][big]") {
   CHECK(r.v2_delta() == 2);
   CHECK(r.strand_offset_min() == 2);
   CHECK(r.order() == pow2(201) - 2);
-  auto br = gyrores::pair_beat_ratio(r);
+  auto br = pair_beat_ratio(r);
   CHECK(br.num == pow2(201) - 2);
   CHECK(br.den == 4);
 }

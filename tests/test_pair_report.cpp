@@ -21,6 +21,7 @@
 
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_forms.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 

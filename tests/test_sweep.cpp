@@ -36,6 +36,7 @@
 #include "testing/cli_run.hpp"
 #include "testing/high_precision_reference.hpp"
 #include "sweep_summary_core.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 using gyrores::test::path_exists;

@@ -17,6 +17,7 @@
 #include "testing/high_precision_reference.hpp"
 #include "testing/naive_forms.hpp"
 #include "sweep_summary_core.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 

@@ -17,6 +17,7 @@
 #include "certificate_checker.hpp"
 #include "reference/global_search.hpp"
 #include "testing/high_precision_reference.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 

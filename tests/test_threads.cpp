@@ -35,6 +35,7 @@
 #include <gyrores/report/pair_report.hpp>
 
 #include "certificate_checker.hpp"
+#include "testing/test_support.hpp"
 
 using namespace gyrores;
 

@@ -15,6 +15,7 @@
 #include "reference.hpp"
 #include "theorem_path.hpp"
 #include "testing/naive_toms748.hpp"  // src/testing/: the obvious implementation (the naive peer)
+#include "testing/test_support.hpp"
 
 namespace gyrores::bench {
 

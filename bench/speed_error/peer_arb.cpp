@@ -24,7 +24,9 @@
 #include "arb_types.hpp"
 #include "case_support.hpp"
 #include "reference.hpp"
+#include "reference/lobe_frames.hpp"  // lobe_theta: theta of the root, as the references form it
 #include "theorem_path.hpp"
+#include "testing/test_support.hpp"
 #endif
 
 namespace gyrores::bench {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <unistd.h>
+#include "testing/test_support.hpp"
 
 namespace gyrores::bench {
 

@@ -9,6 +9,7 @@
 #include <gyrores/theorem/lobes.hpp>
 #include "pre_theorem.hpp"
 #include "testing/high_precision_reference.hpp"  // src/testing/: the independent reference
+#include "testing/test_support.hpp"
 
 namespace gyrores::bench {
 

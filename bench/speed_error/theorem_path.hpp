@@ -17,6 +17,7 @@
 #include <gyrores/theorem/lobes.hpp>
 #include <gyrores/theorem/minimum.hpp>
 #include <gyrores/theorem/root.hpp>
+#include "testing/test_support.hpp"
 
 namespace gyrores::bench {
 

@@ -52,6 +52,7 @@
 
 #include <gyrores/core/integer.hpp>
 #include <gyrores/core/real.hpp>
+#include "testing/test_support.hpp"
 
 namespace gyrores::test::hp {
 

@@ -1,12 +1,37 @@
 // Fuzz target: decimal input (core/decimal.hpp). parse_big_int either throws usage_error or gives
 // an integer whose decimal text is the input without sign clutter and leading zeros;
-// real_from_decimal in double and in MPFR accepts exactly the same texts.
+// real_from_decimal (below: a reading of decimal reals that the product no longer has; the product
+// reads decimals exactly, core/rational.hpp) in double and in MPFR accepts exactly the same texts.
+#include <cctype>
+#include <cstdlib>
+
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
 
 #include "fuzz_support.hpp"
 
 namespace {
+
+// Parse a decimal real (e.g. "1", "0.25", "1e-3") into T, correctly rounded by T's parser.
+// Throws usage_error naming `what` for anything else.
+using gyrores::usage_error;
+
+template <class T> T real_from_decimal(const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  if (text.empty()) throw usage_error(what + " must be a number, got ''");
+  std::strtold(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0')
+    throw usage_error(what + " must be a number, got '" + text + "'");
+  for (char ch : text)
+    if (!(std::isdigit((unsigned char)ch) || ch == '.' || ch == 'e' || ch == 'E' || ch == '+' || ch == '-'))
+      throw usage_error(what + " must be a decimal number, got '" + text + "'");
+  if constexpr (std::is_floating_point_v<T>) {
+    if constexpr (std::is_same_v<T, double>) return std::strtod(text.c_str(), nullptr);
+    else return std::strtold(text.c_str(), nullptr);
+  } else {
+    return T(text);
+  }
+}
 
 // The canonical decimal text of an accepted integer literal: sign kept only when negative and
 // the value non-zero, leading zeros dropped.
@@ -33,13 +58,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   bool double_ok = true, mpfr_ok = true;
   try {
-    (void)gyrores::real_from_decimal<double>(text, "X");
+    (void)real_from_decimal<double>(text, "X");
   } catch (const gyrores::usage_error&) {
     double_ok = false;
   }
   try {
-    gyrores::scoped_digits digits(30);
-    (void)gyrores::real_from_decimal<gyrores::mpfr_real>(text, "X");
+    gyrores::mpfr_real::default_precision(30);  // a single-threaded process
+    (void)real_from_decimal<gyrores::mpfr_real>(text, "X");
   } catch (const gyrores::usage_error&) {
     mpfr_ok = false;
   }

@@ -63,6 +63,7 @@
 #include <gyrores/model/resonant.hpp>
 #include "reference/inscribed_result.hpp"
 #include <gyrores/core/roots.hpp>
+#include "testing/test_support.hpp"
 
 namespace gyrores {
 

@@ -39,6 +39,7 @@
 #include "reference/inscribed_result.hpp"
 #include <gyrores/core/roots.hpp>
 #include <gyrores/theorem/lobes.hpp>
+#include "testing/test_support.hpp"
 
 namespace gyrores {
 

@@ -10,6 +10,11 @@
 
 namespace gyrores {
 
+// The impulse amplitude v = qdot0 must be > 0 (usage_error otherwise; NaN is rejected too).
+template <class T> void check_amplitude(const T& v) {
+  if (!(v > 0)) throw usage_error("the impulse amplitude qdot0 must be > 0");
+}
+
 // The frame in T: mu = pi m/(2a) and the sign (-1)^(k+j).
 template <class T> struct lobe_frame_real {
   T mu;
@@ -21,6 +26,17 @@ template <class T, class L> lobe_frame_real<T> lobe_frame_real_of(const resonant
   T mu = c.pi * real_from_int<T>(f.m) / (2 * real_from_int<T>(a));
   bool odd = ((f.k + f.j) & 1) != 0;
   return {mu, odd ? -1 : 1};
+}
+
+// theta = 2 (k pi + u)/a reduced to [0, 2 pi): k is reduced mod a exactly first.
+template <class T, class L> T lobe_theta(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const T& u) {
+  L kr = int_mod(f.k, a);
+  T at = real_from_int<T>(a);
+  T th = 2 * (c.pi * real_from_int<T>(kr) + u) / at;  // one division (at 10000 digits a division costs 2 products)
+  T two_pi = 2 * c.pi;
+  if (th < 0) th += two_pi;
+  if (th >= two_pi) th -= two_pi;
+  return th;
 }
 
 // q, q', z, z' at u in a frame.

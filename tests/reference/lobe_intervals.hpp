@@ -15,6 +15,7 @@
 #include <gyrores/model/resonant.hpp>
 
 #include "reference/interval.hpp"
+#include "testing/test_support.hpp"
 
 namespace gyrores::proof {
 

@@ -1,22 +1,9 @@
-// Decimal input and output with every printed digit accounted for.
-//
-// real_to_mpfr: exact conversion of any supported real into an mpfr_real (no rounding: the
-// target carries the bits of the source, whatever Boost's default precision). format_scientific:
-// correctly rounded scientific notation with D significant digits, to nearest by default (by
-// MPFR) or in a given direction (outward ends of enclosures; exactly, by integers). digits_settled: Ziv's test:
-// given a value known to within a relative error e, the D-digit rounding is certain only if both
-// ends of [v(1-e), v(1+e)] round to the same string. parse_big_int, real_from_decimal: decimal
-// input. Nothing here reads or writes Boost's process-wide default precision (core/real.hpp), so
-// every function may run on any thread (real_from_decimal<mpfr_real> excepted: it parses at
-// that default).
+// Decimal input and output with every printed digit accounted for. Nothing here reads or writes
+// Boost's process-wide default precision (core/real.hpp), so every function may run on any thread.
 #pragma once
 #include <mpfr.h>
 
-#include <cctype>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <memory>
 #include <string>
 
 #include <gyrores/core/error.hpp>
@@ -82,33 +69,8 @@ std::string format_scientific(mpfr_srcptr v, unsigned digits, mpfr_rnd_t rnd = M
 // false when the interval straddles a rounding boundary (refine it). Precondition: lo <= hi, finite.
 bool enclosure_rounding(mpfr_srcptr lo, mpfr_srcptr hi, unsigned digits, std::string& out);
 
-// True when every value within a relative `rel_err` of v rounds to the same `digits`-digit
-// string as v (Ziv's rounding test; the ends v (1 -+ rel_err) are rounded outward). Exact zero
-// (rel_err irrelevant) is settled.
-bool digits_settled(mpfr_srcptr v, mpfr_srcptr rel_err, unsigned digits);
-bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits);
-
 // Parse a decimal integer (optional sign, digits only, any size; leading zeros are decimal, not
 // an octal prefix). Throws usage_error naming `what`.
 big_int parse_big_int(const std::string& text, const std::string& what);
-
-// Parse a decimal real (e.g. "1", "0.25", "1e-3") into T, correctly rounded by T's parser.
-// Throws usage_error naming `what` for anything else.
-template <class T> T real_from_decimal(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  if (text.empty()) throw usage_error(what + " must be a number, got ''");
-  std::strtold(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
-    throw usage_error(what + " must be a number, got '" + text + "'");
-  for (char ch : text)
-    if (!(std::isdigit((unsigned char)ch) || ch == '.' || ch == 'e' || ch == 'E' || ch == '+' || ch == '-'))
-      throw usage_error(what + " must be a decimal number, got '" + text + "'");
-  if constexpr (std::is_floating_point_v<T>) {
-    if constexpr (std::is_same_v<T, double>) return std::strtod(text.c_str(), nullptr);
-    else return std::strtold(text.c_str(), nullptr);
-  } else {
-    return T(text);
-  }
-}
 
 }  // namespace gyrores

@@ -94,7 +94,6 @@ GYRORES_DD_INLINE double_double div(const double_double& x, const double_double&
   const double q3 = s.hi / y.hi;
   return add(fast_two_sum(q1, q2), q3);
 }
-GYRORES_DD_INLINE double_double div(const double_double& x, double y) { return div(x, double_double(y)); }
 // n/d for doubles (d != 0): the remainder n - q d is exact, so the quotient is good to 2^-104.
 GYRORES_DD_INLINE double_double quotient(double n, double d) {
   const double q = n / d;
@@ -137,23 +136,49 @@ inline constexpr double_double pi{0x1.921fb54442d18p+1, 0x1.1a62633145c07p-53};
 
 }  // namespace dd
 
-// sin and cos of x, |x| < 2: sin within 2^-63 |sin x|, cos within 2^-63 (src/lib/core/
-// double_double.cpp: a table of sin, cos at the multiples of 2^-7, formed once in MPFR, and
-// Taylor polynomials of the rest d, |d| < 2^-7).
-void dd_sin_cos(const double_double& x, double_double& s, double_double& c);
-
-// That table: s[i], c[i] are the double-double roundings of sin(i/128), cos(i/128) (relative
-// error <= 2^-106), i < 256. Formed on first use (thread-safe), then shared.
+// The table of the sines and cosines below: s[i], c[i] are the double-double roundings of
+// sin(i/128), cos(i/128) (relative error <= 2^-106), i < 256, formed once in MPFR on first use
+// (thread-safe), then shared.
 struct sin_cos_table {
   std::array<double_double, 256> s, c;
   sin_cos_table();
 };
 const sin_cos_table& dd_sin_cos_table();
 
+// sin x and cos x, |x| < 2, by the table: |x| = c + d with c = i 2^-7 (i = floor(|x| 2^7) < 256)
+// and d = (|x|.hi - c) + |x|.lo (the difference is exact by Sterbenz's lemma, c <= |x|.hi < 2c
+// for i >= 1); then from sd = sin d and cd = cos d, sin x = S_i cd + C_i sd and cos x = C_i cd -
+// S_i sd (for i = 0, sd and cd), with x's sign on the sine (dd_sin_cos_accurate below).
+struct dd_table_reduction {
+  bool negative;
+  int i;
+  double_double d;
+};
+GYRORES_DD_INLINE dd_table_reduction dd_table_reduce(const double_double& x) {
+  const bool negative = x.hi < 0;
+  const double_double ax = negative ? dd::neg(x) : x;
+  const int i = int(ax.hi * 128);
+  return {negative, i, dd::two_sum(ax.hi - i * 0x1p-7, ax.lo)};
+}
+GYRORES_DD_INLINE void dd_table_step(const dd_table_reduction& r, const double_double& sd, const double_double& cd,
+                                     double_double& s, double_double& c) {
+  if (r.i == 0) {
+    s = sd;
+    c = cd;
+  } else {
+    const sin_cos_table& t = dd_sin_cos_table();
+    const double_double& S = t.s[std::size_t(r.i)];
+    const double_double& C = t.c[std::size_t(r.i)];
+    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
+    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
+  }
+  if (r.negative) s = dd::neg(s);
+}
+
 // sin and cos of x = x.hi + x.lo, 0 <= x.hi <= 3/2, |x.lo| <= ulp(x.hi)/2, from the table t
 // (= dd_sin_cos_table()): sin within 2^-63 |sin x|, cos within 2^-63, as normalised double-doubles;
-// inlined and about a quarter of dd_sin_cos's cost (it forms one double-double sum where
-// dd_sin_cos forms four products and two sums). With c = i/128 <= x.hi < c + 2^-7 (i <= 192, so
+// inlined, and one double-double sum where a general reduction forms four products and two
+// sums. With c = i/128 <= x.hi < c + 2^-7 (i <= 192, so
 // S = sin c >= 0, C = cos c > 0) and d = x.hi - c (exact: Sterbenz's lemma for i >= 1),
 //   sin x.hi = S + C d - S g + C d p,   cos x.hi = C - S d - C g - S d p,
 // g = 1 - cos d = d^2/2 - d^4/24 + d^6/720 (next term < 2^-71.3), p = sin d/d - 1 = -d^2/6 +
@@ -184,14 +209,10 @@ GYRORES_DD_INLINE void dd_sin_cos_first_quadrant(const sin_cos_table& t, const d
   c = dd::fast_two_sum(ch.hi, c_lo);
 }
 
-}  // namespace gyrores
-
-namespace gyrores {
-
 // sin and cos of x, |x| < 2, to about 2^-101: sin within 2^-101 |sin x|, cos within 2^-101
-// (absolute), for the certified sweep's balls (core/dd_ball.hpp). The same reduction and table
-// as dd_sin_cos, with the Taylor polynomials' leading terms in double-double (proof in src/lib/
-// core/double_double.cpp, above the definition). About twice dd_sin_cos's cost.
+// (absolute), for the certified sweep's balls (core/dd_ball.hpp): the table above at the multiple
+// c of 2^-7 next to x and Taylor polynomials of the rest d, |d| < 2^-7, their leading terms in
+// double-double (proof in src/lib/core/double_double.cpp, above the definition).
 void dd_sin_cos_accurate(const double_double& x, double_double& s, double_double& c);
 
 }  // namespace gyrores

@@ -60,6 +60,9 @@ struct proved_real {
 };
 inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return os << r.value; }
 
+// The exact rational value of a finite MPFR number.
+big_rational rational_of(mpfr_srcptr v);
+
 class enclosure {
  public:
   enclosure() : exact_(big_rational(0)) {}  // [0, 0], exact 0
@@ -77,8 +80,6 @@ class enclosure {
   std::optional<std::string> rounded(unsigned digits) const;
   std::optional<double> nearest_double() const;
   std::pair<std::string, std::string> outward(unsigned digits) const;
-  // The values of outward(D) as exact rationals (no text).
-  std::pair<big_rational, big_rational> outward_rationals(unsigned digits) const;
   // rounded(D) with outward(D + 3), as a report prints it (proved_real above); none while the
   // rounding is undecided.
   std::optional<proved_real> report(unsigned digits) const;
@@ -88,7 +89,6 @@ class enclosure {
   big_rational hi_rational() const;
 
  private:
-  std::pair<exact_binary, exact_binary> outward_ends(unsigned digits) const;
   exact_binary lo_, hi_;
   std::optional<big_rational> exact_;
 };

@@ -20,12 +20,6 @@ big_rational parse_rational(const std::string& text, const std::string& what);
 // Exact text of a rational: "P/Q", or "P" when Q = 1.
 std::string rational_str(const big_rational& r);
 
-// q in T: numerator and denominator rounded to T, then divided (real_from_ratio: relative
-// error <= 1.5 ulp; exact when both fit T's significand).
-template <class T> T real_from_rational(const big_rational& q) {
-  return real_from_ratio<T>(big_int(boost::multiprecision::numerator(q)), big_int(boost::multiprecision::denominator(q)));
-}
-
 // q in scientific notation d.ddd...e+XX with `digits` significant digits (at least 1), rounded
 // once from the exact value, to nearest with ties to even (the rule of format_scientific,
 // core/decimal.hpp, for binary values). Zero prints as 0.000...e+00. This is how exact

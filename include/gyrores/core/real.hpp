@@ -11,7 +11,8 @@
 // and functions on them set that default for the duration of the call whenever an operand's
 // precision differs from it. So mpfr_real and mpfi_real arithmetic is safe on several threads at
 // once only while every value has the default precision and nobody changes the default. The
-// library never changes it (docs/architecture.md, Conventions): proved code works on
+// library never changes it (docs/architecture.md, Conventions; only the tests, the proof programs
+// and the benchmarks do, src/testing/test_support.hpp): proved code works on
 // fixed_mpfr/fixed_mpfi (core/fixed_precision.hpp) or Arb balls, and generic code that needs a
 // chosen MPFR precision runs in mpfr_fixed<D>, whose precision is part of the type.
 #pragma once
@@ -76,45 +77,13 @@ template <class T> T real_epsilon() {
   return ldexp(T(1), 1 - int(real_bits<T>()));
 }
 
-// Sets the default decimal precision of mpfr_real and mpfi_real for a scope, restoring it after.
-// Boost 1.74 keeps this default in one process-wide variable, so this is for single-threaded
-// programs only: the library does not use it (see the header comment); the tests' oracles, the
-// proof programs and the benchmarks do.
-class scoped_digits {
- public:
-  explicit scoped_digits(unsigned digits10)
-      : old_r_(mpfr_real::default_precision()), old_i_(mpfi_real::default_precision()) {
-    mpfr_real::default_precision(digits10);
-    mpfi_real::default_precision(digits10);
-  }
-  ~scoped_digits() {
-    mpfr_real::default_precision(old_r_);
-    mpfi_real::default_precision(old_i_);
-  }
-  scoped_digits(const scoped_digits&) = delete;
-  scoped_digits& operator=(const scoped_digits&) = delete;
-
- private:
-  unsigned old_r_, old_i_;
-};
-
-// Binary and decimal precision, converted with one pair of constants: log10(2) rounded down and
-// log2(10) rounded up to 18 digits, in 128-bit integer arithmetic. The floors and ceilings are
-// exact for every precision up to 3 * 10^6 bits and 10^6 digits (checked against 60-digit
-// logarithms; tests/test_core.cpp checks a sample).
-// floor(bits log10 2): the decimal digits that `bits` bits always carry.
-inline unsigned bits_to_digits10(unsigned bits) {
-  constexpr unsigned __int128 log10_2 = 301029995663981195ull;  // 10^-18 units
-  return unsigned(bits * log10_2 / 1000000000000000000ull);
-}
-// ceil(digits log2 10): the bits that carry `digits` decimal digits.
+// ceil(digits log2 10): the bits that carry `digits` decimal digits, with log2(10) rounded up to
+// 18 digits in 128-bit integer arithmetic: exact for every precision up to 10^6 digits (checked
+// against 60-digit logarithms; tests/test_core.cpp checks a sample).
 inline unsigned digits10_to_bits(unsigned digits) {
   constexpr unsigned __int128 log2_10 = 3321928094887362348ull;  // 10^-18 units
   return unsigned((digits * log2_10 + 999999999999999999ull) / 1000000000000000000ull);
 }
-// Decimal digits to request from MPFR (whose precision Boost sets in digits) so that it carries
-// at least `bits` bits.
-inline unsigned digits10_for_bits(unsigned bits) { return bits_to_digits10(bits) + 1u; }
 
 // pi in T, correctly rounded. mpfr_fixed: by MPFR at each call (MPFR caches pi per thread):
 // Boost's pi<T>() for a fixed-precision MPFR type computes pi at that precision when the
@@ -172,19 +141,6 @@ template <class T> T real_from_int(const big_int& v) {
   }
 }
 template <class T> T real_from_int(std::int64_t v) { return T(v); }
-
-// p/q in T (two integer roundings and one division: relative error <= 1.5 ulp).
-template <class T, class I> T real_from_ratio(const I& p, const I& q) {
-  return real_from_int<T>(p) / real_from_int<T>(q);
-}
-
-// Converting between real types (e.g. a double scout root into mpfr).
-template <class To, class From> To real_cast(const From& v) {
-  if constexpr (std::is_same_v<To, From>) return v;
-  else if constexpr (std::is_floating_point_v<From>) return To(v);
-  else if constexpr (std::is_floating_point_v<To>) return static_cast<To>(v);
-  else return To(v);
-}
 
 // Type name for messages and JSON.
 template <class T> std::string real_type_name() {

@@ -24,7 +24,6 @@ class stop_token {
   void throw_if_requested() const {
     if (requested()) throw interrupted();
   }
-  const std::atomic<bool>* flag() const { return flag_; }
 
  private:
   const std::atomic<bool>* flag_ = nullptr;

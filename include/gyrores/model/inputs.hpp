@@ -31,17 +31,15 @@ horizon_time parse_horizon_time(const std::string& text, const std::string& what
 
 // E as text: an energy (H_q(0) = qdot0^2/2 = 1/2), or a percentage of the initial energy
 // ("1%" is 1/200); usage_error naming `what` for anything else, E < 0 or E outside the limits.
-big_rational parse_energy_level(const std::string& text, const std::string& what);
+// At an impulse whose H_q(0) is `energy_scale` times the unit impulse's (qdot0^2, or m V^2 for a
+// plant) it is the level the theorems take (unit impulse): a percentage is a share of H_q(0), the
+// same at every impulse; an absolute energy E becomes E / energy_scale. The limits apply to that
+// unit level.
+big_rational parse_energy_level(const std::string& text, const std::string& what, const big_rational& energy_scale = 1);
 
 // The impulse amplitude qdot0 = q'(0) > 0 as text (exact decimal or fraction); usage_error naming
 // `what` unless 10^-100 <= qdot0 <= 10^100.
 big_rational parse_qdot0(const std::string& text, const std::string& what);
-
-// A level as parse_energy_level reads it, at the impulse whose H_q(0) is `energy_scale` times the
-// unit impulse's (qdot0^2, or m V^2 for a plant): the level the theorems take (unit impulse). A
-// percentage is a share of H_q(0), the same at every impulse; an absolute energy E becomes
-// E / energy_scale. The limits apply to that unit level.
-big_rational parse_energy_level(const std::string& text, const std::string& what, const big_rational& energy_scale);
 
 // The coupling of a resonant pair: n^2 = (tau - sigma)^2 / (tau sigma), exactly.
 big_rational pair_coupling_n2(const big_int& tau, const big_int& sigma);

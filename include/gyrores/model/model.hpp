@@ -51,7 +51,6 @@ template <class T> phase_state<T> impulse_response(const T& n, const T& v, const
 
 template <class T> T energy_q(const phase_state<T>& s) { return (s.q * s.q + s.qdot * s.qdot) / 2; }
 template <class T> T energy_z(const phase_state<T>& s) { return (s.z * s.z + s.zdot * s.zdot) / 2; }
-template <class T> T energy_total(const phase_state<T>& s) { return energy_q(s) + energy_z(s); }
 
 // Boundary of the convex envelope of the (q, q') projection at support direction phi (paper
 // Prop. convexEnvelope, eq. boundary): a point of rho0 (E_W1 (+) E_W2).
@@ -77,14 +76,6 @@ template <class T> envelope_direction<T> envelope_direction_of(const T& n, const
 template <class T> plane_point<T> envelope_boundary(const T& n, const T& v, const T& phi) {
   const auto e = envelope_direction_of(n, v, phi);
   return {e.r0 * (e.c / e.d1 + e.c / e.d2), e.r0 * (e.w1sq * e.s / e.d1 + e.w2sq * e.s / e.d2)};
-}
-
-// Support function of the envelope in direction phi: max over the envelope of
-// (cos phi, sin phi) . (q, q'). A trajectory point p lies in the envelope iff
-// p . u(phi) <= envelope_support(phi) for every phi.
-template <class T> T envelope_support(const T& n, const T& v, const T& phi) {
-  const auto e = envelope_direction_of(n, v, phi);
-  return e.r0 * (e.d1 + e.d2);
 }
 
 }  // namespace gyrores

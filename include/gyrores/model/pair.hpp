@@ -78,20 +78,6 @@ template <pair_integer I> class resonant_pair {
   I tau_, sigma_;
 };
 
-// Membership of the paper's low-order set R_low(M) = {coprime tau > sigma >= 1, tau + sigma <= M}.
-template <pair_integer I> bool pair_in_low_order_set(const resonant_pair<I>& p, const big_int& max_order) {
-  return to_big(p.order()) <= max_order;
-}
-
-// The beat ratio (tau + sigma)/(tau - sigma) = 1/x as an exact fraction {numerator, denominator}
-// (not reduced: gcd(a, b) is 1 or 2).
-template <pair_integer I> struct int_fraction {
-  wide_int<I> num, den;
-};
-template <pair_integer I> int_fraction<I> pair_beat_ratio(const resonant_pair<I>& p) {
-  return {p.order(), wide_int<I>(p.delta())};
-}
-
 // The resonant pair whose frequency ratio W1/W2 equals num/den (any positive fraction other
 // than 1, in any order; it is reduced). Throws usage_error for ratio 1 or non-positive input.
 inline resonant_pair<big_int> pair_from_ratio(big_int num, big_int den) {

@@ -21,11 +21,6 @@
 
 namespace gyrores {
 
-// The impulse amplitude v = qdot0 must be > 0 (usage_error otherwise; NaN is rejected too).
-template <class T> void check_amplitude(const T& v) {
-  if (!(v > 0)) throw usage_error("the impulse amplitude qdot0 must be > 0");
-}
-
 // Per-pair constants in T, computed once (each from exact integers, one or two roundings).
 template <class T> struct resonant_constants {
   T v;        // impulse amplitude qdot0 > 0
@@ -96,17 +91,6 @@ template <class T> struct lobe_values {
   T q, qdot, z, zdot;
   T radius_sq() const { return q * q + qdot * qdot; }
 };
-
-// theta = 2 (k pi + u)/a reduced to [0, 2 pi): k is reduced mod a exactly first.
-template <class T, class L> T lobe_theta(const resonant_constants<T>& c, const lobe_frame<L>& f, const L& a, const T& u) {
-  L kr = int_mod(f.k, a);
-  T at = real_from_int<T>(a);
-  T th = 2 * (c.pi * real_from_int<T>(kr) + u) / at;  // one division (at 10000 digits a division costs 2 products)
-  T two_pi = 2 * c.pi;
-  if (th < 0) th += two_pi;
-  if (th >= two_pi) th -= two_pi;
-  return th;
-}
 
 // Exact symmetries of R (docs/mathematics.md §1, §3), as maps of frames (u is kept or negated):
 //  mirror theta -> 2 pi - theta: (k, j, u) -> (a - k, b - 1 - j, -u), m -> -m.

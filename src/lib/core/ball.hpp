@@ -1,6 +1,6 @@
 // The one Arb kit of the library's proofs (src/lib only, not installed): an arb_t and an fmpz_t
 // that clean up after themselves; exact integers, rationals, Q(sqrt d) numbers and enclosures as
-// balls; and the ends of a ball as exact rationals or as an enclosure (core/enclosure.hpp).
+// balls; and the ends of a ball as an enclosure (core/enclosure.hpp) or as exact rationals.
 // A source file that includes it is listed in src/CMakeLists.txt (it needs Arb's include path).
 #pragma once
 #include <arb.h>
@@ -80,28 +80,6 @@ inline void set_quadratic(arb_t out, const quadratic_number& v, slong prec) {
   arb_div(out, out, t, prec);
 }
 
-// The exact rational value of an arf (man 2^exp); precondition: finite.
-inline big_rational arf_rational(const arf_t v) {
-  fmpz_holder man, exp;
-  arf_get_fmpz_2exp(man, exp, v);
-  const big_int m = man.value(), e = exp.value();
-  if (e >= 0) return big_rational(big_int(m << static_cast<unsigned>(e.convert_to<long>())));
-  return big_rational(m, big_int(1) << static_cast<unsigned>((-e).convert_to<long>()));
-}
-
-// A rational lower (upper) bound of every value of v (its ends rounded outward to prec bits).
-inline big_rational end_rational(const arb_t v, slong prec, bool upper) {
-  arf_t b;
-  arf_init(b);
-  if (upper) arb_get_ubound_arf(b, v, prec);
-  else arb_get_lbound_arf(b, v, prec);
-  const big_rational r = arf_rational(b);
-  arf_clear(b);
-  return r;
-}
-inline big_rational lower_rational(const arb_t v, slong prec) { return end_rational(v, prec, false); }
-inline big_rational upper_rational(const arb_t v, slong prec) { return end_rational(v, prec, true); }
-
 // The ball holding [lo, hi] (lo <= hi, exact rationals).
 inline void set_interval(arb_t out, const big_rational& lo, const big_rational& hi, slong prec) {
   ball a, b;
@@ -135,5 +113,11 @@ inline enclosure enclosure_of(const arb_t v, slong prec) {
   arb_get_interval_mpfr(lo.get(), hi.get(), v);
   return enclosure(lo, hi);
 }
+
+// The exact rational value of a finite arf; a rational lower (upper) bound of every value of v
+// (its ends rounded outward to prec bits, as arb_get_lbound_arf/arb_get_ubound_arf round them).
+inline big_rational arf_rational(const arf_t v) { return rational_of(binary_of(v)); }
+inline big_rational lower_rational(const arb_t v, slong prec) { return enclosure_of(v, prec).lo_rational(); }
+inline big_rational upper_rational(const arb_t v, slong prec) { return enclosure_of(v, prec).hi_rational(); }
 
 }  // namespace gyrores::arb_support

@@ -1,5 +1,5 @@
-// include/gyrores/core/decimal.hpp: decimal output (directed: exact integers; to nearest: MPFR),
-// Ziv's test, decimal integers.
+// include/gyrores/core/decimal.hpp: decimal output (directed: exact integers; to nearest: MPFR)
+// and decimal integers.
 #include <gyrores/core/decimal.hpp>
 
 #include <gmp.h>
@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include <gyrores/core/fixed_precision.hpp>
-#include <gyrores/core/quote.hpp>
 
 namespace gyrores {
 
@@ -152,22 +151,6 @@ std::string scientific_text(bool negative, const std::string& digits, long e10) 
   if (n < 2) buf[n++] = '0';
   while (n) out += buf[--n];
   return out;
-}
-
-bool digits_settled(mpfr_srcptr v, mpfr_srcptr rel_err, unsigned digits) {
-  if (mpfr_zero_p(v)) return true;
-  // |v| rel_err exactly (the product of a p-bit and a q-bit number has p + q bits), the ends outward.
-  const mpfr_prec_t prec = mpfr_get_prec(v) + mpfr_get_prec(rel_err);
-  fixed_mpfr d(prec), lo(prec), hi(prec);
-  mpfr_mul(d, v, rel_err, MPFR_RNDN);
-  mpfr_abs(d, d, MPFR_RNDN);
-  mpfr_sub(lo, v, d, MPFR_RNDD);
-  mpfr_add(hi, v, d, MPFR_RNDU);
-  return format_scientific(lo, digits) == format_scientific(hi, digits);
-}
-
-bool digits_settled(const mpfr_real& v, const mpfr_real& rel_err, unsigned digits) {
-  return digits_settled(v.backend().data(), rel_err.backend().data(), digits);
 }
 
 big_int parse_big_int(const std::string& text, const std::string& what) {

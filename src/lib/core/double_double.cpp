@@ -1,28 +1,9 @@
-// include/gyrores/core/double_double.hpp: sin and cos of a double-double.
-//
-// x = c + d with c = i 2^-7 (i = floor(|x| 2^7) < 256) and 0 <= d < 2^-7 (d = (|x|.hi - c) + |x|.lo:
-// the difference is exact by Sterbenz's lemma, c <= |x|.hi < 2c for i >= 1). Then
-//   sin x = S_i cos d + C_i sin d,   cos x = C_i cos d - S_i sin d,
-// with S_i, C_i the double-double roundings of sin c, cos c (relative error <= 2^-106), and
-//   sin d = d + d p,  p = -e/6 + e^2/120 - e^3/5040 + e^4/9!      (next term < 2^-95 d),
-//   cos d = 1 - d^2/2 + q,  q = e^2/24 - e^3/720 + e^4/8! - e^5/10!  (next term < 2^-110),
-// e = d^2. d^2/2 is a double-double (the exact product of the high parts plus d.hi d.lo); p
-// (|p| < 2^-15) and q (|q| < 2^-32) are doubles, formed from e = d.hi^2 with relative errors
-// below 2^-50, so sin d is within 2^-64 d and cos d within 2^-81. The double-double products
-// and sums add relative errors of at most 7u^2 each (u = 2^-53). For i = 0, sin x = sin d.
-// For i >= 1, |sin x| > sin(2^-7) > 2^-7.01 (|x| < 2), the error of C_i sin d is below 2^-71 and
-// that of S_i cos d below 2^-80. So cos x is within 2^-63 and sin x within 2^-63 |sin x|
-// (tests/test_double_double.cpp checks both against MPFR).
+// include/gyrores/core/double_double.hpp: sin and cos of a double-double for the balls.
 #include <gyrores/core/double_double.hpp>
 
 #include <mpfr.h>
 
 namespace gyrores {
-namespace {
-
-constexpr int table_size = 256;  // c_i = i/128 for |x| < 2
-
-}  // namespace
 
 sin_cos_table::sin_cos_table() {
   mpfr_t v, sn, cs, r;
@@ -32,7 +13,7 @@ sin_cos_table::sin_cos_table() {
     mpfr_sub_d(r, a, hi, MPFR_RNDN);
     return double_double(hi, mpfr_get_d(r, MPFR_RNDN));
   };
-  for (int i = 0; i < table_size; ++i) {
+  for (int i = 0; i < 256; ++i) {  // c_i = i/128 for |x| < 2
     mpfr_set_si_2exp(v, i, -7, MPFR_RNDN);  // exact
     mpfr_sin_cos(sn, cs, v, MPFR_RNDN);
     s[std::size_t(i)] = to_dd(sn);
@@ -41,65 +22,17 @@ sin_cos_table::sin_cos_table() {
   mpfr_clears(v, sn, cs, r, static_cast<mpfr_ptr>(nullptr));
 }
 
-namespace {
-
 // Formed on first use (thread-safe static initialisation): about 0.3 ms, once per process.
-const sin_cos_table& table() {
+const sin_cos_table& dd_sin_cos_table() {
   static const sin_cos_table t;
   return t;
-}
-
-// |x| = c + d with c = i 2^-7 (the reduction of the header comment; |x| < 2).
-struct reduction {
-  bool negative;
-  int i;
-  double_double d;
-};
-GYRORES_DD_INLINE reduction reduce(const double_double& x) {
-  const bool negative = x.hi < 0;
-  const double_double ax = negative ? dd::neg(x) : x;
-  const int i = int(ax.hi * 128);  // 0 <= i < 256 for |x| < 2
-  return {negative, i, dd::two_sum(ax.hi - i * 0x1p-7, ax.lo)};
-}
-
-// sin x = S_i cos d + C_i sin d and cos x = C_i cos d - S_i sin d from sd = sin d and cd = cos d
-// (for i = 0, sin d and cos d), with x's sign on the sine.
-GYRORES_DD_INLINE void add_table_angle(const reduction& r, const double_double& sd, const double_double& cd,
-                                       double_double& s, double_double& c) {
-  if (r.i == 0) {
-    s = sd;
-    c = cd;
-  } else {
-    const sin_cos_table& t = table();
-    const double_double& S = t.s[std::size_t(r.i)];
-    const double_double& C = t.c[std::size_t(r.i)];
-    s = dd::add(dd::mul(S, cd), dd::mul(C, sd));
-    c = dd::sub(dd::mul(C, cd), dd::mul(S, sd));
-  }
-  if (r.negative) s = dd::neg(s);
-}
-
-}  // namespace
-
-const sin_cos_table& dd_sin_cos_table() { return table(); }
-
-GYRORES_DD_FAST void dd_sin_cos(const double_double& x, double_double& s, double_double& c) {
-  const reduction r = reduce(x);
-  const double_double& d = r.d;
-  const double e = d.hi * d.hi;
-  const double p = e * (-1.0 / 6 + e * (1.0 / 120 - e * (1.0 / 5040 - e * (1.0 / 362880))));
-  const double q = e * e * (1.0 / 24 - e * (1.0 / 720 - e * (1.0 / 40320 - e * (1.0 / 3628800))));
-  const double_double sd = dd::add(d, d.hi * p);
-  const double_double half_d2 = dd::add(dd::scale(dd::two_prod(d.hi, d.hi), 0.5), d.hi * d.lo);
-  const double_double cd = dd::add(dd::add(double_double(1.0), dd::neg(half_d2)), q);
-  add_table_angle(r, sd, cd, s, c);
 }
 
 }  // namespace gyrores
 
 // ---- dd_sin_cos_accurate (include/gyrores/core/double_double.hpp) ----
 //
-// dd_sin_cos's reduction: x = c + d exactly, c = i 2^-7, |d| <= 2^-7 (1 + 2^-45) (d < 0 only
+// The reduction (dd_table_reduce): x = c + d exactly, c = i 2^-7, |d| <= 2^-7 (1 + 2^-45) (d < 0 only
 // when |x|.hi = c, then |d| <= 2^-53), and the table's S_i, C_i within 2^-106 relatively. With
 // u = 2^-53 the double-double operations err relatively by at most (Joldes, Muller and Popescu,
 // the header's comment): (+) 3u^2 = 2^-104.41 (2u^2 with a double), (x) 7u^2 = 2^-103.19. Let
@@ -178,11 +111,9 @@ GYRORES_DD_INLINE double_double cos_small(const double_double& e) {
 }  // namespace
 
 GYRORES_DD_FAST void dd_sin_cos_accurate(const double_double& x, double_double& s, double_double& c) {
-  const reduction r = reduce(x);
-  const double_double& d = r.d;
-  const double_double e = dd::mul(d, d);
-  const double_double sd = sin_small(d, e), cd = cos_small(e);
-  add_table_angle(r, sd, cd, s, c);
+  const dd_table_reduction r = dd_table_reduce(x);
+  const double_double e = dd::mul(r.d, r.d);
+  dd_table_step(r, sin_small(r.d, e), cos_small(e), s, c);
 }
 
 }  // namespace gyrores

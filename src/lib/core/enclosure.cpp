@@ -8,17 +8,13 @@
 
 namespace gyrores {
 
-namespace {
-
-// The exact rational value of a finite MPFR number.
 big_rational rational_of(mpfr_srcptr v) {
+  if (mpfr_zero_p(v)) return big_rational(0);  // (mpfr_get_z_2exp gives 0 the exponent emin)
   big_int m;
   const long e = long(mpfr_get_z_2exp(m.backend().data(), v));
   if (e >= 0) return big_rational(big_int(m << static_cast<unsigned>(e)));
   return big_rational(m, big_int(1) << static_cast<unsigned>(-e));
 }
-
-}  // namespace
 
 void check_report_digits(unsigned digits) {
   if (digits < 1 || digits > report_digits_max)
@@ -55,35 +51,17 @@ std::optional<double> enclosure::nearest_double() const {
   return a;
 }
 
-// The binary ends outward() rounds: an exact rational's through 64 + 4 D bits (the decimal's
-// own digits when it has at most D of them are taken directly, by outward()).
-std::pair<exact_binary, exact_binary> enclosure::outward_ends(unsigned digits) const {
-  if (!exact_) return {lo_, hi_};
+std::pair<std::string, std::string> enclosure::outward(unsigned digits) const {
+  if (!exact_) return {format_scientific(lo_, digits, MPFR_RNDD), format_scientific(hi_, digits, MPFR_RNDU)};
+  // An exact rational: its own decimal when it has at most D digits, else its ends through
+  // 64 + 4 D bits.
+  bool exact = false;
+  const std::string e = format_rational_scientific(*exact_, digits, &exact);
+  if (exact) return {e, e};
   exact_binary lo(64 + 4 * mpfr_prec_t(digits)), hi(64 + 4 * mpfr_prec_t(digits));
   mpfr_set_q(lo.get(), exact_->backend().data(), MPFR_RNDD);
   mpfr_set_q(hi.get(), exact_->backend().data(), MPFR_RNDU);
-  return {lo, hi};
-}
-
-std::pair<std::string, std::string> enclosure::outward(unsigned digits) const {
-  bool exact = false;
-  if (exact_) {
-    const std::string e = format_rational_scientific(*exact_, digits, &exact);
-    if (exact) return {e, e};
-  }
-  const auto [lo, hi] = outward_ends(digits);
-  return {format_scientific(static_cast<mpfr_srcptr>(lo), digits, MPFR_RNDD),
-          format_scientific(static_cast<mpfr_srcptr>(hi), digits, MPFR_RNDU)};
-}
-
-std::pair<big_rational, big_rational> enclosure::outward_rationals(unsigned digits) const {
-  bool exact = false;
-  if (exact_) {
-    format_rational_scientific(*exact_, digits, &exact);
-    if (exact) return {*exact_, *exact_};
-  }
-  const auto [lo, hi] = outward_ends(digits);
-  return {decimal_rounded(rational_of(lo), digits, -1), decimal_rounded(rational_of(hi), digits, +1)};
+  return {format_scientific(lo, digits, MPFR_RNDD), format_scientific(hi, digits, MPFR_RNDU)};
 }
 
 std::optional<proved_real> enclosure::report(unsigned digits) const {

@@ -5,7 +5,6 @@
 
 #include <gyrores/core/decimal.hpp>
 #include <gyrores/core/error.hpp>
-#include <gyrores/core/quote.hpp>
 
 namespace gyrores {
 namespace {
@@ -73,18 +72,9 @@ std::string rational_str(const big_rational& r) {
 
 namespace {
 
-big_int pow10(long e) {
-  big_int r = 1;
-  for (big_int base = 10; e > 0; e >>= 1, base *= base)
-    if (e & 1) r *= base;
-  return r;
-}
+big_int pow10(long e) { return boost::multiprecision::pow(big_int(10), unsigned(e)); }
 
 long decimal_length(const big_int& v) { return long(v.str().size()); }
-
-}  // namespace
-
-namespace {
 
 // |q| = n 10^(e10 - digits + 1), n of `digits` digits, rounded in magnitude: to nearest with ties
 // to even (dir 0), down (-1) or up (+1); `exact` when no rounding happened. q != 0.

@@ -12,8 +12,9 @@
 
 #include <algorithm>
 
-#include <arb.h>
 #include <flint.h>
+
+#include "ball.hpp"
 
 namespace gyrores {
 
@@ -22,30 +23,9 @@ namespace {
 // Bits Arb works with beyond the target precision: the ball's radius is then ~2^-extra ulp.
 constexpr slong sin_cos_extra_bits = 24;
 
-struct arb_scratch {
-  arb_t x, s, c;
-  arf_t lo, hi;
-  arb_scratch() {
-    arb_init(x);
-    arb_init(s);
-    arb_init(c);
-    arf_init(lo);
-    arf_init(hi);
-  }
-  ~arb_scratch() {
-    arb_clear(x);
-    arb_clear(s);
-    arb_clear(c);
-    arf_clear(lo);
-    arf_clear(hi);
-  }
-  arb_scratch(const arb_scratch&) = delete;
-  arb_scratch& operator=(const arb_scratch&) = delete;
-};
-
 // Ziv's test: every point of ball b rounds to nearest to the same value at out's precision;
 // then out holds it (the correctly rounded value of anything in b). tmp: scratch of out's precision.
-bool round_ball(mpfr_ptr out, mpfr_ptr tmp, const arb_t b, arf_t lo, arf_t hi) {
+bool round_ball(mpfr_ptr out, mpfr_ptr tmp, const arb_t b, arf_ptr lo, arf_ptr hi) {
   if (!arb_is_finite(b)) return false;
   arb_get_lbound_arf(lo, b, ARF_PREC_EXACT);
   arb_get_ubound_arf(hi, b, ARF_PREC_EXACT);
@@ -62,20 +42,20 @@ sin_cos_pair<mpfr_real> real_sin_cos(const mpfr_real& x) {
   mpfr_srcptr xv = x.backend().data();
   const slong prec = slong(std::max(mpfr_get_prec(s), mpfr_get_prec(c)));
   if (mpfr_number_p(xv) && !mpfr_zero_p(xv)) {
-    arb_scratch a;
-    mpfr_real tmp;  // default precision, as s and c
-    arf_set_mpfr(arb_midref(a.x), xv);  // exact: an arf holds any mpfr value
+    arb_support::ball ax, as, ac, lo, hi;  // lo, hi: the ends' storage (their midpoints)
+    mpfr_real tmp;                         // default precision, as s and c
+    arf_set_mpfr(arb_midref(ax.get()), xv);  // exact: an arf holds any mpfr value
     // Arb's error is absolute near 0, so sin of a tiny x loses -log2|x| bits of relative accuracy:
     // they are added up front (the lattice method's u and w are ~1e-30 for (10^30+1, 10^30)).
     const slong tiny = std::max<slong>(0, -slong(mpfr_get_exp(xv)));
     slong wp = prec + sin_cos_extra_bits + std::min(tiny, prec);
     for (int attempt = 0; attempt < 2; ++attempt) {
-      arb_sin_cos(a.s, a.c, a.x, wp);
-      if (round_ball(s, tmp.backend().data(), a.s, a.lo, a.hi) && round_ball(c, tmp.backend().data(), a.c, a.lo, a.hi))
-        return out;
+      arb_sin_cos(as, ac, ax, wp);
+      arf_ptr l = arb_midref(lo.get()), h = arb_midref(hi.get());
+      if (round_ball(s, tmp.backend().data(), as, l, h) && round_ball(c, tmp.backend().data(), ac, l, h)) return out;
       // Once more with the bits that were missing (or, for a value next to a rounding boundary,
       // 64 more).
-      const slong acc = std::min(arb_rel_accuracy_bits(a.s), arb_rel_accuracy_bits(a.c));
+      const slong acc = std::min(arb_rel_accuracy_bits(as), arb_rel_accuracy_bits(ac));
       wp += std::max<slong>(prec + 2 - acc, 0) + 64;
     }
   }

@@ -47,11 +47,6 @@ class convergent_list {
   big_int p_prev_ = 1, p_prev2_ = 0, q_prev_ = 0, q_prev2_ = 1;  // p_{-1}, p_{-2}, q_{-1}, q_{-2}
 };
 
-// floor(num/den) for den > 0, any sign of num.
-big_int floor_div(const big_int& num, const big_int& den) {
-  return num >= 0 ? big_int(num / den) : big_int(-((-num + den - 1) / den));
-}
-
 // Plain Euclid on the reduced fraction num/den (num, den > 0).
 std::vector<ratio_convergent> fraction_convergents(big_int num, big_int den, std::size_t max_terms) {
   convergent_list out(max_terms);
@@ -75,7 +70,7 @@ std::vector<ratio_convergent> quadratic_convergents(big_int m, big_int d, const 
   while (!out.full()) {
     // a = floor((m + sqrt D)/d). For d > 0 it is floor((m + sq)/d); for d < 0, -(m + sqrt D)
     // lies in (-(m + sq + 1), -(m + sq)), so it is floor(-(m + sq + 1)/(-d)).
-    const big_int a = d > 0 ? floor_div(m + sq, d) : floor_div(-(m + sq + 1), -d);
+    const big_int a = d > 0 ? int_floor_div<big_int>(m + sq, d) : int_floor_div<big_int>(-(m + sq + 1), -d);
     out.push(a);
     big_int m_next = a * d - m;
     big_int d_next = (D - m_next * m_next) / d;

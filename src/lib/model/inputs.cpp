@@ -2,7 +2,6 @@
 #include <gyrores/model/inputs.hpp>
 
 #include <gyrores/core/error.hpp>
-#include <gyrores/core/quote.hpp>
 #include <gyrores/model/limits.hpp>
 
 namespace gyrores {
@@ -76,18 +75,6 @@ horizon_time parse_horizon_time(const std::string& given, const std::string& wha
   return t;
 }
 
-big_rational parse_energy_level(const std::string& given, const std::string& what) {
-  std::string text = given;
-  big_rational e;
-  if (!text.empty() && text.back() == '%') {
-    text.pop_back();
-    e = parse_rational(text, what) / 200;
-  } else e = parse_rational(text, what);
-  if (e < 0) throw usage_error(what + " must be >= 0, got " + shown_input(given));
-  check_level_limits(e, what);
-  return e;
-}
-
 namespace {
 
 // A value > 0 within [10^-100, 10^100] (qdot0 and the plant's quantities).
@@ -106,11 +93,11 @@ big_rational parse_positive(const std::string& given, const std::string& what) {
 big_rational parse_qdot0(const std::string& text, const std::string& what) { return parse_positive(text, what); }
 
 big_rational parse_energy_level(const std::string& given, const std::string& what, const big_rational& energy_scale) {
-  if (!given.empty() && given.back() == '%') return parse_energy_level(given, what);
-  big_rational e = parse_rational(given, what);
+  const bool percent = !given.empty() && given.back() == '%';
+  big_rational e = parse_rational(percent ? given.substr(0, given.size() - 1) : given, what);
   if (e < 0) throw usage_error(what + " must be >= 0, got " + shown_input(given));
-  e /= energy_scale;
-  check_level_limits(e, energy_scale == 1 ? what : what + " (at the unit impulse)");
+  e /= percent ? big_rational(200) : energy_scale;
+  check_level_limits(e, percent || energy_scale == 1 ? what : what + " (at the unit impulse)");
   return e;
 }
 
