@@ -9,8 +9,8 @@ both sides of a ratio cancels):
                       work it wraps: app::run_pair with the same request, timed inside the module
                       (gyrores._gyrores._library_pair_seconds) on the same thread;
   pair(6, 5).r_res    the same call and reading r_res (its conversion to an mpmath number);
-  pair(6, 5, 15)      digits=15: floats, each decided from its enclosure (the library work: the
-                      17-digit report with its enclosures);
+  pair(6, 5, 15)      digits=15: floats, each the double nearest its exact value (the library
+                      work: the 17-digit report with its doubles decided);
   sweep(N) rows       gyrores.sweep(N) with its rows (a NumPy table) against `gyrores sweep
                       --max-order N --out FILE --quiet` (the CLI writing its rows as CSV), wall time.
 
@@ -49,7 +49,7 @@ def per_call(fn, calls):
 
 def library_pair(digits, calls):
     """(thread CPU, wall) seconds per call of the library work of pair(6, 5, digits): for digits
-    <= 15 the 17-digit report with its enclosures, which decide the doubles."""
+    <= 15 the 17-digit report with its doubles decided (pair_report_options::doubles)."""
     cpu, wall = [], []
     for _ in range(calls):
         c, w = gyrores._gyrores._library_pair_seconds(6, 5, max(digits, 17), digits <= 15, 1)

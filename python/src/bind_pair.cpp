@@ -112,12 +112,12 @@ py::object asymptotics_dict(const py::object& tau, const py::object& sigma, long
 }
 
 // The library work pair() wraps, for bench/python_overhead.py: `calls` runs of app::run_pair with
-// the request pair() makes (no asymptotics, qdot0 = 1; digits <= 15: 17 digits with enclosures),
-// on this thread without the GIL; (thread CPU seconds, wall seconds) of all of them.
-py::tuple library_pair_seconds(const py::object& tau, const py::object& sigma, long long digits, bool enclosures,
+// the request pair() makes (no asymptotics, qdot0 = 1; digits <= 15: 17 digits with the doubles
+// decided), on this thread without the GIL; (thread CPU seconds, wall seconds) of all of them.
+py::tuple library_pair_seconds(const py::object& tau, const py::object& sigma, long long digits, bool doubles,
                                long long calls) {
   app::pair_request request{pair_of(tau, sigma), {}};
-  request.options.enclosures = enclosures;
+  request.options.doubles = doubles;
   request.options.asymptotics = false;
   request.options.digits = checked_digits(digits, 1, report_digits_max);
   const auto seconds = call_library([&] {
@@ -153,7 +153,7 @@ void bind_pair(py::module_& m) {
         "The `asymptotic` object of `gyrores pair --json` with r_res_asy, r_res_asy_rel_error and digits "
         "(qdot0 = 1). Use gyrores.asymptotics.");
   m.def("_library_pair_seconds", &library_pair_seconds, py::arg("tau"), py::arg("sigma"), py::arg("digits"),
-        py::arg("enclosures"), py::arg("calls"), "(thread CPU s, wall s) of `calls` runs of the library work of pair() (bench/python_overhead.py).");
+        py::arg("doubles"), py::arg("calls"), "(thread CPU s, wall s) of `calls` runs of the library work of pair() (bench/python_overhead.py).");
 }
 
 }  // namespace gyrores::python
