@@ -103,6 +103,30 @@ TEST_CASE("quadratic_number: signs, floors and field operations are exact", "[ro
   CHECK(compare(quadratic_number(1393, 985), quadratic_number(0, 1, 1, 3)) == -1);  // 1.414 < 1.732
 }
 
+TEST_CASE("quadratic_number: approx() is the double nearest the value, through cancellation", "[rotation]") {
+  using mp_wide = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<2000>, boost::multiprecision::et_off>;
+  auto nearest = [](const quadratic_number& v) {
+    const mp_wide w = (mp_wide(v.p()) + mp_wide(v.q()) * sqrt(mp_wide(v.d()))) / mp_wide(v.r());
+    return mpfr_get_d(w.backend().data(), MPFR_RNDN);
+  };
+  // 10^k sqrt 2 - floor(10^k sqrt 2): p and q sqrt d cancel to about k digits.
+  big_int ten = 1;
+  for (int k = 0; k <= 300; k += 20, ten *= big_int("100000000000000000000")) {
+    const quadratic_number v(0, ten, 1, 2);
+    const quadratic_number frac = v - quadratic_number(v.floor());
+    INFO("k = " << k);
+    CHECK(frac.approx() == nearest(frac));
+    CHECK(v.approx() == nearest(v));
+  }
+  std::mt19937_64 rng(23);
+  for (int i = 0; i < 300; ++i) {
+    const quadratic_number a = random_irrational(rng);
+    CHECK(a.approx() == nearest(a));
+  }
+  CHECK(quadratic_number(1, 3).approx() == 1.0 / 3);  // a rational: rounded once
+  CHECK(quadratic_number(1, 10).approx() == 0.1);
+}
+
 TEST_CASE("rotation: min_fractional_part equals the plain loop (rational: exact ties)", "[rotation]") {
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<long> den(2, 200), K(0, 700);

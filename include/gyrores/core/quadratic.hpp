@@ -57,7 +57,7 @@ class quadratic_number {
 
   // The exact value as text: "p/r" or "(p + q*sqrt(d))/r".
   std::string str() const;
-  // A double near the value (for messages and quick estimates only; never for a decision).
+  // The double nearest the value (for messages and estimates; decisions use the exact order).
   double approx() const;
 
  private:

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <gyrores/core/fixed_precision.hpp>
-
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/fixed_precision.hpp>
+#include <gyrores/core/refine.hpp>
 
 namespace gyrores {
 namespace {
@@ -146,21 +146,28 @@ int compare(const quadratic_number& u, const quadratic_number& v) {
 }
 
 double quadratic_number::approx() const {
-  if (sign() == 0) return 0;
-  // p and q sqrt d may nearly cancel: the absolute error of p + q sqrt d at `bits` bits is below
-  // 2^(top - bits + 2); widen until the sum stands 60 bits above it.
-  const std::size_t top = std::max(msb_or_zero(p_), msb_or_zero(q_) + msb_or_zero(d_) / 2 + 1) + 1;
-  for (std::size_t bits = top + 64;; bits *= 2) {
-    fixed_mpfr num(static_cast<mpfr_prec_t>(bits)), t(static_cast<mpfr_prec_t>(bits));
-    mpfr_set_z(num, p_.backend().data(), MPFR_RNDN);
-    mpfr_set_z(t, d_.backend().data(), MPFR_RNDN);
-    mpfr_sqrt(t, t, MPFR_RNDN);
-    mpfr_mul_z(t, t, q_.backend().data(), MPFR_RNDN);
-    mpfr_add(num, num, t, MPFR_RNDN);
-    if (mpfr_zero_p(num) || mpfr_get_exp(num) < static_cast<long>(top) - static_cast<long>(bits) + 62) continue;
-    mpfr_div_z(num, num, r_.backend().data(), MPFR_RNDN);
-    return mpfr_get_d(num, MPFR_RNDN);
+  if (is_rational()) {  // rounded once (53 bits, to nearest)
+    fixed_mpfr t(53);
+    mpfr_set_q(t, big_rational(p_, r_).backend().data(), MPFR_RNDN);
+    return mpfr_get_d(t, MPFR_RNDN);
   }
+  // An enclosure of (p + q sqrt d)/r at the precisions of the one loop (core/refine), until both
+  // ends round to one double (rounding to nearest is monotone, so that double is the nearest).
+  // p and q sqrt d may nearly cancel: the start covers their size.
+  const std::size_t top = std::max(msb_or_zero(p_), msb_or_zero(q_) + msb_or_zero(d_) / 2 + 1) + 1;
+  return refine(precision_plan{mpfr_prec_t(top + 64)}, {}, "the double nearest " + str(),
+                [&](mpfr_prec_t bits, proof_status& status) -> std::optional<double> {
+                  fixed_mpfi v(bits), t(bits);
+                  mpfi_set_z(t, d_.backend().data());
+                  mpfi_sqrt(t, t);
+                  mpfi_mul_z(t, t, q_.backend().data());
+                  mpfi_add_z(v, t, p_.backend().data());
+                  mpfi_div_z(v, v, r_.backend().data());
+                  const double lo = mpfr_get_d(v.left(), MPFR_RNDN), hi = mpfr_get_d(v.right(), MPFR_RNDN);
+                  if (lo == hi) return lo;
+                  status = proof_status::undecided("the ends of its enclosure round to two doubles");
+                  return std::nullopt;
+                });
 }
 
 }  // namespace gyrores
