@@ -63,6 +63,13 @@ inline std::ostream& operator<<(std::ostream& os, const proved_real& r) { return
 // The exact rational value of a finite MPFR number.
 big_rational rational_of(mpfr_srcptr v);
 
+// The double nearest every value of [lo, hi]: rounding to nearest is monotone, so ends that round
+// to one double decide it (beyond double's range an infinity or a zero, as strtod reads such a
+// decimal); none when they round to two.
+std::optional<double> nearest_double(mpfr_srcptr lo, mpfr_srcptr hi);
+// The double nearest an exact rational (rounded once, ties to even).
+double nearest_double(const big_rational& v);
+
 class enclosure {
  public:
   enclosure() : exact_(big_rational(0)) {}  // [0, 0], exact 0

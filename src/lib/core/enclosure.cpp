@@ -39,16 +39,23 @@ std::optional<std::string> enclosure::rounded(unsigned digits) const {
   return out;
 }
 
-std::optional<double> enclosure::nearest_double() const {
-  if (exact_) {  // rounded once from the rational (53 bits, to nearest: the double itself)
-    exact_binary t(53);
-    mpfr_set_q(t.get(), exact_->backend().data(), MPFR_RNDN);
-    return mpfr_get_d(t, MPFR_RNDN);
-  }
-  // Rounding to nearest is monotone: if both ends round to one double, every value between does.
-  const double a = mpfr_get_d(lo_, MPFR_RNDN), b = mpfr_get_d(hi_, MPFR_RNDN);
-  if (a != b || !std::isfinite(a)) return std::nullopt;
+std::optional<double> nearest_double(mpfr_srcptr lo, mpfr_srcptr hi) {
+  const double a = mpfr_get_d(lo, MPFR_RNDN), b = mpfr_get_d(hi, MPFR_RNDN);
+  if (a != b) return std::nullopt;
   return a;
+}
+
+double nearest_double(const big_rational& v) {
+  exact_binary t(53);  // to nearest at 53 bits: the double itself
+  mpfr_set_q(t.get(), v.backend().data(), MPFR_RNDN);
+  return mpfr_get_d(t, MPFR_RNDN);
+}
+
+std::optional<double> enclosure::nearest_double() const {
+  if (exact_) return gyrores::nearest_double(*exact_);
+  const auto d = gyrores::nearest_double(lo_, hi_);
+  if (d && !std::isfinite(*d)) return std::nullopt;
+  return d;
 }
 
 std::pair<std::string, std::string> enclosure::outward(unsigned digits) const {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <gyrores/core/error.hpp>
+#include <gyrores/core/enclosure.hpp>
 #include <gyrores/core/fixed_precision.hpp>
 #include <gyrores/core/refine.hpp>
 
@@ -146,14 +147,10 @@ int compare(const quadratic_number& u, const quadratic_number& v) {
 }
 
 double quadratic_number::approx() const {
-  if (is_rational()) {  // rounded once (53 bits, to nearest)
-    fixed_mpfr t(53);
-    mpfr_set_q(t, big_rational(p_, r_).backend().data(), MPFR_RNDN);
-    return mpfr_get_d(t, MPFR_RNDN);
-  }
-  // An enclosure of (p + q sqrt d)/r at the precisions of the one loop (core/refine), until both
-  // ends round to one double (rounding to nearest is monotone, so that double is the nearest).
-  // p and q sqrt d may nearly cancel: the start covers their size.
+  if (is_rational()) return nearest_double(big_rational(p_, r_));
+  // An enclosure of (p + q sqrt d)/r at the precisions of the one loop (core/refine), until it
+  // decides its nearest double (core/enclosure.hpp). p and q sqrt d may nearly cancel: the start
+  // covers their size.
   const std::size_t top = std::max(msb_or_zero(p_), msb_or_zero(q_) + msb_or_zero(d_) / 2 + 1) + 1;
   return refine(precision_plan{mpfr_prec_t(top + 64)}, {}, "the double nearest " + str(),
                 [&](mpfr_prec_t bits, proof_status& status) -> std::optional<double> {
@@ -163,10 +160,9 @@ double quadratic_number::approx() const {
                   mpfi_mul_z(t, t, q_.backend().data());
                   mpfi_add_z(v, t, p_.backend().data());
                   mpfi_div_z(v, v, r_.backend().data());
-                  const double lo = mpfr_get_d(v.left(), MPFR_RNDN), hi = mpfr_get_d(v.right(), MPFR_RNDN);
-                  if (lo == hi) return lo;
-                  status = proof_status::undecided("the ends of its enclosure round to two doubles");
-                  return std::nullopt;
+                  const auto d = nearest_double(v.left(), v.right());
+                  if (!d) status = proof_status::undecided("the ends of its enclosure round to two doubles");
+                  return d;
                 });
 }
 

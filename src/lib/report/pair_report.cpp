@@ -29,14 +29,13 @@ class rounder {
   void operator()(proved_real& out, const iv& x, const char* name) { round(out, x, name, digits_); }
   // The same with its own digits (a share of H_q(0), report/scales.hpp).
   void round(proved_real& out, const iv& x, const char* name, unsigned digits) {
-    // Rounding to nearest is monotone: ends that round to one double decide every value between
-    // (beyond double's range, to an infinity or zero, as strtod reads such a decimal).
-    const double lo = doubles_ ? mpfr_get_d(x.left(), MPFR_RNDN) : 0, hi = doubles_ ? mpfr_get_d(x.right(), MPFR_RNDN) : 0;
-    if (!enclosure_rounding(x.left(), x.right(), digits, out.value) || lo != hi) {
+    std::optional<double> nearest;
+    if (doubles_) nearest = nearest_double(x.left(), x.right());
+    if (!enclosure_rounding(x.left(), x.right(), digits, out.value) || (doubles_ && !nearest)) {
       if (!undecided_) undecided_ = name;
       return;
     }
-    out.nearest = lo;
+    if (nearest) out.nearest = *nearest;
     enclosure(out, x, digits);
   }
   // A field whose exact value is the rational q (x: its enclosure at this precision).
@@ -44,11 +43,7 @@ class rounder {
     if (digits == 0) digits = digits_;
     out.value = format_rational_scientific(q, digits);
     mpfi_set_q(x, q.backend().data());
-    if (doubles_) {  // rounded once from the rational (53 bits, to nearest)
-      exact_binary t(53);
-      mpfr_set_q(t.get(), q.backend().data(), MPFR_RNDN);
-      out.nearest = mpfr_get_d(t, MPFR_RNDN);
-    }
+    if (doubles_) out.nearest = nearest_double(q);
     enclosure(out, x, digits);
   }
   // Proved when every rounding was decided; else undecided, naming the first field that was not.
